@@ -1,0 +1,78 @@
+# Test registration helpers.
+#
+# capsula_add_unit_test(<name> SOURCES ... DEPENDS ... [LABELS ...])
+#   A GoogleTest executable; every TEST() becomes its own ctest entry (label "unit").
+# capsula_add_mpi_test(<name> SOURCES ... DEPENDS ... [RANKS n] [LABELS ...])
+#   A GoogleTest executable run as one ctest entry under mpiexec -n <RANKS> (default 2),
+#   label "mpi" (CMake 3.25 cannot discover gtest cases through mpiexec).
+# Both link tests/support (a main() that owns MPI/Tpetra and silences non-root output).
+
+include(GoogleTest)
+if(NOT GTest_FOUND)
+  message(FATAL_ERROR "GoogleTest is required for the tests (install libgtest-dev)")
+endif()
+
+# Open MPI refuses to run as root and to oversubscribe 2 cores without these.
+set(CAPSULA_MPIEXEC_FLAGS ${MPIEXEC_NUMPROC_FLAG})
+set(CAPSULA_MPIEXEC_PREFLAGS --oversubscribe)
+execute_process(COMMAND id -u OUTPUT_VARIABLE _capsula_uid OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(_capsula_uid STREQUAL "0")
+  list(APPEND CAPSULA_MPIEXEC_PREFLAGS --allow-run-as-root)
+endif()
+
+function(capsula_add_unit_test name)
+  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;DEPENDS;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE capsula_test_support ${ARG_DEPENDS})
+  capsula_set_warnings(${name})
+  if(NOT ARG_TIMEOUT)
+    set(ARG_TIMEOUT 300)
+  endif()
+  gtest_discover_tests(${name}
+    PROPERTIES LABELS "unit;${ARG_LABELS}" TIMEOUT ${ARG_TIMEOUT}
+    DISCOVERY_TIMEOUT 60)
+endfunction()
+
+function(capsula_add_mpi_test name)
+  cmake_parse_arguments(ARG "" "RANKS;TIMEOUT" "SOURCES;DEPENDS;LABELS;ARGS" ${ARGN})
+  if(NOT ARG_RANKS)
+    set(ARG_RANKS 2)
+  endif()
+  if(NOT ARG_TIMEOUT)
+    set(ARG_TIMEOUT 600)
+  endif()
+  if(ARG_SOURCES)
+    add_executable(${name} ${ARG_SOURCES})
+    target_link_libraries(${name} PRIVATE capsula_test_support ${ARG_DEPENDS})
+    capsula_set_warnings(${name})
+    set(_exe $<TARGET_FILE:${name}>)
+  else()
+    message(FATAL_ERROR "capsula_add_mpi_test(${name}): SOURCES required")
+  endif()
+  add_test(NAME ${name}
+    COMMAND ${MPIEXEC_EXECUTABLE} ${CAPSULA_MPIEXEC_FLAGS} ${ARG_RANKS}
+            ${CAPSULA_MPIEXEC_PREFLAGS} ${_exe} ${ARG_ARGS})
+  set_tests_properties(${name} PROPERTIES
+    LABELS "mpi;${ARG_LABELS}" PROCESSORS ${ARG_RANKS} TIMEOUT ${ARG_TIMEOUT})
+endfunction()
+
+# capsula_add_mpi_command_test(<name> COMMAND <exe> args... [RANKS n] [LABELS ...])
+#   Runs an existing executable (an app, say) under mpiexec, label "mpi".
+function(capsula_add_mpi_command_test name)
+  cmake_parse_arguments(ARG "" "RANKS;TIMEOUT;WORKING_DIRECTORY" "COMMAND;LABELS" ${ARGN})
+  if(NOT ARG_RANKS)
+    set(ARG_RANKS 2)
+  endif()
+  if(NOT ARG_TIMEOUT)
+    set(ARG_TIMEOUT 600)
+  endif()
+  if(NOT ARG_WORKING_DIRECTORY)
+    set(ARG_WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  endif()
+  add_test(NAME ${name}
+    COMMAND ${MPIEXEC_EXECUTABLE} ${CAPSULA_MPIEXEC_FLAGS} ${ARG_RANKS}
+            ${CAPSULA_MPIEXEC_PREFLAGS} ${ARG_COMMAND}
+    WORKING_DIRECTORY ${ARG_WORKING_DIRECTORY})
+  set_tests_properties(${name} PROPERTIES
+    LABELS "mpi;${ARG_LABELS}" PROCESSORS ${ARG_RANKS} TIMEOUT ${ARG_TIMEOUT})
+endfunction()

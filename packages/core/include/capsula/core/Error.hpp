@@ -1,0 +1,57 @@
+#pragma once
+// Capsula's error convention.
+//
+// Every error a user can cause or meet names what went wrong and where:
+//   - InputError:     a deck key, a command-line option, a file (the message
+//                     names the key path / option / file and the offending value);
+//   - NumericalError: the computation itself failed (non-finite state, step-size
+//                     collapse, solver breakdown); names the cause and the time;
+//   - IoError:        a file or directory could not be read or written.
+// All derive from capsula::core::Error so apps catch one type, print what() and
+// exit non-zero. Messages are complete sentences that say what to change.
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace capsula::core {
+
+class Error : public std::runtime_error {
+public:
+  explicit Error(const std::string& message) : std::runtime_error(message) {}
+};
+
+class InputError final : public Error {
+public:
+  explicit InputError(const std::string& message) : Error(message) {}
+};
+
+class NumericalError final : public Error {
+public:
+  explicit NumericalError(const std::string& message) : Error(message) {}
+};
+
+class IoError final : public Error {
+public:
+  explicit IoError(const std::string& message) : Error(message) {}
+};
+
+/// Builds a message from streamable pieces: message("level ", n, " is out of range").
+template <typename... Parts>
+std::string message(Parts&&... parts)
+{
+  std::ostringstream out;
+  (out << ... << std::forward<Parts>(parts));
+  return out.str();
+}
+
+/// Throws ErrorType(message(parts...)) unless `condition` holds.
+template <typename ErrorType = Error, typename... Parts>
+void require(bool condition, Parts&&... parts)
+{
+  if (!condition) {
+    throw ErrorType(message(std::forward<Parts>(parts)...));
+  }
+}
+
+} // namespace capsula::core

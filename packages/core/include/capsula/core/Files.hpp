@@ -1,0 +1,26 @@
+#pragma once
+// Output files are written atomically: to a temporary file in the same
+// directory, then renamed over the target, so a run that dies mid-write never
+// leaves a truncated file and never destroys the previous good version.
+#include <functional>
+#include <iosfwd>
+#include <string>
+
+namespace capsula::core {
+
+/// Creates `directory` (and parents) if needed and checks that a file can be
+/// created in it. Throws IoError naming the directory and the reason.
+void ensureWritableDirectory(const std::string& directory);
+
+/// Writes `path` atomically with the content `write` streams out. Throws IoError
+/// (the previous file, if any, is left untouched).
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write);
+
+/// Renames a finished temporary file over `path` (for writers that produce their
+/// own temporary file, such as HDF5). Throws IoError.
+void replaceFileAtomically(const std::string& temporaryPath, const std::string& path);
+
+/// A temporary name next to `path`, unique to this process.
+std::string temporaryPathFor(const std::string& path);
+
+} // namespace capsula::core

@@ -1,0 +1,73 @@
+#include "capsula/core/Files.hpp"
+
+#include "capsula/core/Error.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include <unistd.h>
+
+namespace capsula::core {
+
+namespace fs = std::filesystem;
+
+void ensureWritableDirectory(const std::string& directory)
+{
+  require<IoError>(!directory.empty(), "The output directory name is empty.");
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec) {
+    throw IoError("Cannot create output directory '" + directory + "': " + ec.message() +
+                  ". Choose another directory with --output or Output/Directory.");
+  }
+  if (!fs::is_directory(directory)) {
+    throw IoError("Output directory '" + directory + "' exists but is not a directory.");
+  }
+  const std::string probe = temporaryPathFor((fs::path(directory) / ".capsula-write-test").string());
+  std::FILE* f = std::fopen(probe.c_str(), "w");
+  if (f == nullptr) {
+    throw IoError("Output directory '" + directory + "' is not writable: " + std::strerror(errno) +
+                  ". Choose another directory with --output or Output/Directory.");
+  }
+  std::fclose(f);
+  std::remove(probe.c_str());
+}
+
+std::string temporaryPathFor(const std::string& path)
+{
+  return path + ".tmp." + std::to_string(::getpid());
+}
+
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write)
+{
+  const std::string tmp = temporaryPathFor(path);
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    if (!out) {
+      throw IoError("Cannot write '" + path + "': " + std::strerror(errno) + ".");
+    }
+    out.precision(17);
+    write(out);
+    out.flush();
+    if (!out) {
+      std::remove(tmp.c_str());
+      throw IoError("Writing '" + path + "' failed (disk full?).");
+    }
+  }
+  replaceFileAtomically(tmp, path);
+}
+
+void replaceFileAtomically(const std::string& temporaryPath, const std::string& path)
+{
+  if (std::rename(temporaryPath.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    std::remove(temporaryPath.c_str());
+    throw IoError("Cannot move '" + temporaryPath + "' to '" + path + "': " + why + ".");
+  }
+}
+
+} // namespace capsula::core
