@@ -1,0 +1,151 @@
+#include "capsula/contour/ContourMetrics.hpp"
+
+#include <capsula/core/Error.hpp>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace capsula::contour {
+
+namespace {
+
+/// Degree <= 11 integrands on cubic pieces: 6 Gauss points integrate them exactly.
+constexpr int exactPoints = 6;
+
+/// Roots in (0, span) of 3 a x^2 + 2 b x + c, the stationary points of a cubic piece.
+int stationaryPoints(const CubicPiece& p, double span, double roots[2])
+{
+  const double qa = 3.0 * p.a;
+  const double qb = 2.0 * p.b;
+  const double qc = p.c;
+  double candidates[2];
+  int count = 0;
+  const double scale = std::abs(qa) * span * span + std::abs(qb) * span + std::abs(qc);
+  if (std::abs(qa) * span * span <= 1e-14 * scale) {
+    if (qb != 0.0) {
+      candidates[count++] = -qc / qb;
+    }
+  } else {
+    const double discriminant = qb * qb - 4.0 * qa * qc;
+    if (discriminant >= 0.0) {
+      // Stable form: q = -(b + sign(b) sqrt(D)) / 2, roots q/a and c/q.
+      const double q = -0.5 * (qb + std::copysign(std::sqrt(discriminant), qb));
+      candidates[count++] = q / qa;
+      if (q != 0.0) {
+        candidates[count++] = qc / q;
+      }
+    }
+  }
+  int inside = 0;
+  for (int i = 0; i < count; ++i) {
+    if (candidates[i] > 0.0 && candidates[i] < span) {
+      roots[inside++] = candidates[i];
+    }
+  }
+  return inside;
+}
+
+} // namespace
+
+double enclosedArea(const Contour& contour)
+{
+  return 0.5 * contour.integrate(
+                   [](const ContourPoint& p, int, double) {
+                     return p.position.x() * p.tangent.y() - p.position.y() * p.tangent.x();
+                   },
+                   exactPoints);
+}
+
+Eigen::Vector2d centroid(const Contour& contour)
+{
+  const double area = enclosedArea(contour);
+  const Eigen::Vector2d moments = contour.integrate(
+      [](const ContourPoint& p, int, double) {
+        const Eigen::Vector2d& x = p.position;
+        return Eigen::Vector2d(x.x() * x.x() * p.tangent.y(), -x.y() * x.y() * p.tangent.x());
+      },
+      exactPoints);
+  return moments / (2.0 * area);
+}
+
+Eigen::Matrix2d secondMomentOfArea(const Contour& contour)
+{
+  const Eigen::Vector2d centre = centroid(contour);
+  // Moments about the centroid directly, so a contour far from the origin loses nothing
+  // to cancellation.
+  const Eigen::Vector3d moments = contour.integrate(
+      [&centre](const ContourPoint& p, int, double) {
+        const double x = p.position.x() - centre.x();
+        const double y = p.position.y() - centre.y();
+        return Eigen::Vector3d(x * x * x * p.tangent.y() / 3.0, -y * y * y * p.tangent.x() / 3.0,
+                               0.5 * x * x * y * p.tangent.y());
+      },
+      exactPoints);
+  Eigen::Matrix2d j;
+  j << moments(0), moments(2), moments(2), moments(1);
+  return j;
+}
+
+EquivalentEllipse equivalentEllipse(const Contour& contour)
+{
+  const double area = enclosedArea(contour);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(secondMomentOfArea(contour));
+  // Eigenvalues ascending: the last is the major axis.
+  const Eigen::Vector2d lambda = solver.eigenvalues().cwiseMax(0.0);
+  EquivalentEllipse ellipse;
+  ellipse.majorSemiAxis = 2.0 * std::sqrt(lambda(1) / area);
+  ellipse.minorSemiAxis = 2.0 * std::sqrt(lambda(0) / area);
+  const Eigen::Vector2d axis = solver.eigenvectors().col(1);
+  double angle = std::atan2(axis.y(), axis.x());
+  const double pi = std::acos(-1.0);
+  if (angle <= -0.5 * pi) {
+    angle += pi;
+  } else if (angle > 0.5 * pi) {
+    angle -= pi;
+  }
+  ellipse.orientation = angle;
+  return ellipse;
+}
+
+double taylorDeformation(const Contour& contour)
+{
+  const EquivalentEllipse ellipse = equivalentEllipse(contour);
+  return (ellipse.majorSemiAxis - ellipse.minorSemiAxis) /
+         (ellipse.majorSemiAxis + ellipse.minorSemiAxis);
+}
+
+Extent extent(const Contour& contour, int axis)
+{
+  core::require<core::InputError>(axis == 0 || axis == 1,
+                                  "contour extent: axis must be 0 (x) or 1 (y), got ", axis);
+  const CubicSpline& spline = axis == 0 ? contour.xSpline() : contour.ySpline();
+  const std::vector<double>& s = spline.knots();
+  Extent range{spline.piece(0).d, spline.piece(0).d};
+  for (int k = 0; k < spline.numberOfPieces(); ++k) {
+    const CubicPiece& piece = spline.piece(k);
+    const auto index = static_cast<std::size_t>(k);
+    const double span = s[index + 1] - s[index];
+    double roots[2];
+    const int count = stationaryPoints(piece, span, roots);
+    double candidates[3] = {piece.value(span), 0.0, 0.0};
+    for (int i = 0; i < count; ++i) {
+      candidates[i + 1] = piece.value(roots[i]);
+    }
+    for (int i = 0; i <= count; ++i) {
+      range.min = std::min(range.min, candidates[i]);
+      range.max = std::max(range.max, candidates[i]);
+    }
+  }
+  return range;
+}
+
+double cellLength(const Contour& contour)
+{
+  const Extent x = extent(contour, 0);
+  return x.max - x.min;
+}
+
+} // namespace capsula::contour

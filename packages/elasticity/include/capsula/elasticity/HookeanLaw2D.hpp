@@ -1,0 +1,33 @@
+#pragma once
+// Hookean law of a 2D membrane (a contour): tension from the local stretch ratio
+// (thesis eq A.36, after Breyiannis & Pozrikidis 2000).
+namespace capsula::elasticity {
+
+/// gamma = E (omega - 1), omega = dl / dl0 (eqs A.36-A.37).
+inline double hookeanTension(double modulus, double stretch)
+{
+  return modulus * (stretch - 1.0);
+}
+
+/// Strain energy per unit reference length, 0.5 E (omega - 1)^2: its derivative in
+/// omega is the tension, so int gamma d(omega)/dt dl0 is the rate of stored energy.
+inline double hookeanEnergyDensity(double modulus, double stretch)
+{
+  const double strain = stretch - 1.0;
+  return 0.5 * modulus * strain * strain;
+}
+
+class HookeanLaw2D {
+public:
+  /// Throws InputError unless the elastic modulus E is positive and finite.
+  explicit HookeanLaw2D(double modulus);
+
+  double modulus() const { return modulus_; }
+  double tension(double stretch) const { return hookeanTension(modulus_, stretch); }
+  double energyDensity(double stretch) const { return hookeanEnergyDensity(modulus_, stretch); }
+
+private:
+  double modulus_;
+};
+
+} // namespace capsula::elasticity
