@@ -1,0 +1,142 @@
+// The iterative local quadratic fit of Zinchenko, Rother & Davis (1997), thesis Section 5.5.
+//
+// In a frame (t1, t2, n) at node O, with n the current normal estimate, the neighbours'
+// offsets (x, y, z) are fitted by least squares with
+//     z = d x + e y + a x^2 + b xy + c y^2
+// (through O, since O is itself a surface point). The linear terms measure how far n is
+// tilted from the fitted surface's normal, (-d, -e, 1)/|.|, which becomes the next n.
+// At convergence d = e = 0: the fit is the paraboloid z = a x^2 + b xy + c y^2 about the
+// normal, and kappa = -(a + c), K = 4ac - b^2 (outward n, ElementCurvature.hpp).
+#include <capsula/mesh/Curvature.hpp>
+
+#include <capsula/core/Error.hpp>
+#include <capsula/mesh/ElementCurvature.hpp>
+#include <capsula/mesh/NodeNeighbourhood.hpp>
+#include <capsula/mesh/NodeNormals.hpp>
+
+#include <Eigen/Cholesky>
+
+#include <cmath>
+
+namespace capsula::mesh {
+
+namespace {
+
+using Vec5 = Eigen::Matrix<double, 5, 1>;
+using Mat5 = Eigen::Matrix<double, 5, 5>;
+
+constexpr std::size_t minimumNeighbours = 6;
+
+/// Unit tangents (t1, t2) with (t1, t2, n) right-handed and orthonormal.
+void tangentFrame(const Vec3& n, Vec3& t1, Vec3& t2)
+{
+  // Cross with the coordinate axis least aligned with n: never nearly parallel.
+  Vec3 axis = Vec3::Zero();
+  Eigen::Index k;
+  n.cwiseAbs().minCoeff(&k);
+  axis[k] = 1.0;
+  t1 = axis.cross(n).normalized();
+  t2 = n.cross(t1);
+}
+
+/// Least-squares coefficients (d, e, a, b, c) of the height function in the frame of n,
+/// from the neighbours' offsets from the node. The offsets are divided by the
+/// neighbourhood radius so that the normal equations are well conditioned: the
+/// coefficients are those of the scaled coordinates.
+Vec5 fitHeight(const Vec3& n, const std::vector<Vec3>& offsets, double radius,
+               Vec3& t1, Vec3& t2)
+{
+  tangentFrame(n, t1, t2);
+  Mat5 normalMatrix = Mat5::Zero();
+  Vec5 rhs = Vec5::Zero();
+  for (const Vec3& d : offsets) {
+    const double u = d.dot(t1) / radius, v = d.dot(t2) / radius, w = d.dot(n) / radius;
+    Vec5 row;
+    row << u, v, u * u, u * v, v * v;
+    normalMatrix.selfadjointView<Eigen::Lower>().rankUpdate(row);
+    rhs += w * row;
+  }
+  return normalMatrix.selfadjointView<Eigen::Lower>().ldlt().solve(rhs);
+}
+
+} // namespace
+
+NodeCurvatures quadraticFitCurvature(const SurfaceMesh& mesh, const std::vector<Vec3>& initialNormals,
+                                     const QuadraticFitOptions& options)
+{
+  core::require<core::InputError>(static_cast<int>(initialNormals.size()) == mesh.numNodes(),
+                                  "quadraticFitCurvature: got ", initialNormals.size(),
+                                  " initial normals for ", mesh.numNodes(), " nodes");
+  core::require<core::InputError>(options.rings >= 1, "quadraticFitCurvature: rings = ",
+                                  options.rings, " must be at least 1");
+  const auto numNodes = static_cast<std::size_t>(mesh.numNodes());
+  const NodeGraph graph = nodeGraph(mesh);
+  std::vector<int> scratch(numNodes, -1);
+  std::vector<Vec3> offsets;
+
+  NodeCurvatures result{std::vector<double>(numNodes), std::vector<double>(numNodes),
+                        std::vector<Vec3>(numNodes)};
+  for (int node = 0; node < mesh.numNodes(); ++node) {
+    const auto i = static_cast<std::size_t>(node);
+    const Vec3 x0 = mesh.position(node);
+    // Five unknowns: take one ring more where the rings asked for hold fewer than six
+    // neighbours (valence-4 vertices of a refined mesh), so the fit stays overdetermined.
+    std::vector<int> neighbours = nodeNeighbourhood(graph, node, options.rings, scratch);
+    for (int rings = options.rings + 1; neighbours.size() < minimumNeighbours; ++rings) {
+      const std::size_t before = neighbours.size();
+      neighbours = nodeNeighbourhood(graph, node, rings, scratch);
+      core::require<core::InputError>(neighbours.size() > before, "quadraticFitCurvature: the mesh has ",
+                                      mesh.numNodes(), " nodes, too few for a local fit");
+    }
+    offsets.clear();
+    double radius = 0.0;
+    for (int neighbour : neighbours) {
+      offsets.push_back(mesh.position(neighbour) - x0);
+      radius = std::max(radius, offsets.back().norm());
+    }
+    Vec3 n = initialNormals[i].normalized();
+    Vec3 t1, t2;
+    Vec5 fit;
+    // The correction (-d, -e) overshoots where the neighbourhood spans a large angle
+    // (coarse meshes, sharp tips): the plain update n += step then oscillates with
+    // growing amplitude, step_{k+1} = (1 - g) step_k with a gain g > 2. An oscillation
+    // reveals g, and the relaxed update n += step / g converges again, to the same fixed
+    // point d = e = 0. On resolved meshes g ~ 1 and the plain update is kept.
+    double relaxation = 1.0;
+    Vec3 previousStep = Vec3::Zero();
+    for (int iteration = 0;; ++iteration) {
+      core::require<core::NumericalError>(
+          iteration < options.maxIterations, "quadraticFitCurvature: the normal at node ", node,
+          " did not settle within ", options.maxIterations, " iterations (tolerance ",
+          options.tolerance, "); the node's neighbourhood may be folded or degenerate");
+      fit = fitHeight(n, offsets, radius, t1, t2);
+      const Vec3 step = -(fit[0] * t1 + fit[1] * t2);
+      const double ratio = iteration == 0 ? 0.0 : step.dot(previousStep) / previousStep.squaredNorm();
+      if (ratio < 0.0) {
+        relaxation /= 1.0 - ratio;  // the gain of the last relaxed step was 1 - ratio
+      }
+      previousStep = step;
+      const Vec3 next = (n + relaxation * step).normalized();
+      const double moved = (next - n).norm();
+      n = next;
+      if (moved < options.tolerance) {
+        break;
+      }
+    }
+    // Height f(x, y) in unscaled coordinates: f_x = d, f_y = e, f_xx = 2a/r, f_xy = b/r,
+    // f_yy = 2c/r for the scaled coefficients; the normal is the one just computed.
+    const CurvaturePair k = graphCurvature(fit[0], fit[1], 2.0 * fit[2] / radius, fit[3] / radius,
+                                           2.0 * fit[4] / radius);
+    result.mean[i] = k.mean;
+    result.gaussian[i] = k.gaussian;
+    result.normal[i] = n;
+  }
+  return result;
+}
+
+NodeCurvatures quadraticFitCurvature(const SurfaceMesh& mesh, const QuadraticFitOptions& options)
+{
+  return quadraticFitCurvature(mesh, nodeNormals(mesh), options);
+}
+
+} // namespace capsula::mesh
