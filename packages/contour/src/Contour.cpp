@@ -74,7 +74,7 @@ CubicSpline fitCoordinate(const Eigen::Matrix2Xd& nodes, const ContourOptions& o
 Contour::Contour(Eigen::Matrix2Xd nodes, ContourOptions options)
     : nodes_(validatedNodes(std::move(nodes))), options_(validatedOptions(options)),
       xSpline_(fitCoordinate(nodes_, options_, 0)), ySpline_(fitCoordinate(nodes_, options_, 1)),
-      arcLengthRule_(unitGaussLegendre(options_.arcLengthPoints))
+      arcLengthRule_(quadrature::gaussLegendre(options_.arcLengthPoints))
 {
   const int n = numberOfSegments();
   segmentLengths_.resize(static_cast<std::size_t>(n));

@@ -1,6 +1,6 @@
 #include "capsula/contour/InitialShapes.hpp"
 
-#include "capsula/contour/UnitGaussLegendre.hpp"
+#include <capsula/quadrature/GaussLegendre.hpp>
 
 #include <capsula/core/Error.hpp>
 
@@ -21,7 +21,7 @@ using core::require;
 class EllipseArcLength {
 public:
   EllipseArcLength(double a, double b, double start)
-      : a_(a), b_(b), start_(start), rule_(unitGaussLegendre(16))
+      : a_(a), b_(b), start_(start), rule_(quadrature::gaussLegendre(16))
   {
     // The speed sqrt(a^2 sin^2 + b^2 cos^2) is analytic within atanh(min/max) of the real
     // axis; panels no wider than that distance make 16-point Gauss exact to round-off.
@@ -78,7 +78,7 @@ private:
   double a_;
   double b_;
   double start_;
-  UnitRule rule_;
+  quadrature::Rule1D rule_;
   std::size_t panelCount_ = 0;
   double width_ = 0.0;
   std::vector<double> cumulative_;

@@ -3,7 +3,7 @@
 #include "capsula/elasticity/MembraneLoad2D.hpp"
 
 #include <capsula/contour/CubicSpline.hpp>
-#include <capsula/contour/UnitGaussLegendre.hpp>
+#include <capsula/quadrature/GaussLegendre.hpp>
 #include <capsula/core/Error.hpp>
 
 #include <cstddef>
@@ -54,7 +54,7 @@ MembraneState2D ElasticMembrane2D::evaluate(const Contour& current) const
 
   // Energy 0.5 E int (omega - 1)^2 dl0: omega is quadratic in l0 on each piece, so three
   // Gauss points integrate the quartic exactly.
-  const contour::UnitRule rule = contour::unitGaussLegendre(3);
+  const quadrature::Rule1D rule = quadrature::gaussLegendre(3);
   double energy = 0.0;
   for (std::size_t k = 0; k < nodes; ++k) {
     const double span = l0[k + 1] - l0[k];

@@ -2,7 +2,6 @@
 // and the spline fits checked against the defining conditions (eqs A.17-A.20, A.31-A.34).
 #include <capsula/contour/CubicSpline.hpp>
 #include <capsula/contour/Tridiagonal.hpp>
-#include <capsula/contour/UnitGaussLegendre.hpp>
 #include <capsula/core/Error.hpp>
 
 #include <Eigen/Dense>
@@ -171,27 +170,6 @@ TEST(ContourTridiagonal, CyclicShermanMorrisonMatchesDenseSolve)
     const Eigen::VectorXd x = a.partialPivLu().solve(b);
     for (int i = 0; i < n; ++i) {
       EXPECT_NEAR(rhs[static_cast<std::size_t>(i)], x(i), 1e-14) << "n = " << n;
-    }
-  }
-}
-
-TEST(ContourGaussLegendre, ExactToDegreeTwoNMinusOneOnly)
-{
-  for (int n : {1, 2, 3, 6, 8, 16}) {
-    const capsula::contour::UnitRule rule = capsula::contour::unitGaussLegendre(n);
-    for (int degree = 0; degree <= 2 * n; ++degree) {
-      double sum = 0.0;
-      for (std::size_t q = 0; q < rule.points.size(); ++q) {
-        sum += rule.weights[q] * std::pow(rule.points[q], degree);
-      }
-      const double exact = 1.0 / (degree + 1);
-      if (degree < 2 * n) {
-        EXPECT_NEAR(sum, exact, 1e-15) << "n = " << n << ", degree " << degree; // round-off
-      } else if (n <= 8) {
-        // The first degree a Gauss rule misses, with error (n!)^4 / ((2n+1) ((2n)!)^2)
-        // (3.5e-10 at n = 8): a rule exact there is not Gauss-Legendre.
-        EXPECT_GT(std::abs(sum - exact), 1e-10) << "n = " << n;
-      }
     }
   }
 }

@@ -20,7 +20,7 @@
 //     of node 0 are then the limits from segment 0 (s -> 0+); the other side is
 //     pointAt(numberOfSegments() - 1, 1.0).
 #include "capsula/contour/CubicSpline.hpp"
-#include "capsula/contour/UnitGaussLegendre.hpp"
+#include <capsula/quadrature/GaussLegendre.hpp>
 
 #include <Eigen/Core>
 
@@ -122,7 +122,7 @@ private:
   ContourOptions options_;
   CubicSpline xSpline_;
   CubicSpline ySpline_;
-  UnitRule arcLengthRule_;
+  quadrature::Rule1D arcLengthRule_;
   std::vector<double> segmentLengths_;
   std::vector<double> knotArcLengths_;
 };
@@ -130,7 +130,7 @@ private:
 template <typename Integrand>
 auto Contour::integrate(Integrand&& integrand, int points) const
 {
-  const UnitRule rule = unitGaussLegendre(points);
+  const quadrature::Rule1D rule = quadrature::gaussLegendre(points);
   using Result = std::decay_t<decltype(integrand(std::declval<const ContourPoint&>(), 0, 0.0))>;
   Result total{};
   bool first = true;
