@@ -1,0 +1,142 @@
+#include "capsula/io/Xdmf.hpp"
+
+#include "capsula/io/NumberFormat.hpp"
+
+#include <sstream>
+
+namespace capsula::io {
+
+namespace {
+
+std::string escaped(const std::string& text)
+{
+  std::string out;
+  for (const char ch : text) {
+    switch (ch) {
+    case '&': out += "&amp;"; break;
+    case '<': out += "&lt;"; break;
+    case '>': out += "&gt;"; break;
+    case '"': out += "&quot;"; break;
+    default: out += ch;
+    }
+  }
+  return out;
+}
+
+std::string dimensions(std::size_t rows, std::size_t columns)
+{
+  return columns == 1 ? std::to_string(rows) : std::to_string(rows) + " " + std::to_string(columns);
+}
+
+void dataItem(std::ostream& out, const std::string& indent, const std::string& dims, bool integer,
+              const std::string& fileName, const std::string& dataset)
+{
+  out << indent << "<DataItem Dimensions=\"" << dims << "\" NumberType=\""
+      << (integer ? "Int" : "Float") << "\" Precision=\"8\" Format=\"HDF\">" << escaped(fileName)
+      << ":" << escaped(dataset) << "</DataItem>\n";
+}
+
+std::string attributeType(int components)
+{
+  switch (components) {
+  case 1: return "Scalar";
+  case 2:
+  case 3: return "Vector";
+  case 6: return "Tensor6";
+  case 9: return "Tensor";
+  default: return "Matrix";
+  }
+}
+
+void attributes(std::ostream& out, const SnapshotLayout& snapshot,
+                const SnapshotLayout::BlockLayout& block,
+                const std::vector<SnapshotLayout::FieldLayout>& fields, bool onNodes)
+{
+  const std::size_t count = onNodes ? block.nodes : block.cells;
+  for (const auto& f : fields) {
+    out << "          <Attribute Name=\"" << escaped(f.name) << "\" AttributeType=\""
+        << attributeType(f.components) << "\" Center=\"" << (onNodes ? "Node" : "Cell") << "\">\n";
+    dataItem(out, "            ", dimensions(count, static_cast<std::size_t>(f.components)), false,
+             snapshot.fileName,
+             "/" + block.name + (onNodes ? "/node_fields/" : "/cell_fields/") + f.name);
+    out << "          </Attribute>\n";
+  }
+}
+
+void topology(std::ostream& out, const SnapshotLayout& snapshot, const SnapshotLayout::BlockLayout& block)
+{
+  const std::string type = xdmfTopologyName(block.topology);
+  if (block.topology == Topology::StructuredGrid) {
+    out << "          <Topology TopologyType=\"" << type << "\" Dimensions=\"" << block.gridShape[0]
+        << " " << block.gridShape[1] << "\"/>\n";
+    return;
+  }
+  out << "          <Topology TopologyType=\"" << type << "\" NumberOfElements=\"" << block.cells << "\"";
+  if (block.topology == Topology::Polylines) {
+    out << " NodesPerElement=\"" << block.nodesPerCell << "\"";
+  }
+  out << ">\n";
+  dataItem(out, "            ", dimensions(block.cells, block.nodesPerCell), true, snapshot.fileName,
+           "/" + block.name + "/connectivity");
+  out << "          </Topology>\n";
+}
+
+} // namespace
+
+SnapshotLayout layoutOf(const Snapshot& snapshot, const std::string& fileName)
+{
+  SnapshotLayout layout;
+  layout.fileName = fileName;
+  layout.time = snapshot.time;
+  layout.step = snapshot.step;
+  for (const auto& b : snapshot.blocks) {
+    SnapshotLayout::BlockLayout block;
+    block.name = b.name;
+    block.topology = b.topology;
+    block.dimension = b.dimension;
+    block.nodes = b.nodeCount();
+    block.cells = b.cellCount();
+    block.nodesPerCell = b.nodesPerCell();
+    block.gridShape = b.gridShape;
+    for (const auto& f : b.nodeFields) {
+      block.nodeFields.push_back({f.name, f.components});
+    }
+    for (const auto& f : b.cellFields) {
+      block.cellFields.push_back({f.name, f.components});
+    }
+    layout.blocks.push_back(std::move(block));
+  }
+  return layout;
+}
+
+std::string xdmfTimeSeries(const std::vector<SnapshotLayout>& snapshots)
+{
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" ?>\n"
+      << "<Xdmf Version=\"3.0\">\n"
+      << "  <Domain>\n"
+      << "    <Grid Name=\"TimeSeries\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const auto& snapshot : snapshots) {
+    out << "      <Grid Name=\"step " << snapshot.step
+        << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
+        << "        <Time Value=\"" << shortestDecimal(snapshot.time) << "\"/>\n";
+    for (const auto& block : snapshot.blocks) {
+      out << "        <Grid Name=\"" << escaped(block.name) << "\" GridType=\"Uniform\">\n";
+      topology(out, snapshot, block);
+      out << "          <Geometry GeometryType=\"" << (block.dimension == 2 ? "XY" : "XYZ") << "\">\n";
+      dataItem(out, "            ", dimensions(block.nodes, static_cast<std::size_t>(block.dimension)),
+               false, snapshot.fileName, "/" + block.name + "/positions");
+      out << "          </Geometry>\n";
+      attributes(out, snapshot, block, block.nodeFields, true);
+      attributes(out, snapshot, block, block.cellFields, false);
+      out << "        </Grid>\n";
+    }
+    out << "      </Grid>\n";
+  }
+  out << "    </Grid>\n"
+      << "  </Domain>\n"
+      << "</Xdmf>\n";
+  return out.str();
+}
+
+} // namespace capsula::io

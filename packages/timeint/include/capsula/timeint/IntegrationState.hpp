@@ -1,0 +1,55 @@
+#pragma once
+// Everything a time integration carries from one step to the next. Copying this struct
+// (or writing it to a checkpoint and reading it back, see toRecord/fromRecord) and
+// continuing from the copy reproduces the uninterrupted run bit for bit.
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace capsula::timeint {
+
+struct IntegrationStatistics {
+  std::int64_t acceptedSteps = 0;
+  std::int64_t rejectedSteps = 0;        ///< attempts rejected by the error control
+  std::int64_t rhsEvaluations = 0;       ///< calls of the right-hand side
+  double smallestStep = std::numeric_limits<double>::infinity();  ///< over accepted steps
+  double largestStep = 0.0;                                       ///< over accepted steps
+  double lastStep = 0.0;                 ///< size of the last accepted step
+  double lastErrorNorm = 0.0;            ///< error estimate of the last accepted step
+};
+
+struct IntegrationState {
+  double time = 0.0;
+  std::vector<double> y;                 ///< the state the right-hand side advances
+  double proposedStep = 0.0;             ///< size of the next attempt
+  /// PI controller memory: the previous accepted error norm (unused by other controllers).
+  double previousErrorNorm = 0.0;
+  /// f(time, y) when the method is "first same as last" and it is known; empty otherwise.
+  /// Keeping it saves one right-hand-side evaluation per step and on restart.
+  std::vector<double> firstStageDerivative;
+  /// Output bookkeeping of TimeIntegrator::integrate: output k is due at
+  /// outputOrigin + k * interval; nextOutput is the next k to observe.
+  double outputOrigin = 0.0;
+  std::int64_t nextOutput = 0;
+  bool steady = false;                   ///< steady state was detected
+  IntegrationStatistics statistics;
+};
+
+/// Named numbers and arrays, the form in which a state goes into a checkpoint file.
+struct StateRecord {
+  std::map<std::string, double> reals;
+  std::map<std::string, std::int64_t> integers;
+  std::map<std::string, std::vector<double>> arrays;
+};
+
+/// All fields under fixed names: reals "time", "proposed step", ...; integers
+/// "accepted steps", ...; arrays "state" and, if known, "first stage derivative".
+StateRecord toRecord(const IntegrationState& state);
+
+/// The inverse of toRecord. Throws core::InputError naming `source` and the missing
+/// entry if the record lacks one.
+IntegrationState fromRecord(const StateRecord& record, const std::string& source);
+
+} // namespace capsula::timeint

@@ -1,0 +1,139 @@
+#pragma once
+// Explicit Runge-Kutta time integration of dy/dt = f(t, y) over a flat state vector
+// (thesis Section 3.10 / App. A.8: dx_i/dt = u_i for all node coordinates). The
+// integrator never knows what the state means.
+//
+// Methods and their error control:
+//   RKF45            thesis eqs 3.47-3.50: the 4th-order solution advances (optionally the
+//                    5th, "local extrapolation"); err = max_i |x5_i - x4_i|, the largest
+//                    difference of any node coordinate (the thesis's |x5 - x4| for the
+//                    whole state); ThesisStepController (double/halve; see there for the
+//                    acceptance rule). Absolute tolerance eps.
+//   DormandPrince45  5th order advances, FSAL; err = scaled RMS norm with
+//                    sc_i = Tolerance + Relative tolerance * |y_i|; PiStepController.
+//   RK4              classical Runge-Kutta, fixed steps of `initialStep`.
+// Any method runs with fixed steps when `adaptive` is false (tests, benchmarks).
+//
+// Failures: a non-finite right-hand side or state, and a step size driven below
+// `minimumStep`, throw core::NumericalError naming the time and the step size. The state
+// (time, y) is then the last accepted one, untouched, so the caller can checkpoint it.
+#include "capsula/timeint/ButcherTableau.hpp"
+#include "capsula/timeint/IntegrationState.hpp"
+#include "capsula/timeint/SteadyState.hpp"
+#include "capsula/timeint/StepControllers.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace capsula::timeint {
+
+enum class Method { RKF45, DormandPrince45, RK4 };
+
+/// "RKF45", "DormandPrince45", "RK4" (the deck spelling).
+std::string toString(Method method);
+/// The inverse of toString; throws core::InputError naming the word.
+Method methodFromString(const std::string& word);
+
+struct TimeIntegrationSettings {
+  Method method = Method::RKF45;
+  bool adaptive = true;               ///< false: fixed steps of initialStep (RK4: always false)
+  bool localExtrapolation = false;    ///< RKF45: advance with the 5th-order solution
+  double tolerance = 1.0e-6;          ///< RKF45: eps of eq 3.50; DP45: absolute tolerance
+  double relativeTolerance = 0.0;     ///< DP45 only
+  double initialStep = 1.0e-3;        ///< first attempted step; the step of fixed-step runs
+  double minimumStep = 1.0e-12;       ///< a controller step below this is a failure
+  double maximumStep = 1.0;           ///< the controller never proposes more
+  double endTime = 1.0;               ///< where integrate() stops
+  SteadyStateCriterion steadyCriterion = SteadyStateCriterion::Off;
+  double steadyTolerance = 0.0;       ///< steady when the measure falls below this
+  PiControllerParameters piController;
+};
+
+/// dy/dt = f(t, y). `dydt` arrives sized like `y`; the function fills every entry and
+/// must be a pure function of (t, y) (a restarted run relies on it).
+using RightHandSide =
+  std::function<void(double t, const std::vector<double>& y, std::vector<double>& dydt)>;
+
+/// Called right after every right-hand-side evaluation with the stage's (t, y); may
+/// modify the stage derivative in place (a tethered node's velocity set to zero, the mean
+/// vertical velocity of a fixed-height cell subtracted, ...).
+using StageConstraint =
+  std::function<void(double t, const std::vector<double>& y, std::vector<double>& dydt)>;
+
+enum class OutputReason { Start, Interval, End, SteadyState };
+
+/// Called by integrate() at output times with the accepted state there.
+using Observer = std::function<void(const IntegrationState& state, OutputReason reason)>;
+
+/// Output k (k = 1, 2, ...) is due at state.outputOrigin + k * interval, and the last at
+/// the end time; interval 0 means the end time only. Start: output 0, at the first call
+/// on a fresh state.
+struct OutputSchedule {
+  double interval = 0.0;
+  bool observeStart = true;
+};
+
+/// What one accepted step did.
+struct StepReport {
+  double stepSize = 0.0;
+  double errorNorm = 0.0;        ///< 0 for fixed steps
+  int rejectedAttempts = 0;
+  bool shortened = false;        ///< cut short to land on the stop time
+  double steadyMeasure = 0.0;    ///< 0 when steady-state detection is off
+  bool steady = false;
+};
+
+enum class StopReason { EndTime, SteadyState };
+
+class TimeIntegrator {
+public:
+  /// Throws core::InputError naming the deck key ("Time integration/Minimum step") if the
+  /// settings are inconsistent.
+  TimeIntegrator(TimeIntegrationSettings settings, RightHandSide rhs);
+
+  void setStageConstraint(StageConstraint constraint);
+
+  const TimeIntegrationSettings& settings() const { return settings_; }
+  const ButcherTableau& tableau() const { return tableau_; }
+  bool adaptive() const;
+
+  /// A fresh state at (t0, y0) with the initial step proposed.
+  IntegrationState start(double t0, std::vector<double> y0) const;
+
+  /// Advances `state` by one accepted step that ends at or before tStop (> state.time).
+  /// Rejected attempts are retried with smaller steps. A step that would pass tStop is
+  /// shortened to end exactly on it, and one that would stop short of it by less than 1%
+  /// of its size is stretched onto it (no sliver steps). The step size proposed before
+  /// such an adjustment is kept for the next step (an adjusted step changes the proposal
+  /// only through a rejection).
+  StepReport step(IntegrationState& state, double tStop);
+
+  /// Steps from state.time to settings().endTime, landing exactly on every output time
+  /// and calling the observers there (never inside a step). Stops early, after one more
+  /// observation, when steady state is detected. Continuing from a copy of the state
+  /// that an observer received reproduces the uninterrupted run bit for bit.
+  StopReason integrate(IntegrationState& state, const OutputSchedule& schedule,
+                       const std::vector<Observer>& observers);
+
+  /// The time of output `index` under `schedule` for a run started at `origin`.
+  double outputTime(double origin, std::int64_t index, const OutputSchedule& schedule) const;
+
+private:
+  void evaluate(double t, const std::vector<double>& y, std::vector<double>& dydt,
+                IntegrationState& state, double step, int stage);
+  StepReport attemptUntilAccepted(IntegrationState& state, double tStop);
+
+  TimeIntegrationSettings settings_;
+  RightHandSide rhs_;
+  StageConstraint constraint_;
+  ButcherTableau tableau_;
+  ThesisStepController thesisController_;
+  PiStepController piController_;
+  std::vector<double> errorWeights_;        // b - bEmbedded
+  // Work arrays, sized on first use.
+  std::vector<std::vector<double>> slopes_; // k_1..k_s
+  std::vector<double> stageState_, newState_, errorVector_;
+};
+
+} // namespace capsula::timeint

@@ -1,0 +1,74 @@
+#include "capsula/timeint/IntegrationState.hpp"
+
+#include "capsula/core/Error.hpp"
+
+namespace capsula::timeint {
+
+namespace {
+
+template <typename Map>
+const typename Map::mapped_type& entry(const Map& map, const std::string& key,
+                                       const std::string& source)
+{
+  const auto it = map.find(key);
+  core::require<core::InputError>(it != map.end(), "The time-integration record in '", source,
+                                  "' has no entry '", key,
+                                  "': it was not written by this version of Capsula.");
+  return it->second;
+}
+
+} // namespace
+
+StateRecord toRecord(const IntegrationState& state)
+{
+  StateRecord r;
+  r.reals["time"] = state.time;
+  r.reals["proposed step"] = state.proposedStep;
+  r.reals["previous error norm"] = state.previousErrorNorm;
+  r.reals["output origin"] = state.outputOrigin;
+  r.reals["smallest step"] = state.statistics.smallestStep;
+  r.reals["largest step"] = state.statistics.largestStep;
+  r.reals["last step"] = state.statistics.lastStep;
+  r.reals["last error norm"] = state.statistics.lastErrorNorm;
+  r.integers["next output"] = state.nextOutput;
+  r.integers["steady"] = state.steady ? 1 : 0;
+  r.integers["accepted steps"] = state.statistics.acceptedSteps;
+  r.integers["rejected steps"] = state.statistics.rejectedSteps;
+  r.integers["rhs evaluations"] = state.statistics.rhsEvaluations;
+  r.arrays["state"] = state.y;
+  if (!state.firstStageDerivative.empty()) {
+    r.arrays["first stage derivative"] = state.firstStageDerivative;
+  }
+  return r;
+}
+
+IntegrationState fromRecord(const StateRecord& record, const std::string& source)
+{
+  IntegrationState s;
+  s.time = entry(record.reals, "time", source);
+  s.proposedStep = entry(record.reals, "proposed step", source);
+  s.previousErrorNorm = entry(record.reals, "previous error norm", source);
+  s.outputOrigin = entry(record.reals, "output origin", source);
+  s.statistics.smallestStep = entry(record.reals, "smallest step", source);
+  s.statistics.largestStep = entry(record.reals, "largest step", source);
+  s.statistics.lastStep = entry(record.reals, "last step", source);
+  s.statistics.lastErrorNorm = entry(record.reals, "last error norm", source);
+  s.nextOutput = entry(record.integers, "next output", source);
+  s.steady = entry(record.integers, "steady", source) != 0;
+  s.statistics.acceptedSteps = entry(record.integers, "accepted steps", source);
+  s.statistics.rejectedSteps = entry(record.integers, "rejected steps", source);
+  s.statistics.rhsEvaluations = entry(record.integers, "rhs evaluations", source);
+  s.y = entry(record.arrays, "state", source);
+  const auto fsal = record.arrays.find("first stage derivative");
+  if (fsal != record.arrays.end()) {
+    s.firstStageDerivative = fsal->second;
+    core::require<core::InputError>(s.firstStageDerivative.size() == s.y.size(),
+                                    "The time-integration record in '", source,
+                                    "' is inconsistent: 'first stage derivative' has ",
+                                    s.firstStageDerivative.size(), " entries, 'state' has ",
+                                    s.y.size(), ".");
+  }
+  return s;
+}
+
+} // namespace capsula::timeint

@@ -1,0 +1,70 @@
+#include "capsula/timeint/TimeIntegrationParameters.hpp"
+
+#include "capsula/core/ParameterDeclaration.hpp"
+
+#include <utility>
+
+namespace capsula::timeint {
+
+void declareTimeIntegrationParameters(Teuchos::ParameterList& list)
+{
+  using namespace capsula::core;
+  declareReal(list, "End time", 10.0, "Time at which the run ends (in the deck's time unit).");
+  declareChoice(list, "Method", "RKF45", {"RKF45", "DormandPrince45", "RK4"},
+                "RKF45: the thesis's Runge-Kutta-Fehlberg with its step doubling/halving (eqs "
+                "3.47-3.50). DormandPrince45: 5th order with a smooth PI step-size controller. "
+                "RK4: classical Runge-Kutta with fixed steps of 'Initial step'.");
+  declareReal(list, "Tolerance", 1.0e-6,
+              "Local error tolerance. RKF45: eps of eq 3.50 on the largest coordinate error "
+              "|x5 - x4| of a step (the thesis used 1e-10 in 3D, 1e-6 in 2D). DormandPrince45: "
+              "absolute tolerance of the scaled RMS error norm.",
+              greaterThan(0.0));
+  declareReal(list, "Relative tolerance", 0.0,
+              "DormandPrince45 only: relative tolerance added to 'Tolerance' in the error "
+              "scale (0: purely absolute, as positions have no natural scale).",
+              atLeast(0.0));
+  declareBool(list, "Local extrapolation", false,
+              "RKF45 only: advance with the 5th-order solution instead of the thesis's 4th.");
+  declareReal(list, "Initial step", 1.0e-3,
+              "First step size tried; the fixed step size for RK4.", greaterThan(0.0));
+  declareReal(list, "Minimum step", 1.0e-12,
+              "The run fails (keeping the last good state) if the controller needs a smaller "
+              "step than this.",
+              greaterThan(0.0));
+  declareReal(list, "Maximum step", 1.0, "Largest step the controller may take.",
+              greaterThan(0.0));
+  declareReal(list, "Steady tolerance", 0.0,
+              "Stop when the state stops moving: the 'Steady criterion' measure of an accepted "
+              "step falls below this (0: never stop early).",
+              atLeast(0.0));
+  declareChoice(list, "Steady criterion", "MaxChangeRate", {"MaxChangeRate", "L2Change"},
+                "MaxChangeRate: largest coordinate change of a step divided by the step size. "
+                "L2Change: Euclidean norm of the change of the state over a step (the thesis's "
+                "2D criterion with tolerance 1e-7; it depends on the step size and node count).");
+}
+
+TimeIntegrationSettings timeIntegrationSettings(const Teuchos::ParameterList& list)
+{
+  TimeIntegrationSettings s;
+  s.endTime = list.get<double>("End time");
+  s.method = methodFromString(list.get<std::string>("Method"));
+  s.adaptive = s.method != Method::RK4;
+  s.tolerance = list.get<double>("Tolerance");
+  s.relativeTolerance = list.get<double>("Relative tolerance");
+  s.localExtrapolation = list.get<bool>("Local extrapolation");
+  s.initialStep = list.get<double>("Initial step");
+  s.minimumStep = list.get<double>("Minimum step");
+  s.maximumStep = list.get<double>("Maximum step");
+  s.steadyTolerance = list.get<double>("Steady tolerance");
+  s.steadyCriterion = s.steadyTolerance > 0.0
+                        ? steadyStateCriterionFromString(list.get<std::string>("Steady criterion"))
+                        : SteadyStateCriterion::Off;
+  return s;
+}
+
+TimeIntegrator makeTimeIntegrator(const Teuchos::ParameterList& list, RightHandSide rhs)
+{
+  return TimeIntegrator(timeIntegrationSettings(list), std::move(rhs));
+}
+
+} // namespace capsula::timeint
