@@ -60,8 +60,9 @@ NodeCurvatures jetFitCurvature(const SurfaceMesh& mesh, const JetFitOptions& opt
     form.comply_wrt_given_normal(Kernel::Vector_3(n[0], n[1], n[2]));
     // Monge form: z = (k1 x^2 + k2 y^2)/2 + ... with z along the (now outward) normal;
     // a sphere bends away from its outward normal, so k1 = k2 = -1/R there.
-    const double k1 = form.principal_curvatures(0);
-    const double k2 = form.principal_curvatures(1);
+    const std::vector<double>& coefficients = form.coefficients();  // k1 >= k2 come first
+    const double k1 = coefficients.at(0);
+    const double k2 = coefficients.at(1);
     const auto i = static_cast<std::size_t>(node);
     result.mean[i] = -0.5 * (k1 + k2);
     result.gaussian[i] = k1 * k2;

@@ -7,6 +7,9 @@
 // tilted from the fitted surface's normal, (-d, -e, 1)/|.|, which becomes the next n.
 // At convergence d = e = 0: the fit is the paraboloid z = a x^2 + b xy + c y^2 about the
 // normal, and kappa = -(a + c), K = 4ac - b^2 (outward n, ElementCurvature.hpp).
+// Its accuracy is limited by the quartic terms of the surface, which the paraboloid
+// misses: second order, with a constant that grows with the square of the neighbourhood
+// radius, hence the default of one ring.
 #include <capsula/mesh/Curvature.hpp>
 
 #include <capsula/core/Error.hpp>
@@ -94,42 +97,46 @@ NodeCurvatures quadraticFitCurvature(const SurfaceMesh& mesh, const std::vector<
       offsets.push_back(mesh.position(neighbour) - x0);
       radius = std::max(radius, offsets.back().norm());
     }
-    Vec3 n = initialNormals[i].normalized();
-    Vec3 t1, t2;
-    Vec5 fit;
-    // The correction (-d, -e) overshoots where the neighbourhood spans a large angle
-    // (coarse meshes, sharp tips): the plain update n += step then oscillates with
-    // growing amplitude, step_{k+1} = (1 - g) step_k with a gain g > 2. An oscillation
-    // reveals g, and the relaxed update n += step / g converges again, to the same fixed
-    // point d = e = 0. On resolved meshes g ~ 1 and the plain update is kept.
-    double relaxation = 1.0;
-    Vec3 previousStep = Vec3::Zero();
-    for (int iteration = 0;; ++iteration) {
+    // Solve R(theta) = 0 for the tilt correction R = -(d t1 + e t2), written in the tangent
+    // frame (s1, s2) of the initial normal n0, with n(theta) = (n0 + theta_1 s1 + theta_2 s2)/|.|.
+    // Zinchenko's update theta += R assumes dR/dtheta = -I, which holds on resolved
+    // meshes; where the neighbourhood turns through a large angle (coarse meshes, sharp
+    // tips) the gain differs from 1 in each direction and the plain update overshoots and
+    // oscillates. Broyden's secant update learns dR/dtheta from the iterates (exactly, in
+    // two steps, while R is linear) and converges to the same fixed point.
+    const Vec3 n0 = initialNormals[i].normalized();
+    Vec3 s1, s2;
+    tangentFrame(n0, s1, s2);
+    Eigen::Vector2d theta = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d jacobian = -Eigen::Matrix2d::Identity();
+    Vec3 n = n0, t1, t2;
+    Vec5 fit = fitHeight(n, offsets, radius, t1, t2);
+    const auto correctionOf = [&]() {
+      const Vec3 step = -(fit[0] * t1 + fit[1] * t2);
+      return Eigen::Vector2d(step.dot(s1), step.dot(s2));
+    };
+    Eigen::Vector2d correction = correctionOf();
+    // |(d, e)| is the angle between n and the fitted normal (NaN-safe test).
+    for (int iteration = 0; !(std::hypot(fit[0], fit[1]) < options.tolerance); ++iteration) {
       core::require<core::NumericalError>(
           iteration < options.maxIterations, "quadraticFitCurvature: the normal at node ", node,
           " did not settle within ", options.maxIterations, " iterations (tolerance ",
           options.tolerance, "); the node's neighbourhood may be folded or degenerate");
+      const Eigen::Vector2d delta = -jacobian.inverse() * correction;
+      theta += delta;
+      n = (n0 + theta[0] * s1 + theta[1] * s2).normalized();
       fit = fitHeight(n, offsets, radius, t1, t2);
-      const Vec3 step = -(fit[0] * t1 + fit[1] * t2);
-      const double ratio = iteration == 0 ? 0.0 : step.dot(previousStep) / previousStep.squaredNorm();
-      if (ratio < 0.0) {
-        relaxation /= 1.0 - ratio;  // the gain of the last relaxed step was 1 - ratio
-      }
-      previousStep = step;
-      const Vec3 next = (n + relaxation * step).normalized();
-      const double moved = (next - n).norm();
-      n = next;
-      if (moved < options.tolerance) {
-        break;
-      }
+      const Eigen::Vector2d next = correctionOf();
+      jacobian += (next - correction - jacobian * delta) * delta.transpose() / delta.squaredNorm();
+      correction = next;
     }
-    // Height f(x, y) in unscaled coordinates: f_x = d, f_y = e, f_xx = 2a/r, f_xy = b/r,
-    // f_yy = 2c/r for the scaled coefficients; the normal is the one just computed.
+    // Height f(x, y) in unscaled coordinates: f_x = d, f_y = e (now < tolerance),
+    // f_xx = 2a/radius, f_xy = b/radius, f_yy = 2c/radius for the scaled coefficients.
     const CurvaturePair k = graphCurvature(fit[0], fit[1], 2.0 * fit[2] / radius, fit[3] / radius,
                                            2.0 * fit[4] / radius);
     result.mean[i] = k.mean;
     result.gaussian[i] = k.gaussian;
-    result.normal[i] = n;
+    result.normal[i] = (n - fit[0] * t1 - fit[1] * t2).normalized();
   }
   return result;
 }

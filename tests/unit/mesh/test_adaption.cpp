@@ -232,7 +232,7 @@ TEST(Refinement, NewNodesLieOnTheParentMapsInBothConfigurations)
     // The reference nodes are placed with the CURRENT parametrisation (material
     // consistency), so the reference surface's own eq 3.17 parametrisation differs from the
     // one that placed them: its volume moves by 6e-6 (sphere current) and 1.2e-5
-    // (ellipsoid current) at this coarse level, far below its discretisation error (~1e-3).
+    // (ellipsoid current) at this coarse level, a tenth of its discretisation error (1.4e-4).
     EXPECT_LT(std::abs(dV), 3e-5);
   }
 }
@@ -257,23 +257,31 @@ TEST(Refinement, UniformRefinementOfTheIcosphere)
   EXPECT_EQ(refined.mesh.numNodes(), 2562);
   EXPECT_EQ(countSplits(refined.splits).red, 320);
   expectClosedAndConforming(refined.mesh);
-  // All-red refinement re-parametrises nothing at the old nodes; the volume changes by
-  // ~2.5e-8 (new midside nodes on the parents' maps at parametric quarter points).
+  // Only the children's own eq 3.17 parametrisation moves the surface: the volume changes
+  // by 2.5e-8, against a discretisation error of 1.4e-4 of the level-2 sphere.
   EXPECT_LT(std::abs(relativeChange(enclosedVolume(refined.mesh), enclosedVolume(coarse))), 1e-7);
-  // Red children are similar to their parents (flat vertex triangles): quality is kept.
+  // Red children are nearly similar to their parents (the midside nodes that become their
+  // vertices sit just off the chords): the smallest angle is kept to within 2 degrees.
   EXPECT_NEAR(meshQuality(refined.mesh).minAngle, meshQuality(coarse).minAngle, 2.0);
 }
 
 TEST(Refinement, OneMarkedElementRefinesOnlyItsNeighbourhood)
 {
+  // Longest-edge closure spreads along longest edges only: marking any one element of
+  // the level-3 prolate ellipsoid bisects its three neighbours and a few more (measured:
+  // 4 to 11, 5.3 on average), never a growing region.
   const SurfaceMesh mesh = makeEllipsoid(3, Vec3(1.0, 0.5, 2.0));
-  for (int e : {0, 500, 1000}) {
+  int most = 0;
+  double total = 0.0;
+  for (int e = 0; e < mesh.numElements(); ++e) {
     const SplitCounts c = countSplits(refinementPlan(mesh, {e}));
-    EXPECT_EQ(c.red, 1);
-    // The three neighbours plus longest-edge paths of a few elements.
-    EXPECT_GE(c.green + c.blue, 3);
-    EXPECT_LE(c.green + c.blue, 12) << "element " << e;
+    ASSERT_EQ(c.red, 1);
+    ASSERT_GE(c.green + c.blue, 3) << "element " << e;
+    most = std::max(most, c.green + c.blue);
+    total += c.green + c.blue;
   }
+  EXPECT_LE(most, 16);
+  EXPECT_LT(total / mesh.numElements(), 8.0);
 }
 
 TEST(Refinement, RepeatedRandomRefinementKeepsHalfTheSmallestAngle)

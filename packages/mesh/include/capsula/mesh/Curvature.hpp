@@ -12,8 +12,9 @@
 //                   normal, the normal corrected from the fit until it stops moving.
 //
 // The fits use a node and its neighbours within `rings` rings (NodeNeighbourhood.hpp).
-// docs/curvature.md compares the three on the prolate ellipsoid of thesis Fig. 5.23: the
-// fits converge at second order and are ~10-100x more accurate than element averaging.
+// docs/curvature.md compares the three on the prolate ellipsoid of thesis Fig. 5.23: at
+// mesh level 3 the jet fit is 17x and the quadratic fit 7.5x more accurate than element
+// averaging (the jet converges at fourth order, the other two at second).
 // Sign convention (ElementCurvature.hpp): outward normal, kappa = +1/R and K = 1/R^2 on a
 // sphere of radius R.
 #include <capsula/mesh/SurfaceMesh.hpp>
@@ -59,8 +60,11 @@ struct QuadraticFitOptions {
   /// Neighbourhood rings: 1 is the node's immediate neighbours, as in Zinchenko et al.;
   /// grown by one where it holds fewer than six nodes.
   int rings = 1;
-  double tolerance = 1e-12;   ///< stop when the normal moves less than this (radians)
-  int maxIterations = 50;     ///< NumericalError if the normal has not settled by then
+  /// Stop when the fitted surface's normal is within this angle (radians) of n.
+  double tolerance = 1e-12;
+  /// NumericalError if it has not settled by then (2-4 iterations on resolved meshes, up
+  /// to 8 on an 80-element 6:1 spheroid).
+  int maxIterations = 50;
 };
 
 /// Iterative local quadratic fit, starting from the element-averaged normals.
