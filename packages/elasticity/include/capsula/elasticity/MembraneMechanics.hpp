@@ -1,0 +1,137 @@
+#pragma once
+// Elastic tensions and the load on the fluids of a 3D capsule membrane (thesis
+// Section 3.5.2): one object per cell, built once, evaluated every right-hand side.
+//
+// evaluate(x) computes, without allocating:
+//  1. per element: current area A_m and centroid (N_Q-point rule, current-node shape
+//     parameters, as mesh::elementAreas), and at each of its six nodes the surface
+//     deformation gradient A_e (eqs 3.33-3.35). A_e uses the REFERENCE shape
+//     parameters for both configurations, so (xi, eta) are material coordinates;
+//  2. per node: the area-weighted average normal n (as mesh::nodeNormals) and the
+//     area-weighted average of A_e (Section 3.5.2: A is multi-valued at the nodes of a
+//     C0 mesh). Each A_e maps the element's own tangent planes, which are tilted from
+//     the nodal ones by the C0 kinks, so before averaging it is carried into the nodal
+//     planes by the smallest rotations taking the element normals onto the nodal
+//     normals (reference side: N_e -> N, current side: n_e -> n). A plain average of
+//     A_e would see strain in the reference state itself (O(kink^2): max |lambda - 1| =
+//     3.9e-4, 9.1e-6, 1.6e-7 on icosphere levels 1-3); the carried average is exact at
+//     rest and under uniform dilation, and frame indifferent. Then A <- (I - nn) A (I - NN)
+//     (eq 3.26), B = A A^T, principal stretches, invariants, the law's dw/dI and the
+//     tension T (eq 3.30) with its principal values;
+//  3. per edge: the force int T . b dl across it (EdgeTensionForce.hpp), added to the
+//     two elements with opposite signs, so that A_m <Delta f>_m = -oint_{C_m} T . b dl
+//     (eq 3.37, ERRATA) and sum_m A_m <Delta f>_m = 0 exactly on a closed membrane.
+// Sign (ERRATA): Delta f = (sigma_ext - sigma_int) . n = -div_s T, n outward; a sphere
+// of radius r under isotropic tension T carries Delta f = (2 T / r) n.
+#include "capsula/elasticity/MembraneLaw.hpp"
+#include "capsula/elasticity/MembraneTension.hpp"
+#include "capsula/elasticity/SurfaceKinematics.hpp"
+
+#include <capsula/mesh/SurfaceMesh.hpp>
+#include <capsula/quadrature/Rule1D.hpp>
+#include <capsula/quadrature/TriangleRule.hpp>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace capsula::elasticity {
+
+/// Accuracy knobs of MembraneMechanics.
+struct MembraneDiscretisation {
+  /// N_Q of the triangle rule for element areas and centroids (the averaging weights
+  /// and A_m of eq 3.37) and for the strain energy.
+  int numQuadraturePoints = 7;
+  /// Gauss-Legendre points along each curved edge for the contour integral (eq 3.37).
+  int numEdgePoints = 4;
+};
+
+/// The node where the smallest principal tension sits, and its value.
+struct MostCompressiveTension {
+  int node;
+  double tension;
+};
+
+class MembraneMechanics {
+public:
+  /// `mesh` gives the topology (it must outlive this object; its positions are not
+  /// used); `referencePositions` (3 per node, the mesh's numbering) is the unstressed
+  /// shape. Throws InputError for a wrong size, a null law, a bad N_Q or edge-point
+  /// count, or a reference element folded against its neighbours.
+  MembraneMechanics(const mesh::SurfaceMesh& mesh, std::vector<double> referencePositions,
+                    std::shared_ptr<const MembraneLaw> law,
+                    const MembraneDiscretisation& discretisation = {});
+
+  /// Computes everything below for the current positions (3 * numNodes doubles).
+  /// Throws NumericalError if the membrane is folded or crushed somewhere.
+  void evaluate(const double* positions);
+
+  // --- per node (after evaluate) --------------------------------------------
+  const std::vector<Mat3>& nodalTensions() const { return tension_; } ///< T, eq 3.30
+  const std::vector<PrincipalStretches>& nodalStretches() const { return stretch_; }
+  const std::vector<PrincipalTensions>& nodalPrincipalTensions() const { return principal_; }
+  const std::vector<Vec3>& nodeNormals() const { return normal_; } ///< current, area-averaged
+  /// The smallest principal tension over the nodes (negative: compression, buckling).
+  MostCompressiveTension mostCompressiveTension() const;
+
+  // --- per element (after evaluate) -----------------------------------------
+  const std::vector<double>& elementAreas() const { return area_; }       ///< A_m, current
+  const std::vector<Vec3>& elementCentroids() const { return centroid_; } ///< int x dS / A_m
+  /// A_m <Delta f>_m = -oint_{C_m} T . b dl, the element's total load on the fluids.
+  const std::vector<Vec3>& elementForces() const { return force_; }
+  /// <Delta f>_m (eq 3.37), what multiplies int_{E_m} G dS in the single layer (eq 3.38).
+  const std::vector<Vec3>& elementLoads() const { return load_; }
+
+  /// sum_m A_m <Delta f>_m: zero to round-off (shared edges cancel exactly).
+  Vec3 netForce() const;
+  /// int_{E_m} x x Delta f dS = -oint_{C_m} x x (T . b) dl (exact for Delta f = -div_s T
+  /// with T symmetric and tangent): the element's moment about the origin.
+  const std::vector<Vec3>& elementMoments() const { return moment_; }
+  /// sum_m [M_m - about x A_m <Delta f>_m]: the membrane's net torque on the fluids, zero
+  /// to round-off for any deformation (shared edges cancel exactly).
+  Vec3 netTorque(const Vec3& about = Vec3::Zero()) const;
+  /// sum_m (c_m - about) x A_m <Delta f>_m, c_m the element centroids: the torque of the
+  /// piecewise-constant load the single layer sees (eq 3.36); zero only up to the
+  /// discretisation error (second order).
+  Vec3 loadTorque(const Vec3& about = Vec3::Zero()) const;
+
+  /// int_{S0} w dS0 at `positions`, from the element-wise A at the quadrature points
+  /// (no nodal averaging). Independent of evaluate().
+  double strainEnergy(const double* positions) const;
+
+  const MembraneLaw& law() const { return *law_; }
+  const std::vector<double>& referencePositions() const { return reference_; }
+  const std::vector<Vec3>& referenceNodeNormals() const { return referenceNormal_; }
+  const MembraneDiscretisation& discretisation() const { return discretisation_; }
+
+private:
+  const mesh::SurfaceMesh* mesh_;
+  std::vector<double> reference_;
+  std::shared_ptr<const MembraneLaw> law_;
+  MembraneDiscretisation discretisation_;
+  const quadrature::TriangleRule* areaRule_;
+  quadrature::Rule1D edgeRule_;
+
+  // Reference data, per element (shape parameters) and per element node (6 e + j).
+  std::vector<mesh::ShapeParameters> referenceParameters_;
+  std::vector<Vec3> referenceNormal_;              // per node, area-averaged N
+  std::vector<std::array<Vec3, 2>> referenceDual_; // G^xi, G^eta carried into the nodal plane
+
+  // Work arrays, sized once.
+  std::vector<std::array<Vec3, 2>> currentTangent_; // x_xi, x_eta per element node (material)
+  std::vector<double> weight_;                      // per node: sum of incident areas
+  std::vector<Mat3> gradient_;                      // per node: averaged A
+
+  // Results.
+  std::vector<double> area_;
+  std::vector<Vec3> centroid_;
+  std::vector<Vec3> moment_;
+  std::vector<Vec3> normal_;
+  std::vector<Mat3> tension_;
+  std::vector<PrincipalStretches> stretch_;
+  std::vector<PrincipalTensions> principal_;
+  std::vector<Vec3> force_;
+  std::vector<Vec3> load_;
+};
+
+} // namespace capsula::elasticity

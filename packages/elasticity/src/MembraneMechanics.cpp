@@ -1,0 +1,248 @@
+#include "capsula/elasticity/MembraneMechanics.hpp"
+
+#include "capsula/elasticity/EdgeTensionForce.hpp"
+
+#include <capsula/core/Error.hpp>
+#include <capsula/mesh/ElementGeometry.hpp>
+#include <capsula/mesh/NodeNormals.hpp>
+#include <capsula/quadrature/GaussLegendre.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <utility>
+
+namespace capsula::elasticity {
+
+using mesh::ElementNodes;
+using mesh::ShapeParameters;
+using mesh::SurfacePoint;
+
+namespace {
+
+std::size_t slot(int element, int localNode)
+{
+  return 6 * static_cast<std::size_t>(element) + localNode;
+}
+
+} // namespace
+
+MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh,
+                                     std::vector<double> referencePositions,
+                                     std::shared_ptr<const MembraneLaw> law,
+                                     const MembraneDiscretisation& discretisation)
+    : mesh_(&mesh), reference_(std::move(referencePositions)), law_(std::move(law)),
+      discretisation_(discretisation),
+      areaRule_(&quadrature::triangleRule(discretisation.numQuadraturePoints))
+{
+  const int numNodes = mesh.numNodes();
+  const int numElements = mesh.numElements();
+  core::require<core::InputError>(reference_.size() == 3 * static_cast<std::size_t>(numNodes),
+                                  "the membrane reference has ", reference_.size(),
+                                  " coordinates but the mesh has ", numNodes, " nodes (",
+                                  3 * numNodes, " coordinates expected)");
+  core::require<core::InputError>(law_ != nullptr, "the membrane needs a constitutive law");
+  core::require<core::InputError>(discretisation.numEdgePoints >= 1,
+                                  "the membrane contour integral needs numEdgePoints >= 1, got ",
+                                  discretisation.numEdgePoints);
+  edgeRule_ = quadrature::gaussLegendre(discretisation.numEdgePoints, 0.0, 1.0);
+
+  // Reference geometry: nodal normals N and, per element node, the dual tangents
+  // carried from the element's tangent plane into the nodal one (N_e -> N).
+  referenceNormal_ = mesh::nodeNormals(mesh, reference_.data(), discretisation.numQuadraturePoints);
+  referenceParameters_.resize(numElements);
+  referenceDual_.resize(6 * static_cast<std::size_t>(numElements));
+  for (int e = 0; e < numElements; ++e) {
+    const ElementNodes X = mesh.elementNodes(e, reference_.data());
+    const ShapeParameters p = mesh::shapeParameters(X);
+    referenceParameters_[e] = p;
+    for (int j = 0; j < 6; ++j) {
+      const int node = mesh.element(e)[j];
+      const SurfacePoint S = mesh::evaluateAtNode(X, p, j);
+      const Vec3& N = referenceNormal_[node];
+      core::require<core::InputError>(
+          std::isfinite(S.metric) && S.metric > 0.0 && S.normal.dot(N) > 0.0,
+          "the membrane reference is degenerate or folded at node ", node, " of element ", e,
+          " (element normal . nodal normal = ", S.normal.dot(N), ")");
+      const auto dual = dualTangents(S.tangentXi, S.tangentEta);
+      referenceDual_[slot(e, j)] = {rotateOnto(dual[0], S.normal, N),
+                                    rotateOnto(dual[1], S.normal, N)};
+    }
+  }
+
+  currentTangent_.resize(6 * static_cast<std::size_t>(numElements));
+  weight_.resize(numNodes);
+  gradient_.resize(numNodes);
+  area_.assign(numElements, 0.0);
+  centroid_.assign(numElements, Vec3::Zero());
+  normal_.assign(numNodes, Vec3::Zero());
+  tension_.assign(numNodes, Mat3::Zero());
+  stretch_.assign(numNodes, PrincipalStretches{1.0, 1.0});
+  principal_.assign(numNodes, PrincipalTensions{0.0, 0.0});
+  force_.assign(numElements, Vec3::Zero());
+  moment_.assign(numElements, Vec3::Zero());
+  load_.assign(numElements, Vec3::Zero());
+}
+
+void MembraneMechanics::evaluate(const double* positions)
+{
+  const mesh::SurfaceMesh& mesh = *mesh_;
+  const quadrature::TriangleRule& rule = *areaRule_;
+  const int numNodes = mesh.numNodes();
+  const int numElements = mesh.numElements();
+
+  for (int i = 0; i < numNodes; ++i) {
+    normal_[i].setZero();
+    gradient_[i].setZero();
+    weight_[i] = 0.0;
+  }
+
+  // 1. Element areas, centroids and node normals (current shape parameters), and the
+  //    material tangents x_xi, x_eta at the nodes (reference shape parameters).
+  for (int e = 0; e < numElements; ++e) {
+    const ElementNodes x = mesh.elementNodes(e, positions);
+    const ShapeParameters p = mesh::shapeParameters(x);
+    double area = 0.0;
+    Vec3 moment = Vec3::Zero();
+    for (std::size_t q = 0; q < rule.weight.size(); ++q) {
+      const SurfacePoint s = mesh::evaluateSurfacePoint(x, p, rule.xi[q], rule.eta[q]);
+      area += rule.weight[q] * s.metric;
+      moment += (rule.weight[q] * s.metric) * s.position;
+    }
+    area_[e] = area;
+    centroid_[e] = moment / area;
+    for (int j = 0; j < 6; ++j) {
+      const int node = mesh.element(e)[j];
+      normal_[node] += area * mesh::evaluateAtNode(x, p, j).normal;
+      weight_[node] += area;
+      const SurfacePoint m = mesh::evaluateAtNode(x, referenceParameters_[e], j);
+      currentTangent_[slot(e, j)] = {m.tangentXi, m.tangentEta};
+    }
+  }
+  for (Vec3& n : normal_) {
+    n.normalize();
+  }
+
+  // 2. Area-weighted average of A_e carried into the nodal planes (n_e -> n).
+  for (int e = 0; e < numElements; ++e) {
+    for (int j = 0; j < 6; ++j) {
+      const int node = mesh.element(e)[j];
+      const auto& t = currentTangent_[slot(e, j)];
+      const Vec3 ne = t[0].cross(t[1]).normalized();
+      const Vec3& n = normal_[node];
+      core::require<core::NumericalError>(ne.dot(n) > 0.0, "the membrane is folded at node ", node,
+                                          " of element ", e,
+                                          " (element normal . nodal normal = ", ne.dot(n), ")");
+      const auto& dual = referenceDual_[slot(e, j)];
+      gradient_[node] += area_[e] * (rotateOnto(t[0], ne, n) * dual[0].transpose() +
+                                     rotateOnto(t[1], ne, n) * dual[1].transpose());
+    }
+  }
+
+  // 3. Nodal kinematics and tension (eqs 3.26, 3.28-3.30).
+  const MembraneLaw& law = *law_;
+  for (int i = 0; i < numNodes; ++i) {
+    const Vec3& n = normal_[i];
+    const Mat3 A =
+        tangentProjector(n) * (gradient_[i] / weight_[i]) * tangentProjector(referenceNormal_[i]);
+    const Mat3 B = A * A.transpose();
+    const PrincipalStretches s = principalStretches(B, n);
+    core::require<core::NumericalError>(std::isfinite(s.minor) && s.minor > 0.0,
+                                        "the membrane is crushed at node ", i,
+                                        " (principal stretches ", s.major, ", ", s.minor, ")");
+    const StrainInvariants I = strainInvariants(s);
+    const EnergyDerivatives dw = law.energyDerivatives(I.I1, I.I2);
+    stretch_[i] = s;
+    tension_[i] = membraneTension(B, n, s, dw);
+    principal_[i] = principalTensions(s, dw);
+  }
+
+  // 4. Contour integrals (eq 3.37): each edge once, opposite signs on its two elements.
+  for (int e = 0; e < numElements; ++e) {
+    force_[e].setZero();
+    moment_[e].setZero();
+  }
+  EdgeNodalData edge;
+  for (const mesh::Edge& ed : mesh.edges()) {
+    const std::array<int, 3> nodes = {ed.vertices[0], ed.midNode, ed.vertices[1]};
+    for (int k = 0; k < 3; ++k) {
+      edge.position[k] = mesh::nodeAt(positions, nodes[k]);
+      edge.normal[k] = normal_[nodes[k]];
+      edge.tension[k] = tension_[nodes[k]];
+    }
+    const double midParameter =
+        edgeMidParameter(edge.position[0], edge.position[1], edge.position[2]);
+    // b points out of elements[0], which traverses the edge in this direction.
+    const EdgeResultant transmitted = edgeTensionResultant(edge, midParameter, edgeRule_);
+    force_[ed.elements[0]] -= transmitted.force;
+    force_[ed.elements[1]] += transmitted.force;
+    moment_[ed.elements[0]] -= transmitted.moment;
+    moment_[ed.elements[1]] += transmitted.moment;
+  }
+  for (int e = 0; e < numElements; ++e) {
+    load_[e] = force_[e] / area_[e];
+  }
+}
+
+MostCompressiveTension MembraneMechanics::mostCompressiveTension() const
+{
+  MostCompressiveTension most{0, principal_.empty() ? 0.0 : principal_[0].minor};
+  for (std::size_t i = 1; i < principal_.size(); ++i) {
+    if (principal_[i].minor < most.tension) {
+      most = {static_cast<int>(i), principal_[i].minor};
+    }
+  }
+  return most;
+}
+
+Vec3 MembraneMechanics::netForce() const
+{
+  Vec3 sum = Vec3::Zero();
+  for (const Vec3& f : force_) {
+    sum += f;
+  }
+  return sum;
+}
+
+Vec3 MembraneMechanics::netTorque(const Vec3& about) const
+{
+  Vec3 sum = Vec3::Zero();
+  for (std::size_t e = 0; e < moment_.size(); ++e) {
+    sum += moment_[e] - about.cross(force_[e]);
+  }
+  return sum;
+}
+
+Vec3 MembraneMechanics::loadTorque(const Vec3& about) const
+{
+  Vec3 sum = Vec3::Zero();
+  for (std::size_t e = 0; e < force_.size(); ++e) {
+    sum += (centroid_[e] - about).cross(force_[e]);
+  }
+  return sum;
+}
+
+double MembraneMechanics::strainEnergy(const double* positions) const
+{
+  const mesh::SurfaceMesh& mesh = *mesh_;
+  const quadrature::TriangleRule& rule = *areaRule_;
+  double energy = 0.0;
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const ElementNodes X = mesh.elementNodes(e, reference_.data());
+    const ElementNodes x = mesh.elementNodes(e, positions);
+    const ShapeParameters& p = referenceParameters_[e];
+    for (std::size_t q = 0; q < rule.weight.size(); ++q) {
+      const SurfacePoint S = mesh::evaluateSurfacePoint(X, p, rule.xi[q], rule.eta[q]);
+      const SurfacePoint s = mesh::evaluateSurfacePoint(x, p, rule.xi[q], rule.eta[q]);
+      const Mat3 A = surfaceDeformationGradient(s.tangentXi, s.tangentEta,
+                                                dualTangents(S.tangentXi, S.tangentEta));
+      // Element-wise A is exact: tr B = |A|_F^2 and J = h_s / H_s.
+      const double J = s.metric / S.metric;
+      const double I1 = A.squaredNorm() - 2.0;
+      const double I2 = J * J - 1.0;
+      energy += rule.weight[q] * S.metric * law_->energyDensity(I1, I2);
+    }
+  }
+  return energy;
+}
+
+} // namespace capsula::elasticity

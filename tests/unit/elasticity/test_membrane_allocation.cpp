@@ -1,0 +1,53 @@
+// MembraneMechanics::evaluate runs every right-hand-side evaluation: it must not touch
+// the heap. This executable counts calls to the global operator new.
+#include "MembraneTesting.hpp"
+
+#include <capsula/elasticity/MembraneMechanics.hpp>
+#include <capsula/elasticity/SkalakLaw.hpp>
+#include <capsula/mesh/Shapes.hpp>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <memory>
+#include <new>
+
+namespace {
+std::atomic<long> allocations{0};
+} // namespace
+
+void* operator new(std::size_t size)
+{
+  ++allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) {
+    return p;
+  }
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept
+{
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept
+{
+  std::free(p);
+}
+
+TEST(MembraneAllocation, EvaluateDoesNotAllocate)
+{
+  using namespace capsula::elasticity;
+  const capsula::mesh::SurfaceMesh mesh = capsula::mesh::makeSphere(2, 1.0);
+  const auto current = capsula::elasticity::testing::mapNodes(
+      mesh.positions(), capsula::elasticity::testing::smoothDeformation);
+  MembraneMechanics m(mesh, mesh.positions(), std::make_shared<SkalakLaw>(1.0, 10.0));
+  const long before = allocations.load();
+  m.evaluate(current.data());
+  m.evaluate(mesh.positionData());
+  const long during = allocations.load() - before;
+  EXPECT_EQ(during, 0);
+  // The counter works: building an object does allocate.
+  const long again = allocations.load();
+  const MembraneMechanics other(mesh, mesh.positions(), std::make_shared<SkalakLaw>(1.0, 1.0));
+  EXPECT_GT(allocations.load() - again, 0);
+}
