@@ -1,0 +1,292 @@
+#pragma once
+// BoundaryIntegralSolver for one Green's function policy. A library that adds a kernel
+// instantiates this template with its policy and registers solverFactory<Policy>() in a
+// KernelRegistry (docs/extending.md); nothing in this package changes.
+#include <capsula/operators/BoundaryIntegralSolver.hpp>
+#include <capsula/operators/GmresSolve.hpp>
+#include <capsula/operators/KernelRegistry.hpp>
+#include <capsula/operators/LayerPotentials.hpp>
+#include <capsula/operators/NodeDistribution.hpp>
+#include <capsula/operators/SecondKindOperator.hpp>
+
+#include <capsula/core/Error.hpp>
+#include <capsula/core/Timers.hpp>
+
+#include <Teuchos_Array.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include <cmath>
+#include <memory>
+
+namespace capsula::operators {
+
+template <class Kernel>
+class KernelBoundaryIntegralSolver final : public BoundaryIntegralSolver {
+public:
+  /// The surfaces' current positions are the first geometry.
+  KernelBoundaryIntegralSolver(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
+                               const DiscretisationParameters& discretisation,
+                               const SolverParameters& solver);
+
+  std::string kernelName() const override { return Kernel::name; }
+  const CellSurfaces& surfaces() const override { return surfaces_; }
+  Teuchos::RCP<const Tpetra::Map<>> velocityMap() const override { return distribution_.map(); }
+  int firstOwnedNode() const override { return distribution_.firstOwnedNode(); }
+  int numOwnedNodes() const override { return distribution_.numOwnedNodes(); }
+
+  void setPositions(const double* positions) override;
+  VelocitySolution nodeVelocities(const double* elementLoads, const FlowConditions& flow,
+                                  const double* initialGuess = nullptr) override;
+  std::vector<double> flowVelocity(const std::vector<double>& points, const double* elementLoads,
+                                   const double* nodeVelocities, const FlowConditions& flow) override;
+
+  std::vector<double> singleLayer(const double* elementLoads) override;
+  std::vector<double> doubleLayer(const double* density, DoubleLayerForm form) override;
+  std::vector<double> singleLayerAt(const std::vector<double>& points, const double* elementLoads) override;
+  std::vector<double> doubleLayerAt(const std::vector<double>& points, const double* density) override;
+  std::vector<double> solidAnglesAt(const std::vector<double>& points) override;
+
+  /// The numerical core (for benchmarks and diagnostics).
+  LayerPotentials<Kernel>& layerPotentials() { return potentials_; }
+
+private:
+  double lambdaOfNode(int node) const { return surfaces_.viscosityRatio(surfaces_.cellOfNode(node)); }
+  void requireInFluid(const std::vector<double>& points) const;
+  std::vector<double> ownedPointsShare(const std::vector<double>& points) const;
+
+  NodeDistribution distribution_;
+  CellSurfaces surfaces_;
+  SolverParameters solverParameters_;
+  LayerPotentials<Kernel> potentials_;
+  Teuchos::RCP<Teuchos::Time> singleLayerTimer_, solveTimer_, flowTimer_;
+};
+
+/// The factory a KernelRegistry stores for `Kernel`.
+template <class Kernel>
+SolverFactory solverFactory()
+{
+  return [](const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
+            const DiscretisationParameters& discretisation, const SolverParameters& solver) {
+    return std::unique_ptr<BoundaryIntegralSolver>(
+      new KernelBoundaryIntegralSolver<Kernel>(comm, std::move(surfaces), discretisation, solver));
+  };
+}
+
+// ---------------------------------------------------------------------------------------
+// Implementation
+
+template <class Kernel>
+KernelBoundaryIntegralSolver<Kernel>::KernelBoundaryIntegralSolver(
+  const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
+  const DiscretisationParameters& discretisation, const SolverParameters& solver)
+  : distribution_(comm, surfaces.numNodes()),
+    surfaces_(std::move(surfaces)),
+    solverParameters_(solver),
+    potentials_(discretisation),
+    singleLayerTimer_(core::timer("Single layer")),
+    solveTimer_(core::timer("Viscosity-ratio GMRES solve")),
+    flowTimer_(core::timer("Flow velocity at points"))
+{
+  validate(solverParameters_);
+  potentials_.setTopology(surfaces_, distribution_.firstOwnedNode(), distribution_.numOwnedNodes());
+}
+
+template <class Kernel>
+void KernelBoundaryIntegralSolver<Kernel>::setPositions(const double* positions)
+{
+  surfaces_.setPositions(positions);
+  potentials_.update(surfaces_);
+}
+
+template <class Kernel>
+VelocitySolution KernelBoundaryIntegralSolver<Kernel>::nodeVelocities(const double* elementLoads,
+                                                                      const FlowConditions& flow,
+                                                                      const double* initialGuess)
+{
+  core::require<core::InputError>(flow.capillaryNumber > 0.0 && std::isfinite(flow.capillaryNumber),
+                                  "The capillary number is ", flow.capillaryNumber,
+                                  "; it must be a finite number > 0.");
+  const int first = distribution_.firstOwnedNode();
+  const int numOwned = distribution_.numOwnedNodes();
+  const bool iterate = !surfaces_.allViscosityRatiosOne() || solverParameters_.alwaysIterate;
+
+  std::vector<double> single(3 * static_cast<std::size_t>(numOwned));
+  {
+    Teuchos::TimeMonitor guard(*singleLayerTimer_);
+    potentials_.singleLayerAtNodes(elementLoads, single.data());
+  }
+  // Right-hand side: 2/(1+lambda) u_inf - 1/(4 pi (1+lambda) Ca) SL (eq 3.15).
+  std::vector<double> rhs(single.size());
+  const double* positions = potentials_.quadrature().nodePositions().data();
+  for (int t = 0; t < numOwned; ++t) {
+    const int g = first + t;
+    const double lambda = lambdaOfNode(g);
+    const mesh::Vec3 background = flow.background.at(mesh::nodeAt(positions, g));
+    for (int j = 0; j < 3; ++j) {
+      rhs[3 * t + j] = 2.0 / (1.0 + lambda) * background[j]
+                       - single[3 * t + j] / (4.0 * M_PI * (1.0 + lambda) * flow.capillaryNumber);
+    }
+  }
+  VelocitySolution solution;
+  if (!iterate) {
+    solution.velocities = distribution_.gather(rhs);
+    return solution;
+  }
+
+  Teuchos::TimeMonitor guard(*solveTimer_);
+  using MV = Tpetra::MultiVector<double>;
+  const auto map = distribution_.map();
+  auto b = Teuchos::rcp(new MV(map, 1));
+  auto x = Teuchos::rcp(new MV(map, 1));
+  {
+    auto bData = b->getDataNonConst(0);
+    auto xData = x->getDataNonConst(0);
+    for (std::size_t k = 0; k < rhs.size(); ++k) {
+      bData[k] = rhs[k];
+      xData[k] = initialGuess ? initialGuess[3 * first + k] : rhs[k];
+    }
+  }
+  Teuchos::Array<double> norm(1);
+  b->norm2(norm());
+  if (norm[0] == 0.0) {
+    // No load and no flow: the homogeneous equation has only u = 0 (lambda > 0).
+    solution.velocities.assign(3 * static_cast<std::size_t>(surfaces_.numNodes()), 0.0);
+    return solution;
+  }
+  std::vector<double> densityScale(surfaces_.numNodes());
+  for (int g = 0; g < surfaces_.numNodes(); ++g) {
+    densityScale[g] = 1.0 - lambdaOfNode(g);
+  }
+  std::vector<double> rowScale(numOwned);
+  for (int t = 0; t < numOwned; ++t) {
+    rowScale[t] = 1.0 / (4.0 * M_PI * (1.0 + lambdaOfNode(first + t)));
+  }
+  auto A = Teuchos::rcp(new SecondKindOperator(
+    map,
+    [this](const double* density, double* rows) {
+      potentials_.doubleLayerAtNodes(density, DoubleLayerForm::Subtracted, rows);
+    },
+    std::move(densityScale), std::move(rowScale)));
+  const GmresResult result = solveWithGmres(A, b, x, solverParameters_);
+  core::require<core::NumericalError>(
+    result.converged, "GMRES for the viscosity-ratio equation stopped after ", result.iterations,
+    " iterations at relative residual ", result.residual, " > 'Solver/Tolerance' = ",
+    solverParameters_.tolerance, ". Raise 'Solver/Maximum iterations' or 'Solver/Restart', or relax "
+    "'Solver/Tolerance'.");
+  solution.iterations = result.iterations;
+  solution.residual = result.residual;
+  const auto xData = x->getData(0);
+  solution.velocities = distribution_.gather(std::vector<double>(xData.begin(), xData.end()));
+  return solution;
+}
+
+template <class Kernel>
+void KernelBoundaryIntegralSolver<Kernel>::requireInFluid(const std::vector<double>& points) const
+{
+  core::require<core::InputError>(points.size() % 3 == 0, "Flow points come as (x, y, z) triples; got ",
+                                  points.size(), " numbers.");
+  for (std::size_t p = 0; p < points.size(); p += 3) {
+    core::require<core::InputError>(KernelTraits<Kernel>::inFluid(&points[p]), "The flow point (",
+                                    points[p], ", ", points[p + 1], ", ", points[p + 2],
+                                    ") lies outside the fluid domain of the ", Kernel::name, " kernel.");
+  }
+}
+
+template <class Kernel>
+std::vector<double> KernelBoundaryIntegralSolver<Kernel>::ownedPointsShare(const std::vector<double>& points) const
+{
+  const auto [first, end] = distribution_.share(static_cast<int>(points.size() / 3));
+  return std::vector<double>(points.begin() + 3 * first, points.begin() + 3 * end);
+}
+
+template <class Kernel>
+std::vector<double> KernelBoundaryIntegralSolver<Kernel>::flowVelocity(const std::vector<double>& points,
+                                                                       const double* elementLoads,
+                                                                       const double* nodeVelocities,
+                                                                       const FlowConditions& flow)
+{
+  Teuchos::TimeMonitor guard(*flowTimer_);
+  requireInFluid(points);
+  const std::vector<double> mine = ownedPointsShare(points);
+  const int n = static_cast<int>(mine.size() / 3);
+  std::vector<double> single(mine.size()), velocity(mine.size());
+  potentials_.singleLayerAtPoints(mine.data(), n, elementLoads, single.data());
+  std::vector<double> dbl(mine.size(), 0.0);
+  std::vector<double> omega;
+  const bool allOne = surfaces_.allViscosityRatiosOne();
+  if (!allOne) {
+    std::vector<double> density(3 * static_cast<std::size_t>(surfaces_.numNodes()));
+    for (std::size_t k = 0; k < density.size(); ++k) {
+      density[k] = (1.0 - lambdaOfNode(static_cast<int>(k / 3))) * nodeVelocities[k];
+    }
+    potentials_.doubleLayerAtPoints(mine.data(), n, density.data(), dbl.data());
+    omega.resize(static_cast<std::size_t>(n) * surfaces_.numCells());
+    potentials_.solidAnglesAtPoints(mine.data(), n, omega.data());
+  }
+  for (int p = 0; p < n; ++p) {
+    const mesh::Vec3 background = flow.background.at(mesh::nodeAt(mine.data(), p));
+    // Inside cell c the representation gives lambda_c u (Pozrikidis 1992, eq 5.3.7).
+    double scale = 1.0;
+    for (int c = 0; !allOne && c < surfaces_.numCells(); ++c) {
+      if (omega[static_cast<std::size_t>(surfaces_.numCells()) * p + c] > 2.0 * M_PI) {
+        scale = 1.0 / surfaces_.viscosityRatio(c);
+      }
+    }
+    for (int j = 0; j < 3; ++j) {
+      velocity[3 * p + j] = scale * (background[j] - single[3 * p + j] / (8.0 * M_PI * flow.capillaryNumber)
+                                     + dbl[3 * p + j] / (8.0 * M_PI));
+    }
+  }
+  return distribution_.gatherShares(velocity, static_cast<int>(points.size() / 3), 3);
+}
+
+template <class Kernel>
+std::vector<double> KernelBoundaryIntegralSolver<Kernel>::singleLayer(const double* elementLoads)
+{
+  std::vector<double> rows(3 * static_cast<std::size_t>(distribution_.numOwnedNodes()));
+  potentials_.singleLayerAtNodes(elementLoads, rows.data());
+  return distribution_.gather(rows);
+}
+
+template <class Kernel>
+std::vector<double> KernelBoundaryIntegralSolver<Kernel>::doubleLayer(const double* density, DoubleLayerForm form)
+{
+  std::vector<double> rows(3 * static_cast<std::size_t>(distribution_.numOwnedNodes()));
+  potentials_.doubleLayerAtNodes(density, form, rows.data());
+  return distribution_.gather(rows);
+}
+
+template <class Kernel>
+std::vector<double> KernelBoundaryIntegralSolver<Kernel>::singleLayerAt(const std::vector<double>& points,
+                                                                        const double* elementLoads)
+{
+  requireInFluid(points);
+  const std::vector<double> mine = ownedPointsShare(points);
+  std::vector<double> values(mine.size());
+  potentials_.singleLayerAtPoints(mine.data(), static_cast<int>(mine.size() / 3), elementLoads, values.data());
+  return distribution_.gatherShares(values, static_cast<int>(points.size() / 3), 3);
+}
+
+template <class Kernel>
+std::vector<double> KernelBoundaryIntegralSolver<Kernel>::doubleLayerAt(const std::vector<double>& points,
+                                                                        const double* density)
+{
+  requireInFluid(points);
+  const std::vector<double> mine = ownedPointsShare(points);
+  std::vector<double> values(mine.size());
+  potentials_.doubleLayerAtPoints(mine.data(), static_cast<int>(mine.size() / 3), density, values.data());
+  return distribution_.gatherShares(values, static_cast<int>(points.size() / 3), 3);
+}
+
+template <class Kernel>
+std::vector<double> KernelBoundaryIntegralSolver<Kernel>::solidAnglesAt(const std::vector<double>& points)
+{
+  requireInFluid(points);
+  const std::vector<double> mine = ownedPointsShare(points);
+  const int numCells = surfaces_.numCells();
+  std::vector<double> values(mine.size() / 3 * numCells);
+  potentials_.solidAnglesAtPoints(mine.data(), static_cast<int>(mine.size() / 3), values.data());
+  return distribution_.gatherShares(values, static_cast<int>(points.size() / 3), numCells);
+}
+
+} // namespace capsula::operators

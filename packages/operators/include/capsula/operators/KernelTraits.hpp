@@ -1,0 +1,111 @@
+#pragma once
+// What the operators ask of a Green's function policy (a struct like greens::FreeSpace3D
+// with static stokeslet(x, x0, G[3][3]) and stresslet(x, x0, T[3][3][3]); x the field
+// point, here the integration point, x0 the pole, here the target) beyond those two:
+//
+//  - contracted evaluation in the inner loops: u_j += G_ij(x, x0) f_i (single layer) and
+//    u_j += T_ijk(x, x0) v_i a_k (double layer). A policy may provide them as
+//        static void addSingleLayerTerm(const double x[3], const double x0[3],
+//                                       const double f[3], double u[3]);
+//        static void addDoubleLayerTerm(const double x[3], const double x0[3],
+//                                       const double v[3], const double a[3], double u[3]);
+//    and they are used; otherwise the full tensors are contracted here.
+//  - images: points outside the fluid where the kernel is singular too (Blake's image
+//    of the pole below the wall); the near-singular test measures from them as well.
+//  - the fluid domain: where a pole (a target) may lie, and where the kernel vanishes
+//    identically (a pole on a no-slip wall), which needs no near-singular treatment.
+//
+// A new kernel specialises KernelTraits only if it has images or a bounded domain.
+#include <capsula/greens/Wall3D.hpp>
+
+#include <type_traits>
+#include <utility>
+
+namespace capsula::operators {
+
+namespace detail {
+
+template <class Kernel, class = void>
+struct HasSingleLayerTerm : std::false_type {};
+template <class Kernel>
+struct HasSingleLayerTerm<Kernel, std::void_t<decltype(Kernel::addSingleLayerTerm(
+                                    std::declval<const double*>(), std::declval<const double*>(),
+                                    std::declval<const double*>(), std::declval<double*>()))>>
+  : std::true_type {};
+
+template <class Kernel, class = void>
+struct HasDoubleLayerTerm : std::false_type {};
+template <class Kernel>
+struct HasDoubleLayerTerm<Kernel, std::void_t<decltype(Kernel::addDoubleLayerTerm(
+                                    std::declval<const double*>(), std::declval<const double*>(),
+                                    std::declval<const double*>(), std::declval<const double*>(),
+                                    std::declval<double*>()))>>
+  : std::true_type {};
+
+} // namespace detail
+
+/// u_j += G_ij(x, x0) f_i: the velocity at the pole x0 of the force f at x (reciprocity).
+template <class Kernel>
+inline void addSingleLayerTerm(const double x[3], const double x0[3], const double f[3], double u[3])
+{
+  if constexpr (detail::HasSingleLayerTerm<Kernel>::value) {
+    Kernel::addSingleLayerTerm(x, x0, f, u);
+  } else {
+    double G[3][3];
+    Kernel::stokeslet(x, x0, G);
+    for (int j = 0; j < 3; ++j) {
+      u[j] += G[0][j] * f[0] + G[1][j] * f[1] + G[2][j] * f[2];
+    }
+  }
+}
+
+/// u_j += T_ijk(x, x0) v_i a_k, with a = n dS the weighted normal at x.
+template <class Kernel>
+inline void addDoubleLayerTerm(const double x[3], const double x0[3], const double v[3], const double a[3],
+                               double u[3])
+{
+  if constexpr (detail::HasDoubleLayerTerm<Kernel>::value) {
+    Kernel::addDoubleLayerTerm(x, x0, v, a, u);
+  } else {
+    double T[3][3][3];
+    Kernel::stresslet(x, x0, T);
+    for (int j = 0; j < 3; ++j) {
+      double sum = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        sum += v[i] * (T[i][j][0] * a[0] + T[i][j][1] * a[1] + T[i][j][2] * a[2]);
+      }
+      u[j] += sum;
+    }
+  }
+}
+
+/// Defaults: no images, the fluid fills space.
+template <class Kernel>
+struct KernelTraits {
+  static constexpr int maxImages = 0;
+  /// Writes the image points of pole x0 to `images` and returns how many.
+  static int images(const double* /*x0*/, double (*/*images*/)[3]) { return 0; }
+  /// Whether x0 lies in the fluid domain of the kernel (closure included).
+  static bool inFluid(const double* /*x0*/) { return true; }
+  /// Whether the kernel vanishes identically for the pole x0 (no near-singular treatment).
+  static bool vanishesAt(const double* /*x0*/) { return false; }
+};
+
+/// Blake's wall y = 0, fluid y > 0: one image, the mirror point of the pole.
+template <>
+struct KernelTraits<greens::Wall3D> {
+  static constexpr int maxImages = 1;
+  static int images(const double* x0, double (*images)[3])
+  {
+    for (int i = 0; i < 3; ++i) {
+      images[0][i] = x0[i];
+    }
+    images[0][greens::wallNormalAxis] = -x0[greens::wallNormalAxis];
+    return 1;
+  }
+  static bool inFluid(const double* x0) { return x0[greens::wallNormalAxis] >= 0.0; }
+  /// A pole on the wall: every image cancels its source (no-slip), G = T = 0.
+  static bool vanishesAt(const double* x0) { return x0[greens::wallNormalAxis] == 0.0; }
+};
+
+} // namespace capsula::operators

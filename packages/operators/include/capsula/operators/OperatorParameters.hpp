@@ -1,0 +1,57 @@
+#pragma once
+// Deck parameters of the boundary-integral operators: the quadrature of the surface
+// integrals ("Discretisation") and the GMRES solve of the lambda != 1 equation ("Solver").
+// Each knob trades accuracy for time; the defaults and their reasons are in the doc
+// strings (docs/operators.md has the measurements behind them).
+#include <Teuchos_ParameterList.hpp>
+
+namespace capsula::operators {
+
+/// How the element integrals are computed (thesis Section 3.6).
+struct DiscretisationParameters {
+  /// N_Q, points of the symmetric triangle rule on regular elements (eq 3.39).
+  int quadraturePoints = 7;
+  /// N_GL, Gauss-Legendre points per polar direction on the elements that hold the
+  /// target node (eqs 3.42-3.43).
+  int singularQuadraturePoints = 6;
+  /// Target accuracy of the adaptive subdivision of near-singular elements, relative to
+  /// the size of that element's contribution.
+  double nearSingularTolerance = 1e-6;
+  /// An element is near-singular for a target closer than this many element sizes to it.
+  double nearSingularDistance = 1.0;
+  /// Rings of elements around those holding a node target that keep the N_Q-point rule
+  /// even when near (the node lies in their tangent plane); 0 tests them too.
+  int regularNeighbourRings = 2;
+};
+
+/// The GMRES solve of the second-kind equation for lambda != 1 (thesis Section 3.8).
+struct SolverParameters {
+  double tolerance = 1e-10; ///< on ||b - A u|| / ||b||
+  int restart = 50;         ///< Krylov vectors kept between restarts (Belos "Num Blocks")
+  int maximumIterations = 300;
+  /// Solve with GMRES even when every viscosity ratio is 1 (for tests; not a deck key).
+  bool alwaysIterate = false;
+};
+
+/// Declares Quadrature points, Singular quadrature points, Near-singular tolerance,
+/// Near-singular distance and Regular neighbour rings in `discretisation`.
+void declareDiscretisationParameters(Teuchos::ParameterList& discretisation);
+
+/// Declares Tolerance, Restart and Maximum iterations in `solver`.
+void declareSolverParameters(Teuchos::ParameterList& solver);
+
+/// Declares both, in the sublists "Discretisation" and "Solver" of `deck`.
+void declareOperatorParameters(Teuchos::ParameterList& deck);
+
+/// Reads a validated "Discretisation" sublist. Throws core::InputError for a value a
+/// validator cannot check (a triangle rule that does not exist), naming the key.
+DiscretisationParameters readDiscretisationParameters(const Teuchos::ParameterList& discretisation);
+
+/// Reads a validated "Solver" sublist.
+SolverParameters readSolverParameters(const Teuchos::ParameterList& solver);
+
+/// Throws core::InputError naming the offending field unless the values are usable.
+void validate(const DiscretisationParameters& parameters);
+void validate(const SolverParameters& parameters);
+
+} // namespace capsula::operators

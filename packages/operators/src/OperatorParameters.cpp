@@ -1,0 +1,136 @@
+#include "capsula/operators/OperatorParameters.hpp"
+
+#include <capsula/core/Error.hpp>
+#include <capsula/core/ParameterDeclaration.hpp>
+#include <capsula/quadrature/TriangleRule.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace capsula::operators {
+
+namespace core = capsula::core;
+
+namespace {
+
+std::string supportedRuleList()
+{
+  std::ostringstream out;
+  const auto counts = quadrature::supportedTriangleRules();
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    out << (i ? ", " : "") << counts[i];
+  }
+  return out.str();
+}
+
+} // namespace
+
+void declareDiscretisationParameters(Teuchos::ParameterList& discretisation)
+{
+  const DiscretisationParameters defaults;
+  core::declareInt(discretisation, "Quadrature points", defaults.quadraturePoints,
+                   "N_Q, points of the symmetric Gauss rule on each element away from the target "
+                   "(thesis eq 3.39; 1, 3, 4, 6, 7, 9, 12, 13, 16 or 19). 7 (degree 5) is the thesis "
+                   "choice; the cost of a velocity evaluation is proportional to N_Q.",
+                   1, 19);
+  core::declareInt(discretisation, "Singular quadrature points", defaults.singularQuadraturePoints,
+                   "N_GL, Gauss-Legendre points per direction of the polar coordinates on the "
+                   "elements that hold the target node (thesis eqs 3.42-3.43). With 6 the polar "
+                   "rules err by < 1e-6 of the single layer on a level-3 sphere (3: 2e-4, 4: 6e-5).",
+                   2, 32);
+  core::declareReal(discretisation, "Near-singular tolerance", defaults.nearSingularTolerance,
+                    "Accuracy, relative to that element's contribution, to which an element close "
+                    "to a target it does not hold (a node of another cell, a flow probe, a node's "
+                    "wall image) is integrated by adaptive subdivision. The estimate is "
+                    "conservative: at 1e-6 the measured errors are 2e-7 to 1e-9.",
+                    core::greaterThan(0.0), core::lessThan(1.0));
+  core::declareReal(discretisation, "Near-singular distance", defaults.nearSingularDistance,
+                    "Targets closer than this many element sizes to an element's bounding sphere get "
+                    "the adaptive subdivision; farther ones use the N_Q-point rule (its error there is "
+                    "~2e-4 of the element's single layer at N_Q = 7). 0 turns the subdivision off "
+                    "(thesis practice).",
+                    core::atLeast(0.0));
+  core::declareInt(discretisation, "Regular neighbour rings", defaults.regularNeighbourRings,
+                   "Rings of elements around the elements holding a node that keep the N_Q-point "
+                   "rule however near (the node lies in their tangent plane, where the rule is 10-50 "
+                   "times more accurate than off the surface). 0 subdivides them too: on a level-3 "
+                   "sphere the single layer gets ~10x more accurate and an evaluation ~2x dearer.",
+                   0, 10);
+}
+
+void declareSolverParameters(Teuchos::ParameterList& solver)
+{
+  const SolverParameters defaults;
+  core::declareReal(solver, "Tolerance", defaults.tolerance,
+                    "GMRES stopping tolerance on the relative residual ||b - A u|| / ||b|| of the "
+                    "viscosity-ratio equation (used only when some cell has lambda != 1).",
+                    core::greaterThan(0.0), core::lessThan(1.0));
+  core::declareInt(solver, "Restart", defaults.restart,
+                   "Krylov vectors GMRES keeps before it restarts (Belos 'Num Blocks').", 1, 1000);
+  core::declareInt(solver, "Maximum iterations", defaults.maximumIterations,
+                   "GMRES iterations before the solve is declared failed.", 1, 100000);
+}
+
+void declareOperatorParameters(Teuchos::ParameterList& deck)
+{
+  declareDiscretisationParameters(core::declareSublist(
+    deck, "Discretisation", "Quadrature of the boundary integrals (thesis Section 3.6)."));
+  declareSolverParameters(core::declareSublist(
+    deck, "Solver", "GMRES for the viscosity-ratio equation (thesis Section 3.8)."));
+}
+
+DiscretisationParameters readDiscretisationParameters(const Teuchos::ParameterList& discretisation)
+{
+  DiscretisationParameters p;
+  p.quadraturePoints = discretisation.get<int>("Quadrature points");
+  p.singularQuadraturePoints = discretisation.get<int>("Singular quadrature points");
+  p.nearSingularTolerance = discretisation.get<double>("Near-singular tolerance");
+  p.nearSingularDistance = discretisation.get<double>("Near-singular distance");
+  p.regularNeighbourRings = discretisation.get<int>("Regular neighbour rings");
+  validate(p);
+  return p;
+}
+
+SolverParameters readSolverParameters(const Teuchos::ParameterList& solver)
+{
+  SolverParameters p;
+  p.tolerance = solver.get<double>("Tolerance");
+  p.restart = solver.get<int>("Restart");
+  p.maximumIterations = solver.get<int>("Maximum iterations");
+  validate(p);
+  return p;
+}
+
+void validate(const DiscretisationParameters& p)
+{
+  const auto counts = quadrature::supportedTriangleRules();
+  core::require<core::InputError>(
+    std::find(counts.begin(), counts.end(), p.quadraturePoints) != counts.end(),
+    "'Discretisation/Quadrature points' = ", p.quadraturePoints,
+    " has no symmetric triangle rule; use one of ", supportedRuleList(), ".");
+  core::require<core::InputError>(p.singularQuadraturePoints >= 2 && p.singularQuadraturePoints <= 32,
+                                  "'Discretisation/Singular quadrature points' = ",
+                                  p.singularQuadraturePoints, " must lie in [2, 32].");
+  core::require<core::InputError>(p.nearSingularTolerance > 0.0 && p.nearSingularTolerance < 1.0,
+                                  "'Discretisation/Near-singular tolerance' = ",
+                                  p.nearSingularTolerance, " must lie in (0, 1), e.g. 1e-6.");
+  core::require<core::InputError>(std::isfinite(p.nearSingularDistance) && p.nearSingularDistance >= 0.0,
+                                  "'Discretisation/Near-singular distance' = ", p.nearSingularDistance,
+                                  " must be >= 0 (element sizes; 0 turns the treatment off).");
+  core::require<core::InputError>(p.regularNeighbourRings >= 0 && p.regularNeighbourRings <= 10,
+                                  "'Discretisation/Regular neighbour rings' = ", p.regularNeighbourRings,
+                                  " must lie in [0, 10].");
+}
+
+void validate(const SolverParameters& p)
+{
+  core::require<core::InputError>(p.tolerance > 0.0 && p.tolerance < 1.0, "'Solver/Tolerance' = ",
+                                  p.tolerance, " must lie in (0, 1), e.g. 1e-10.");
+  core::require<core::InputError>(p.restart >= 1, "'Solver/Restart' = ", p.restart,
+                                  " must be >= 1, e.g. 50.");
+  core::require<core::InputError>(p.maximumIterations >= 1, "'Solver/Maximum iterations' = ",
+                                  p.maximumIterations, " must be >= 1.");
+}
+
+} // namespace capsula::operators

@@ -1,0 +1,83 @@
+#pragma once
+// The 2D capsule of Chapter 4 as an ODE for its marker points, dx_i/dt = u_i (thesis eq
+// A.48): contour (App. A.3) -> Hookean membrane load with E = 1 (App. A.5; loads in units
+// of E/L) -> node velocities from the boundary-integral equation (eq A.35). Free cells use
+// periodic splines; after tethering, tethered splines with node 0 at the tether, whose
+// velocity is held at zero.
+#include "capsula/scene2d/CellContour2D.hpp"
+#include "capsula/scene2d/FlowModel2D.hpp"
+
+#include <capsula/contour/Contour.hpp>
+#include <capsula/elasticity/ElasticMembrane2D.hpp>
+#include <capsula/elasticity/MembraneState2D.hpp>
+#include <capsula/operators/ContourDiscretisation2D.hpp>
+#include <capsula/operators/InterfaceVelocity2D.hpp>
+#include <capsula/operators/OperatorParameters.hpp>
+
+#include <Eigen/Core>
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace capsula::scene2d {
+
+class CapsuleModel2D {
+public:
+  CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const CellSettings2D& cell,
+                 const FlowSettings2D& flow, const operators::ContourDiscretisation2D& discretisation,
+                 const operators::SolverParameters& solver);
+
+  int numberOfNodes() const { return static_cast<int>(referenceNodes_.cols()); }
+  const CellSettings2D& cell() const { return cell_; }
+  const FlowSettings2D& flow() const { return flow_; }
+  const operators::ContourDiscretisation2D& discretisation() const { return discretisation_; }
+  std::string kernelName() const { return velocity_->kernelName(); }
+
+  /// The undeformed contour in the free (preparation) labelling.
+  const Eigen::Matrix2Xd& referenceNodes() const { return referenceNodes_; }
+  /// Its length A0 and area (the reference of A/A0 and of the area drift).
+  double referenceLength() const { return referenceLength_; }
+  double referenceArea() const { return referenceArea_; }
+
+  /// The state at t = 0: the reference nodes, x0, y0, x1, y1, ...
+  std::vector<double> initialState() const;
+
+  /// Switches to the tethered cell: node 0 is the material point that was node `offset`
+  /// of the free labelling (the membrane's reference is relabelled the same way) and its
+  /// velocity is zero from now on.
+  void tether(int offset);
+  bool tethered() const { return tetherOffset_.has_value(); }
+  int tetherOffset() const { return tetherOffset_.value_or(0); }
+
+  /// The contour through the state's nodes (periodic, or tethered after tether()).
+  contour::Contour contour(const std::vector<double>& state) const;
+  elasticity::MembraneState2D membrane(const contour::Contour& contour) const;
+
+  /// Node velocities for a contour and its membrane state (collective).
+  operators::VelocitySolution2D velocities(const contour::Contour& contour,
+                                           const elasticity::MembraneState2D& membrane);
+
+  /// dy/dt = u(y) (collective): the right-hand side of the time integration.
+  void rightHandSide(const std::vector<double>& state, std::vector<double>& derivative);
+
+  /// GMRES iterations of the last velocity solve (0 when lambda = 1).
+  int lastIterations() const { return lastIterations_; }
+
+private:
+  CellSettings2D cell_;
+  FlowSettings2D flow_;
+  operators::ContourDiscretisation2D discretisation_;
+  Eigen::Matrix2Xd referenceNodes_;
+  double referenceLength_ = 0.0;
+  double referenceArea_ = 0.0;
+  std::optional<int> tetherOffset_;
+  std::unique_ptr<elasticity::ElasticMembrane2D> membrane_;
+  std::unique_ptr<operators::InterfaceVelocity2D> velocity_;
+  int lastIterations_ = 0;
+};
+
+} // namespace capsula::scene2d

@@ -1,0 +1,29 @@
+#pragma once
+// The initial contour of the 2D cell of Chapter 4 (thesis Fig. 4.1): an ellipse of aspect
+// ratio a/b (a along the flow, x; b across it, y) and area pi L^2 (L = sqrt(ab) = 1), its
+// lowest point a given height above the wall y = 0, node 0 at that lowest point.
+#include <Eigen/Core>
+#include <Teuchos_ParameterList.hpp>
+
+namespace capsula::scene2d {
+
+struct CellSettings2D {
+  double aspectRatio = 1.0;         ///< a/b
+  int numberOfPoints = 256;         ///< marker points N_P = segments N_E (closed contour)
+  double lowestPointHeight = 0.005; ///< y of the lowest point (the thesis's gap)
+};
+
+/// Declares Aspect ratio, Number of points and Lowest point height in `cell`.
+void declareCellParameters2D(Teuchos::ParameterList& cell);
+
+/// Reads a validated "Cell" sublist.
+CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell);
+
+/// The semi-axis along the flow, a = sqrt(a/b) (L = 1).
+double flowSemiAxis(const CellSettings2D& cell);
+
+/// The marker points, counter-clockwise from the lowest point (equal steps of the ellipse
+/// angle, contour::NodeSpacing::EqualEllipseAngle), centred on x = 0.
+Eigen::Matrix2Xd initialCellNodes(const CellSettings2D& cell);
+
+} // namespace capsula::scene2d

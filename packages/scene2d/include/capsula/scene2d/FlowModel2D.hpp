@@ -1,0 +1,24 @@
+#pragma once
+// What drives the 2D cell: the shear flow (Flow/Capillary number, Flow/Viscosity ratio)
+// and whether the wall y = 0 bounds it (Wall/Enabled: Blake's 2D Green's function, thesis
+// App. B.1, or free space). Dimensionless as in the thesis: u_inf = (y, 0), time in 1/k.
+#include <capsula/operators/InterfaceVelocity2D.hpp>
+
+#include <Teuchos_ParameterList.hpp>
+
+namespace capsula::scene2d {
+
+struct FlowSettings2D {
+  operators::FlowConditions2D conditions; ///< Ca, lambda, u_inf = (y, 0)
+  bool wall = true;
+};
+
+/// Declares Capillary number and Viscosity ratio in `flow`.
+void declareFlowParameters2D(Teuchos::ParameterList& flow);
+/// Declares Enabled in `wall`.
+void declareWallParameters2D(Teuchos::ParameterList& wall);
+
+/// Reads the validated "Flow" and "Wall" sublists.
+FlowSettings2D readFlowSettings2D(const Teuchos::ParameterList& flow, const Teuchos::ParameterList& wall);
+
+} // namespace capsula::scene2d

@@ -1,0 +1,82 @@
+#include "capsula/scene2d/CapsuleModel2D.hpp"
+
+#include "capsula/scene2d/TetherProcedure2D.hpp"
+
+#include <capsula/contour/ContourMetrics.hpp>
+#include <capsula/core/Error.hpp>
+#include <capsula/elasticity/HookeanLaw2D.hpp>
+
+namespace capsula::scene2d {
+
+namespace {
+
+contour::ContourOptions optionsFor(contour::Closure closure)
+{
+  contour::ContourOptions options;
+  options.closure = closure;
+  return options;
+}
+
+} // namespace
+
+CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const CellSettings2D& cell,
+                               const FlowSettings2D& flow, const operators::ContourDiscretisation2D& discretisation,
+                               const operators::SolverParameters& solver)
+  : cell_(cell), flow_(flow), discretisation_(discretisation), referenceNodes_(initialCellNodes(cell))
+{
+  core::require<core::InputError>(!flow.wall || cell.lowestPointHeight > 0.0,
+                                  "Cell/Lowest point height must be > 0 above the wall, got ",
+                                  cell.lowestPointHeight, ": raise it or set Wall/Enabled to false.");
+  const contour::Contour reference(referenceNodes_);
+  referenceLength_ = reference.length();
+  referenceArea_ = contour::enclosedArea(reference);
+  membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
+  velocity_ = operators::makeInterfaceVelocity2D(flow.wall, comm, numberOfNodes(), discretisation, solver);
+}
+
+std::vector<double> CapsuleModel2D::initialState() const
+{
+  return std::vector<double>(referenceNodes_.data(), referenceNodes_.data() + referenceNodes_.size());
+}
+
+void CapsuleModel2D::tether(int offset)
+{
+  const contour::Contour reference(relabelNodes(referenceNodes_, offset), optionsFor(contour::Closure::Tethered));
+  membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
+  tetherOffset_ = offset;
+}
+
+contour::Contour CapsuleModel2D::contour(const std::vector<double>& state) const
+{
+  core::require(state.size() == 2 * static_cast<std::size_t>(numberOfNodes()), "CapsuleModel2D: the state has ",
+                state.size(), " entries, expected ", 2 * numberOfNodes());
+  Eigen::Matrix2Xd nodes = Eigen::Map<const Eigen::Matrix2Xd>(state.data(), 2, numberOfNodes());
+  return contour::Contour(std::move(nodes),
+                          optionsFor(tethered() ? contour::Closure::Tethered : contour::Closure::Periodic));
+}
+
+elasticity::MembraneState2D CapsuleModel2D::membrane(const contour::Contour& contour) const
+{
+  return membrane_->evaluate(contour);
+}
+
+operators::VelocitySolution2D CapsuleModel2D::velocities(const contour::Contour& contour,
+                                                         const elasticity::MembraneState2D& membrane)
+{
+  const operators::ContourLoad2D load = [&membrane](const contour::ContourPoint& point, int segment, double t) {
+    return membrane.loadAt(point, segment, t);
+  };
+  const std::vector<int> fixed = tethered() ? std::vector<int>{0} : std::vector<int>{};
+  operators::VelocitySolution2D solution = velocity_->nodeVelocities(contour, load, flow_.conditions, fixed);
+  lastIterations_ = solution.iterations;
+  return solution;
+}
+
+void CapsuleModel2D::rightHandSide(const std::vector<double>& state, std::vector<double>& derivative)
+{
+  const contour::Contour current = contour(state);
+  const elasticity::MembraneState2D load = membrane(current);
+  derivative = velocities(current, load).velocities;
+}
+
+} // namespace capsula::scene2d

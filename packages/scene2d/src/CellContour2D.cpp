@@ -1,0 +1,55 @@
+#include "capsula/scene2d/CellContour2D.hpp"
+
+#include <capsula/contour/InitialShapes.hpp>
+#include <capsula/core/Error.hpp>
+#include <capsula/core/ParameterDeclaration.hpp>
+
+#include <cmath>
+
+namespace capsula::scene2d {
+
+void declareCellParameters2D(Teuchos::ParameterList& cell)
+{
+  namespace core = capsula::core;
+  const CellSettings2D defaults;
+  core::declareReal(cell, "Aspect ratio", defaults.aspectRatio,
+                    "a/b of the initial ellipse, a along the flow (x) and b across it (y); the area "
+                    "is pi L^2 for every a/b (L = sqrt(ab) = 1, thesis Fig. 4.1). The thesis studied "
+                    "0.25, 0.5 and 1.",
+                    core::greaterThan(0.0));
+  core::declareInt(cell, "Number of points", defaults.numberOfPoints,
+                   "Marker points (= spline segments) of the contour; the thesis used 256 (Section "
+                   "3.12.1: the maximum tether force changes by < 0.5% from 256 to 320).",
+                   8, 100000);
+  core::declareReal(cell, "Lowest point height", defaults.lowestPointHeight,
+                    "Height of the cell's lowest point above y = 0 at the start (the thesis's 0.005). "
+                    "With the wall it must be > 0; without it y = 0 is only where the shear flow is "
+                    "at rest (-1 centres a circle there).");
+}
+
+CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell)
+{
+  CellSettings2D s;
+  s.aspectRatio = cell.get<double>("Aspect ratio");
+  s.numberOfPoints = cell.get<int>("Number of points");
+  s.lowestPointHeight = cell.get<double>("Lowest point height");
+  return s;
+}
+
+double flowSemiAxis(const CellSettings2D& cell)
+{
+  return std::sqrt(cell.aspectRatio);
+}
+
+Eigen::Matrix2Xd initialCellNodes(const CellSettings2D& cell)
+{
+  contour::EllipseShape shape;
+  shape.aspectRatio = cell.aspectRatio;
+  shape.lengthScale = 1.0;
+  const double b = 1.0 / std::sqrt(cell.aspectRatio);
+  shape.centre = Eigen::Vector2d(0.0, cell.lowestPointHeight + b);
+  shape.firstNodeAngle = -M_PI / 2.0; // node 0 at the bottom: the lowest point is a node
+  return contour::ellipseNodes(cell.numberOfPoints, shape);
+}
+
+} // namespace capsula::scene2d

@@ -1,0 +1,35 @@
+#include "capsula/scene2d/Tether2DDeck.hpp"
+
+#include "capsula/scene2d/CellContour2D.hpp"
+#include "capsula/scene2d/FlowModel2D.hpp"
+#include "capsula/scene2d/TetherProcedure2D.hpp"
+#include "capsula/scene2d/TetherRun2D.hpp"
+
+#include <capsula/core/ParameterDeclaration.hpp>
+#include <capsula/operators/ContourDiscretisation2D.hpp>
+#include <capsula/operators/OperatorParameters.hpp>
+#include <capsula/timeint/TimeIntegrationParameters.hpp>
+
+namespace capsula::scene2d {
+
+Teuchos::RCP<const Teuchos::ParameterList> validTether2DParameters()
+{
+  using core::declareSublist;
+  auto valid = Teuchos::rcp(new Teuchos::ParameterList("tether2d"));
+  declareFlowParameters2D(declareSublist(*valid, "Flow", "The shear flow (thesis eq A.13)."));
+  declareWallParameters2D(declareSublist(*valid, "Wall", "The plane wall y = 0."));
+  declareCellParameters2D(declareSublist(*valid, "Cell", "The initial cell contour (thesis Fig. 4.1)."));
+  declareTetherParameters2D(declareSublist(*valid, "Tether", "The tether procedure (thesis Section 4.1)."));
+  operators::declareContourDiscretisation2D(
+    declareSublist(*valid, "Discretisation", "Quadrature of the contour integrals (thesis App. A.6)."));
+  operators::declareSolverParameters(
+    declareSublist(*valid, "Solver", "GMRES for the viscosity-ratio equation (thesis App. A.7)."));
+  auto& time = declareSublist(*valid, "Time integration",
+                              "Time stepping (thesis App. A.8). End time: duration of the tethered "
+                              "stage in tau = k (t - t0) / lambda; step sizes in k t.");
+  timeint::declareTimeIntegrationParameters(time);
+  declareOutputParameters2D(declareSublist(*valid, "Output", "What the run writes and how often."));
+  return valid;
+}
+
+} // namespace capsula::scene2d

@@ -1,0 +1,431 @@
+#include "capsula/scene2d/TetherRun2D.hpp"
+
+#include <capsula/contour/ContourMetrics.hpp>
+#include <capsula/core/Deck.hpp>
+#include <capsula/core/Error.hpp>
+#include <capsula/core/ParameterDeclaration.hpp>
+#include <capsula/core/RunInfo.hpp>
+#include <capsula/io/Checkpoint.hpp>
+#include <capsula/io/Json.hpp>
+#include <capsula/io/MetricsCsv.hpp>
+#include <capsula/io/OutputDirectory.hpp>
+#include <capsula/io/SnapshotSeries.hpp>
+#include <capsula/operators/ContourDiscretisation2D.hpp>
+#include <capsula/timeint/TimeIntegrationParameters.hpp>
+#include <capsula/timeint/TimeIntegrator.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <ostream>
+
+namespace capsula::scene2d {
+
+void declareOutputParameters2D(Teuchos::ParameterList& output)
+{
+  namespace core = capsula::core;
+  const OutputSettings2D defaults;
+  core::declareString(output, "Directory", defaults.directory,
+                      "Where the run writes (empty: nowhere). --output overrides it.");
+  core::declareReal(output, "Interval", defaults.interval,
+                    "tau = k t / lambda between rows of the metrics tables.", core::greaterThan(0.0));
+  core::declareInt(output, "Snapshot every", defaults.snapshotEvery,
+                   "Outputs between contour snapshots (HDF5 + XDMF); 0: none but the first and last.", 0,
+                   1000000);
+  core::declareInt(output, "Checkpoint every", defaults.checkpointEvery,
+                   "Outputs between checkpoints (checkpoint.h5, overwritten); 0: at the end only.", 0, 1000000);
+}
+
+OutputSettings2D readOutputSettings2D(const Teuchos::ParameterList& output)
+{
+  OutputSettings2D s;
+  s.directory = output.get<std::string>("Directory");
+  s.interval = output.get<double>("Interval");
+  s.snapshotEvery = output.get<int>("Snapshot every");
+  s.checkpointEvery = output.get<int>("Checkpoint every");
+  return s;
+}
+
+namespace {
+
+enum class Stage : int { Preparation = 0, Tethered = 1, Free = 2 };
+
+/// What the run carries besides the integration state (all of it goes into checkpoints).
+struct Progress {
+  Stage stage = Stage::Free;
+  double origin = 0.0;          // t0, the start of the current stage in k t
+  long long outputIndex = 0;    // outputs written in the current stage
+  long long steps = 0;          // accepted steps, both stages
+  long long evaluations = 0;    // right-hand sides of finished stages
+  double previousD12 = 0.0;     // preparation: D12 after the last accepted step
+  long long lastSnapshot = -1;  // output index of the last snapshot in this stage
+  bool steady = false;
+};
+
+std::vector<std::string> tableColumns()
+{
+  std::vector<std::string> columns{"time", "step", "dt"};
+  for (const auto& name : metricColumns()) {
+    columns.push_back(name);
+  }
+  for (const char* name : {"raw_time", "gmres_iterations", "steady_measure"}) {
+    columns.emplace_back(name);
+  }
+  return columns;
+}
+
+const char* baseName(Stage stage)
+{
+  return stage == Stage::Preparation ? "preparation" : "contour";
+}
+
+io::Snapshot snapshotOf(const contour::Contour& contour, const elasticity::MembraneState2D& membrane,
+                        const std::vector<double>& velocities, double tau, long long step)
+{
+  const int n = contour.numberOfNodes();
+  io::SnapshotBlock block;
+  block.name = "cell";
+  block.topology = io::Topology::Polylines;
+  block.dimension = 2;
+  block.nodesPerPolyline = n + 1;
+  block.positions.assign(contour.nodes().data(), contour.nodes().data() + 2 * n);
+  for (int i = 0; i <= n; ++i) {
+    block.connectivity.push_back(i % n);
+  }
+  io::Field tension{"tension", 1, {}}, stretch{"stretch", 1, {}}, load{"load", 2, {}}, velocity{"velocity", 2, {}},
+    parameter{"s_over_smax", 1, {}};
+  const std::vector<double>& s = contour.parameters();
+  for (int i = 0; i < n; ++i) {
+    tension.values.push_back(membrane.tension()(i));
+    stretch.values.push_back(membrane.stretch()(i));
+    load.values.push_back(membrane.load()(0, i));
+    load.values.push_back(membrane.load()(1, i));
+    velocity.values.push_back(velocities[2 * i]);
+    velocity.values.push_back(velocities[2 * i + 1]);
+    parameter.values.push_back(s[static_cast<std::size_t>(i)] / s.back());
+  }
+  block.nodeFields = {tension, stretch, load, velocity, parameter};
+  io::Snapshot snapshot;
+  snapshot.time = tau;
+  snapshot.step = step;
+  snapshot.blocks.push_back(std::move(block));
+  return snapshot;
+}
+
+} // namespace
+
+TetherRun2D::TetherRun2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
+                         std::ostream* log)
+  : comm_(comm),
+    deck_(deck),
+    log_(log),
+    tether_(readTetherSettings2D(deck.sublist("Tether"))),
+    output_(readOutputSettings2D(deck.sublist("Output"))),
+    model_(comm, readCellSettings2D(deck.sublist("Cell")),
+           readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall")),
+           operators::readContourDiscretisation2D(deck.sublist("Discretisation")),
+           operators::readSolverParameters(deck.sublist("Solver")))
+{
+  core::require<core::InputError>(!tether_.enabled || model_.flow().wall,
+                                  "Tether/Enabled needs the wall (Wall/Enabled = true): the tether point is "
+                                  "held above it.");
+}
+
+TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
+                                   const std::optional<std::string>& restartDirectory)
+{
+  const auto wallStart = std::chrono::steady_clock::now();
+  const bool root = comm_->getRank() == 0;
+  const bool writing = !outputDirectory.empty() && root;
+  const double lambda = model_.flow().conditions.viscosityRatio;
+
+  timeint::TimeIntegrationSettings settings = timeint::timeIntegrationSettings(deck_.sublist("Time integration"));
+  const double endTau = settings.endTime; // the tethered (or free) stage's duration in tau
+  timeint::TimeIntegrator integrator(settings, [this](double, const std::vector<double>& y, std::vector<double>& dydt) {
+    model_.rightHandSide(y, dydt);
+  });
+
+  const std::vector<std::string> columns = tableColumns();
+  std::optional<io::OutputDirectory> directory;
+  std::optional<io::MetricsCsv> table;
+  std::optional<io::SnapshotSeries> series;
+  if (writing) {
+    directory.emplace(outputDirectory);
+    directory->writeRunMetadata(deck_, {"tether2d", "", comm_->getSize()});
+  }
+
+  TetherRunResult2D result;
+  Progress progress;
+  timeint::IntegrationState state;
+  const auto tauOf = [&](double t) { return (t - progress.origin) / lambda; };
+
+  // Output of the current state: a row, maybe a snapshot (collective: needs the velocity).
+  const auto observe = [&](double stepSize, double steadyMeasure, bool forceSnapshot) {
+    const contour::Contour current = model_.contour(state.y);
+    const elasticity::MembraneState2D membrane = model_.membrane(current);
+    const std::vector<double> velocities = model_.velocities(current, membrane).velocities;
+    const CellMetrics2D metrics = cellMetrics2D(model_, current, membrane, velocities);
+    const double tau = tauOf(state.time);
+    result.final = metrics;
+    result.finalTime = tau;
+    result.maxAbsAreaDrift = std::max(result.maxAbsAreaDrift, std::abs(metrics.areaDrift));
+    const bool snapshot = forceSnapshot ||
+                          (output_.snapshotEvery > 0 && progress.outputIndex % output_.snapshotEvery == 0);
+    if (writing) {
+      std::vector<double> row{tau, static_cast<double>(progress.steps), stepSize};
+      for (const double v : metricValues(metrics)) {
+        row.push_back(v);
+      }
+      row.push_back(state.time);
+      row.push_back(model_.lastIterations());
+      row.push_back(steadyMeasure);
+      table->appendRow(row);
+      if (snapshot && progress.lastSnapshot != progress.outputIndex) {
+        series->write(snapshotOf(current, membrane, velocities, tau, progress.steps));
+      }
+    }
+    if (snapshot) {
+      progress.lastSnapshot = progress.outputIndex;
+      if (log_ != nullptr) {
+        *log_ << (progress.stage == Stage::Preparation ? "preparation" : "tau") << " = " << tau
+              << ": A/A0 = " << metrics.contourLengthRatio << ", L_cell = " << metrics.cellLength
+              << ", F = " << metrics.tetherForce << ", D12 = " << metrics.D12
+              << ", area drift = " << metrics.areaDrift << "\n";
+      }
+    }
+  };
+
+  // The extremes of the tethered (or free) stage, after every accepted step: they need
+  // the membrane only (no velocity solve), and output times would sample them coarsely.
+  const auto trackExtremes = [&]() {
+    const contour::Contour current = model_.contour(state.y);
+    const double force = model_.membrane(current).netForce(model_.discretisation().gaussLegendrePoints).norm();
+    if (force > result.maxTetherForce) {
+      result.maxTetherForce = force;
+      result.timeOfMaxTetherForce = tauOf(state.time);
+    }
+    result.maxContourLengthRatio = std::max(result.maxContourLengthRatio, current.length() / model_.referenceLength());
+    result.maxCellLength = std::max(result.maxCellLength, contour::cellLength(current));
+  };
+
+  const auto startStage = [&](Stage stage) {
+    progress.stage = stage;
+    progress.origin = state.time;
+    progress.outputIndex = 0;
+    progress.lastSnapshot = -1;
+    if (writing) {
+      table.emplace(directory->file(stage == Stage::Preparation ? "preparation.csv" : "metrics.csv"), columns);
+      series.emplace(outputDirectory, baseName(stage));
+    }
+  };
+
+  const auto writeCheckpoint = [&]() {
+    if (!writing) {
+      return;
+    }
+    io::Checkpoint checkpoint;
+    checkpoint.time = tauOf(state.time);
+    checkpoint.step = progress.steps;
+    checkpoint.stepSize = state.proposedStep;
+    checkpoint.deckXml = core::deckToXml(deck_, false);
+    const timeint::StateRecord record = timeint::toRecord(state);
+    checkpoint.arrays = record.arrays;
+    checkpoint.reals = record.reals;
+    checkpoint.integers = record.integers;
+    checkpoint.integers["run stage"] = static_cast<std::int64_t>(progress.stage);
+    checkpoint.integers["run output index"] = progress.outputIndex;
+    checkpoint.integers["run steps"] = progress.steps;
+    checkpoint.integers["run evaluations"] = progress.evaluations;
+    checkpoint.integers["run last snapshot"] = progress.lastSnapshot;
+    checkpoint.integers["run tether offset"] = model_.tetherOffset();
+    checkpoint.reals["run origin"] = progress.origin;
+    checkpoint.reals["run previous D12"] = progress.previousD12;
+    checkpoint.reals["run preparation time"] = result.preparationTime;
+    checkpoint.reals["run max tether force"] = result.maxTetherForce;
+    checkpoint.reals["run time of max tether force"] = result.timeOfMaxTetherForce;
+    checkpoint.reals["run max contour length ratio"] = result.maxContourLengthRatio;
+    checkpoint.reals["run max cell length"] = result.maxCellLength;
+    checkpoint.reals["run max abs area drift"] = result.maxAbsAreaDrift;
+    io::writeCheckpoint(directory->file("checkpoint.h5"), checkpoint);
+  };
+
+  if (restartDirectory) {
+    const std::string path = *restartDirectory + "/checkpoint.h5";
+    const io::Checkpoint checkpoint = io::readCheckpoint(path);
+    timeint::StateRecord record;
+    record.arrays = checkpoint.arrays;
+    record.reals = checkpoint.reals;
+    record.integers = checkpoint.integers;
+    state = timeint::fromRecord(record, path);
+    core::require<core::InputError>(state.y.size() == 2 * static_cast<std::size_t>(model_.numberOfNodes()),
+                                    "The checkpoint ", path, " holds ", state.y.size() / 2,
+                                    " nodes but the deck asks for Cell/Number of points = ",
+                                    model_.numberOfNodes(), ".");
+    progress.stage = static_cast<Stage>(checkpoint.integers.at("run stage"));
+    progress.outputIndex = checkpoint.integers.at("run output index");
+    progress.steps = checkpoint.integers.at("run steps");
+    progress.evaluations = checkpoint.integers.at("run evaluations");
+    progress.lastSnapshot = checkpoint.integers.at("run last snapshot");
+    progress.origin = checkpoint.reals.at("run origin");
+    progress.previousD12 = checkpoint.reals.at("run previous D12");
+    result.preparationTime = checkpoint.reals.at("run preparation time");
+    result.maxTetherForce = checkpoint.reals.at("run max tether force");
+    result.timeOfMaxTetherForce = checkpoint.reals.at("run time of max tether force");
+    result.maxContourLengthRatio = checkpoint.reals.at("run max contour length ratio");
+    result.maxCellLength = checkpoint.reals.at("run max cell length");
+    result.maxAbsAreaDrift = checkpoint.reals.at("run max abs area drift");
+    result.tethered = progress.stage == Stage::Tethered;
+    if (progress.stage == Stage::Tethered) {
+      model_.tether(static_cast<int>(checkpoint.integers.at("run tether offset")));
+    }
+    if (writing) {
+      const std::string file = progress.stage == Stage::Preparation ? "preparation.csv" : "metrics.csv";
+      table.emplace(io::MetricsCsv::resume(directory->file(file), columns, checkpoint.time));
+      series.emplace(io::SnapshotSeries::resume(outputDirectory, baseName(progress.stage), checkpoint.time));
+    }
+    if (log_ != nullptr) {
+      *log_ << "Restarting from " << path << " at tau = " << checkpoint.time << " (step " << checkpoint.step
+            << ")\n";
+    }
+  } else {
+    state = integrator.start(0.0, model_.initialState());
+    startStage(tether_.enabled ? Stage::Preparation : Stage::Free);
+    progress.previousD12 = contour::taylorDeformation(model_.contour(state.y));
+    observe(0.0, 0.0, true);
+    if (progress.stage == Stage::Free) {
+      trackExtremes();
+    }
+  }
+
+  const long long evaluationsAtStart = progress.evaluations + state.statistics.rhsEvaluations;
+  for (;;) {
+    const bool preparing = progress.stage == Stage::Preparation;
+    const double stageEnd = preparing ? tether_.maximumPreparationTime : endTau;
+    if (!preparing && (progress.steady || tauOf(state.time) >= stageEnd * (1.0 - 1e-12))) {
+      break;
+    }
+    // Output k at k * interval; one within a hair of the stage's end is the end (no sliver).
+    double nextOutputTau = static_cast<double>(progress.outputIndex + 1) * output_.interval;
+    if (nextOutputTau >= stageEnd - 1e-9 * output_.interval) {
+      nextOutputTau = stageEnd;
+    }
+    const double tOut = progress.origin + lambda * nextOutputTau;
+    if (!(tOut > state.time)) { // a stage of zero length
+      if (preparing) {
+        progress.outputIndex += 1;
+      } else {
+        break;
+      }
+    } else {
+      const timeint::StepReport report = integrator.step(state, tOut);
+      ++progress.steps;
+      const bool atOutput = state.time == tOut;
+      if (atOutput) {
+        ++progress.outputIndex;
+      }
+      if (!preparing) {
+        trackExtremes();
+        progress.steady = settings.steadyCriterion != timeint::SteadyStateCriterion::Off && !report.shortened &&
+                          report.steadyMeasure < settings.steadyTolerance;
+        if (atOutput || progress.steady) {
+          const bool last = progress.steady || tauOf(state.time) >= endTau * (1.0 - 1e-12);
+          observe(report.stepSize, report.steadyMeasure, last);
+          if (output_.checkpointEvery > 0 && progress.outputIndex % output_.checkpointEvery == 0) {
+            writeCheckpoint();
+          }
+        }
+        continue;
+      }
+      const double d12 = contour::taylorDeformation(model_.contour(state.y));
+      const double rate = (d12 - progress.previousD12) / (report.stepSize / lambda);
+      progress.previousD12 = d12;
+      const double tau = tauOf(state.time);
+      const bool done = (!report.shortened && preparationComplete(tether_, tau, rate)) ||
+                        tau >= tether_.maximumPreparationTime * (1.0 - 1e-12);
+      if (atOutput || done) {
+        observe(report.stepSize, rate, done);
+        if (!done && output_.checkpointEvery > 0 && progress.outputIndex % output_.checkpointEvery == 0) {
+          writeCheckpoint();
+        }
+      }
+      if (!done) {
+        continue;
+      }
+    }
+    // Tether (thesis Section 4.1): lowest node to the anchor, relabelled node 0.
+    const Eigen::Map<const Eigen::Matrix2Xd> nodes(state.y.data(), 2, model_.numberOfNodes());
+    const TetherPlacement2D placement = tetherPlacement(nodes, Eigen::Vector2d(0.0, tether_.anchorHeight));
+    const Eigen::Matrix2Xd tethered = tetheredNodes(nodes, placement);
+    result.preparationTime = tauOf(state.time);
+    model_.tether(placement.lowestNode);
+    progress.evaluations += state.statistics.rhsEvaluations;
+    const double proposed = state.proposedStep;
+    const long long acceptedBefore = state.statistics.acceptedSteps;
+    state = integrator.start(state.time, std::vector<double>(tethered.data(), tethered.data() + tethered.size()));
+    state.proposedStep = proposed;
+    state.statistics.acceptedSteps = acceptedBefore;
+    result.tethered = true;
+    if (log_ != nullptr) {
+      *log_ << "Tethered at tau = " << result.preparationTime << " (node " << placement.lowestNode
+            << " of the free cell moved by (" << placement.shift.x() << ", " << placement.shift.y()
+            << ") to (0, " << tether_.anchorHeight << "))\n";
+    }
+    startStage(Stage::Tethered);
+    observe(0.0, 0.0, true);
+    trackExtremes();
+  }
+  writeCheckpoint();
+
+  result.steady = progress.steady;
+  result.steps = progress.steps;
+  const double wallSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+  if (writing) {
+    io::JsonValue summary = io::JsonValue::object();
+    summary["application"] = "tether2d";
+    summary["git_sha"] = core::gitSha();
+    summary["capsula_version"] = core::capsulaVersion();
+    summary["trilinos_version"] = core::trilinosVersion();
+    summary["ranks"] = comm_->getSize();
+    io::JsonValue terms = io::JsonValue::array();
+    terms.append(std::string("single layer, ") + model_.kernelName() + " Green's function, log-singular rule");
+    if (lambda != 1.0) {
+      terms.append("double layer (subtracted) with Belos GMRES, lambda != 1");
+    }
+    if (model_.discretisation().nearSingularDistance > 0.0) {
+      terms.append("near-singular subdivision");
+    }
+    if (tether_.enabled) {
+      terms.append("tether constraint after a free preparation stage");
+    }
+    summary["terms"] = terms;
+    summary["tethered"] = result.tethered;
+    summary["steady"] = result.steady;
+    summary["preparation_time"] = result.preparationTime;
+    summary["final"]["time"] = result.finalTime;
+    const auto names = metricColumns();
+    const auto values = metricValues(result.final);
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      summary["final"][names[i]] = values[i];
+    }
+    summary["max"]["tether_force"] = result.maxTetherForce;
+    summary["max"]["time_of_max_tether_force"] = result.timeOfMaxTetherForce;
+    summary["max"]["contour_length_ratio"] = result.maxContourLengthRatio;
+    summary["max"]["cell_length"] = result.maxCellLength;
+    summary["max"]["abs_area_drift"] = result.maxAbsAreaDrift;
+    summary["timings"]["wall_seconds_this_process"] = wallSeconds;
+    summary["timings"]["accepted_steps"] = static_cast<long long>(state.statistics.acceptedSteps);
+    summary["timings"]["rejected_steps"] = static_cast<long long>(state.statistics.rejectedSteps);
+    const long long evaluations = progress.evaluations + state.statistics.rhsEvaluations;
+    summary["timings"]["rhs_evaluations"] = evaluations;
+    summary["timings"]["seconds_per_rhs_evaluation_this_process"] =
+      wallSeconds / static_cast<double>(std::max(1LL, evaluations - evaluationsAtStart));
+    summary["steps"] = result.steps;
+    summary["deck"] = core::deckToXml(deck_, false);
+    io::writeJsonFile(directory->file("summary.json"), summary);
+  }
+  return result;
+}
+
+} // namespace capsula::scene2d

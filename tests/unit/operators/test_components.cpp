@@ -1,0 +1,333 @@
+// The pieces under the operators: polar rules, the element map, the contracted kernels,
+// deck parameters, the kernel registry, the surfaces and the Tpetra operator.
+#include "OperatorTesting.hpp"
+
+#include <capsula/core/Error.hpp>
+#include <capsula/greens/FreeSpace3D.hpp>
+#include <capsula/greens/Wall3D.hpp>
+#include <capsula/mesh/Shapes.hpp>
+#include <capsula/operators/BuiltInKernels.hpp>
+#include <capsula/operators/ContractedKernels.hpp>
+#include <capsula/operators/ElementIntegrals.hpp>
+#include <capsula/operators/OperatorParameters.hpp>
+#include <capsula/operators/PolarRules.hpp>
+#include <capsula/operators/SecondKindOperator.hpp>
+#include <capsula/quadrature/GaussLegendre.hpp>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Tpetra_Core.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+namespace {
+
+using namespace capsula;
+using namespace capsula::operators;
+using mesh::Vec3;
+namespace ot = capsula::operators::testing;
+
+// --- polar rules -------------------------------------------------------------------------
+
+double integrate(const ParametricRule& rule, double (*f)(double, double))
+{
+  double sum = 0.0;
+  for (int k = 0; k < rule.size(); ++k) {
+    sum += rule.weight[k] * f(rule.xi[k], rule.eta[k]);
+  }
+  return sum;
+}
+
+TEST(PolarRules, VertexRuleIntegratesInverseDistanceExactly)
+{
+  // int_T 1/rho dxi deta around vertex (0,0) = int_0^{pi/2} dtheta / (cos + sin) = sqrt(2) ln(1 + sqrt(2)).
+  // In u = asinh(tan(theta - theta_perp)) the integrand r' / rho is constant: exact with
+  // ONE point per direction (round-off).
+  const auto gauss = quadrature::gaussLegendre(1, 0.0, 1.0);
+  ParametricRule rule;
+  singularRule(0, mesh::ShapeParameters{}, gauss, rule);
+  const double exact = std::sqrt(2.0) * std::log(1.0 + std::sqrt(2.0));
+  EXPECT_NEAR(integrate(rule, [](double x, double y) { return 1.0 / std::hypot(x, y); }), exact, 1e-15);
+  // The area 1/2 needs a few points (cosh u is not constant): 10 reach round-off.
+  singularRule(0, mesh::ShapeParameters{}, quadrature::gaussLegendre(10, 0.0, 1.0), rule);
+  EXPECT_NEAR(integrate(rule, [](double, double) { return 1.0; }), 0.5, 1e-15);
+}
+
+TEST(PolarRules, EveryNodeRuleCoversTheTriangle)
+{
+  // For each of the six nodes, with uneven midside nodes, the rule covers the whole
+  // triangle: smooth integrands converge spectrally (in the radius a polynomial, in u an
+  // entire function of sinh u and cosh u), to round-off at 12 points.
+  const mesh::ShapeParameters shape{0.45, 0.55, 0.4};
+  const auto gauss = quadrature::gaussLegendre(12, 0.0, 1.0);
+  ParametricRule rule;
+  for (int node = 0; node < 6; ++node) {
+    singularRule(node, shape, gauss, rule);
+    EXPECT_NEAR(integrate(rule, [](double, double) { return 1.0; }), 0.5, 1e-13) << "node " << node;
+    // int_T xi^2 eta dxi deta = 2! 1! / 5! = 1/60.
+    EXPECT_NEAR(integrate(rule, [](double x, double y) { return x * x * y; }), 1.0 / 60.0, 1e-13)
+      << "node " << node;
+  }
+}
+
+TEST(PolarRules, MidsideRuleIntegratesInverseDistanceExactly)
+{
+  // Around P = (alpha, 0): int_T 1/rho = sum over the sub-triangles (P, A, B) of
+  // p [asinh(sigma_B / p) - asinh(sigma_A / p)] (p the distance from P to side AB,
+  // sigma the positions of A and B along it from the foot of the perpendicular):
+  // (P, (1,0), (0,1)): p = (1 - alpha)/sqrt 2, sigma = -+ (1 - alpha)/sqrt 2 ... written out below.
+  constexpr double alpha = 0.4;
+  const mesh::ShapeParameters shape{alpha, 0.5, 0.5};
+  const auto piece = [](double ax, double ay, double bx, double by) {
+    // Sub-triangle with apex (alpha, 0) and side from a to b.
+    const double lx = bx - ax, ly = by - ay, l = std::hypot(lx, ly);
+    const double sigmaA = ((ax - alpha) * lx + ay * ly) / l;
+    const double p = std::abs((ax - alpha) * ly - ay * lx) / l;
+    return p * (std::asinh((sigmaA + l) / p) - std::asinh(sigmaA / p));
+  };
+  const double exact = piece(1.0, 0.0, 0.0, 1.0) + piece(0.0, 1.0, 0.0, 0.0);
+  ParametricRule rule;
+  singularRule(3, shape, quadrature::gaussLegendre(1, 0.0, 1.0), rule);
+  EXPECT_NEAR(integrate(rule, [](double x, double y) { return 1.0 / std::hypot(x - alpha, y); }), exact, 1e-15);
+}
+
+// --- element map -------------------------------------------------------------------------
+
+TEST(ElementMap, MatchesTheMeshElementGeometry)
+{
+  // The quadratic re-interpolation is exact: position, h_s n and phi agree with
+  // mesh::evaluateSurfacePoint and mesh::shapeFunctions to round-off.
+  const auto surface = mesh::makeEllipsoid(1, Vec3(1.3, 0.8, 1.0));
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (int e = 0; e < surface.numElements(); e += 7) {
+    const auto x = surface.elementNodes(e);
+    // Uneven midside placement to exercise alpha, beta, gamma != 1/2.
+    const mesh::ShapeParameters shape{0.43, 0.56, 0.61};
+    const ElementMap map(x, shape);
+    for (int k = 0; k < 5; ++k) {
+      double xi = uniform(random), eta = uniform(random);
+      if (xi + eta > 1.0) {
+        xi = 1.0 - xi;
+        eta = 1.0 - eta;
+      }
+      const ElementSample s = map.sample(xi, eta, 0.25);
+      const mesh::SurfacePoint p = mesh::evaluateSurfacePoint(x, shape, xi, eta);
+      double phi[6];
+      mesh::shapeFunctions(shape, xi, eta, phi);
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(s.x[i], p.position[i], 1e-14);
+        EXPECT_NEAR(s.weightedNormal[i], 0.25 * p.metric * p.normal[i], 1e-14);
+      }
+      EXPECT_NEAR(s.weight, 0.25 * p.metric, 1e-14);
+      for (int a = 0; a < 6; ++a) {
+        EXPECT_NEAR(s.phi[a], phi[a], 1e-13);
+      }
+    }
+  }
+}
+
+// --- contracted kernels ------------------------------------------------------------------
+
+template <class Contracted, class Tensors>
+void expectContractionsMatchTensors()
+{
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (int k = 0; k < 200; ++k) {
+    const double x[3] = {uniform(random), 1.2 + uniform(random), uniform(random)};
+    const double x0[3] = {uniform(random), 1.2 + uniform(random), uniform(random)};
+    const double f[3] = {uniform(random), uniform(random), uniform(random)};
+    const double a[3] = {uniform(random), uniform(random), uniform(random)};
+    double G[3][3], T[3][3][3];
+    Tensors::stokeslet(x, x0, G);
+    Tensors::stresslet(x, x0, T);
+    double single[3] = {0.0, 0.0, 0.0}, dbl[3] = {0.0, 0.0, 0.0};
+    Contracted::addSingleLayerTerm(x, x0, f, single);
+    Contracted::addDoubleLayerTerm(x, x0, f, a, dbl);
+    double scaleG = 0.0, scaleT = 0.0;
+    double expectG[3] = {0.0, 0.0, 0.0}, expectT[3] = {0.0, 0.0, 0.0};
+    for (int j = 0; j < 3; ++j) {
+      for (int i = 0; i < 3; ++i) {
+        expectG[j] += G[i][j] * f[i];
+        scaleG += std::abs(G[i][j] * f[i]);
+        for (int l = 0; l < 3; ++l) {
+          expectT[j] += T[i][j][l] * f[i] * a[l];
+          scaleT += std::abs(T[i][j][l] * f[i] * a[l]);
+        }
+      }
+    }
+    for (int j = 0; j < 3; ++j) {
+      // Round-off of sums of ~30 terms, relative to the sum of their sizes.
+      EXPECT_NEAR(single[j], expectG[j], 1e-14 * scaleG);
+      EXPECT_NEAR(dbl[j], expectT[j], 1e-14 * scaleT);
+    }
+  }
+}
+
+TEST(ContractedKernels, FreeSpaceMatchesGreensTensors)
+{
+  expectContractionsMatchTensors<FreeSpace3DKernel, greens::FreeSpace3D>();
+}
+
+TEST(ContractedKernels, WallMatchesGreensTensors)
+{
+  expectContractionsMatchTensors<Wall3DKernel, greens::Wall3D>();
+}
+
+TEST(ContractedKernels, WallTermsVanishExactlyForAPoleOnTheWall)
+{
+  // No slip: a target on the wall gets nothing from any source, to the last bit (free
+  // and image terms are evaluated alike), so no near-singular work is spent there.
+  const double x[3] = {0.3, 0.8, -0.2}, x0[3] = {-0.1, 0.0, 0.4};
+  const double f[3] = {0.2, -0.5, 0.9}, a[3] = {0.4, 0.1, -0.3};
+  double single[3] = {0.0, 0.0, 0.0}, dbl[3] = {0.0, 0.0, 0.0};
+  Wall3DKernel::addSingleLayerTerm(x, x0, f, single);
+  Wall3DKernel::addDoubleLayerTerm(x, x0, f, a, dbl);
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_EQ(single[j], 0.0);
+    EXPECT_EQ(dbl[j], 0.0);
+  }
+  EXPECT_TRUE(KernelTraits<Wall3DKernel>::vanishesAt(x0));
+}
+
+TEST(ContractedKernels, GenericContractionIsUsedWithoutHooks)
+{
+  // greens::Wall3D has no hooks: KernelTraits contracts its tensors; same numbers.
+  const double x[3] = {0.3, 1.1, -0.2}, x0[3] = {-0.1, 0.7, 0.4}, f[3] = {0.2, -0.5, 0.9};
+  double generic[3] = {0.0, 0.0, 0.0}, fast[3] = {0.0, 0.0, 0.0};
+  addSingleLayerTerm<greens::Wall3D>(x, x0, f, generic);
+  addSingleLayerTerm<Wall3DKernel>(x, x0, f, fast);
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_NEAR(generic[j], fast[j], 1e-14);
+  }
+}
+
+// --- parameters ----------------------------------------------------------------------------
+
+TEST(OperatorParameters, DeclaredDefaultsReadBack)
+{
+  Teuchos::ParameterList deck;
+  declareOperatorParameters(deck);
+  const DiscretisationParameters d = readDiscretisationParameters(deck.sublist("Discretisation"));
+  const SolverParameters s = readSolverParameters(deck.sublist("Solver"));
+  const DiscretisationParameters dd;
+  const SolverParameters sd;
+  EXPECT_EQ(d.quadraturePoints, dd.quadraturePoints);
+  EXPECT_EQ(d.singularQuadraturePoints, dd.singularQuadraturePoints);
+  EXPECT_EQ(d.nearSingularTolerance, dd.nearSingularTolerance);
+  EXPECT_EQ(d.nearSingularDistance, dd.nearSingularDistance);
+  EXPECT_EQ(d.regularNeighbourRings, dd.regularNeighbourRings);
+  EXPECT_EQ(s.tolerance, sd.tolerance);
+  EXPECT_EQ(s.restart, sd.restart);
+  EXPECT_EQ(s.maximumIterations, sd.maximumIterations);
+}
+
+TEST(OperatorParameters, RuleWithoutTriangleRuleIsRejectedByName)
+{
+  Teuchos::ParameterList deck;
+  declareOperatorParameters(deck);
+  deck.sublist("Discretisation").set("Quadrature points", 5);
+  try {
+    readDiscretisationParameters(deck.sublist("Discretisation"));
+    FAIL() << "N_Q = 5 has no rule";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Quadrature points"), std::string::npos) << e.what();
+  }
+  SolverParameters bad;
+  bad.tolerance = 0.0;
+  EXPECT_THROW(validate(bad), core::InputError);
+}
+
+// --- registry and surfaces -----------------------------------------------------------------
+
+TEST(KernelRegistry, BuiltInsAndUnknownNames)
+{
+  const KernelRegistry registry = builtInKernels();
+  EXPECT_EQ(registry.names(), (std::vector<std::string>{"FreeSpace", "Wall"}));
+  auto solver = registry.create("Wall", ot::serialComm(),
+                                CellSurfaces({mesh::makeSphere(0, 0.5, {Vec3(0, 1, 0), mesh::Mat3::Identity()})},
+                                             1.0),
+                                {}, {});
+  EXPECT_EQ(solver->kernelName(), "plane wall 3D");
+  try {
+    registry.create("Wal", ot::serialComm(), CellSurfaces({mesh::makeSphere(0, 0.5)}, 1.0), {}, {});
+    FAIL() << "unknown kernel";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Did you mean 'Wall'"), std::string::npos) << e.what();
+  }
+  KernelRegistry copy = registry;
+  EXPECT_THROW(copy.add("Wall", "again", solverFactory<Wall3DKernel>()), core::InputError);
+}
+
+TEST(CellSurfaces, NumbersCellsConsecutivelyAndRejectsBadRatios)
+{
+  const CellSurfaces surfaces({mesh::makeSphere(0, 1.0), mesh::makeSphere(1, 1.0)}, {1.0, 3.0});
+  EXPECT_EQ(surfaces.numNodes(), 42 + 162);
+  EXPECT_EQ(surfaces.numElements(), 20 + 80);
+  EXPECT_EQ(surfaces.cellOfNode(41), 0);
+  EXPECT_EQ(surfaces.cellOfNode(42), 1);
+  EXPECT_EQ(surfaces.cellOfElement(20), 1);
+  EXPECT_EQ(surfaces.elementNodes(20)[0], 42 + surfaces.cell(1).element(0)[0]);
+  EXPECT_FALSE(surfaces.allViscosityRatiosOne());
+  EXPECT_THROW(CellSurfaces({mesh::makeSphere(0, 1.0)}, {0.0}), core::InputError);
+  EXPECT_THROW(CellSurfaces({mesh::makeSphere(0, 1.0)}, std::vector<double>{}), core::InputError);
+}
+
+TEST(LayerPotentials, WallKernelRejectsNodesBelowTheWall)
+{
+  EXPECT_THROW(ot::makeSolver("Wall", mesh::makeSphere(1, 1.0)), core::InputError);
+  EXPECT_NO_THROW(ot::makeSolver("FreeSpace", mesh::makeSphere(1, 1.0)));
+}
+
+// --- the Tpetra operator -------------------------------------------------------------------
+
+TEST(SecondKindOperator, HonoursAlphaBetaAndRejectsTranspose)
+{
+  using MV = Tpetra::MultiVector<double>;
+  const auto comm = ot::serialComm();
+  const int numNodes = 4;
+  auto map = Teuchos::rcp(new Tpetra::Map<>(3 * numNodes, 0, comm));
+  // A stand-in double layer: DL[u]_t = sum of all entries of u (every row sees every node).
+  const auto layer = [](const double* u, double* rows) {
+    double sum = 0.0;
+    for (int k = 0; k < 3 * numNodes; ++k) {
+      sum += u[k];
+    }
+    for (int k = 0; k < 3 * numNodes; ++k) {
+      rows[k] = sum;
+    }
+  };
+  const SecondKindOperator A(map, layer, std::vector<double>(numNodes, 2.0), std::vector<double>(numNodes, 0.5));
+  EXPECT_FALSE(A.hasTransposeApply());
+  MV x(map, 1), y(map, 1);
+  {
+    auto data = x.getDataNonConst(0);
+    for (int k = 0; k < 3 * numNodes; ++k) {
+      data[k] = k + 1.0;
+    }
+    y.putScalar(std::nan(""));
+  }
+  // A x = x - 0.5 * (2 * sum x) = x - 78; beta = 0 must ignore the NaN in y.
+  A.apply(x, y, Teuchos::NO_TRANS, 2.0, 0.0);
+  {
+    const auto data = y.getData(0);
+    for (int k = 0; k < 3 * numNodes; ++k) {
+      EXPECT_DOUBLE_EQ(data[k], 2.0 * ((k + 1.0) - 78.0));
+    }
+  }
+  A.apply(x, y, Teuchos::NO_TRANS, 1.0, -1.0); // y = A x - y = -(A x)
+  {
+    const auto data = y.getData(0);
+    for (int k = 0; k < 3 * numNodes; ++k) {
+      EXPECT_DOUBLE_EQ(data[k], -((k + 1.0) - 78.0));
+    }
+  }
+  EXPECT_THROW(A.apply(x, y, Teuchos::TRANS, 1.0, 0.0), std::invalid_argument);
+  EXPECT_EQ(A.applications(), 2);
+}
+
+} // namespace

@@ -1,0 +1,141 @@
+// Runs of the 2D cell model (small sizes, a second or two each): a free capsule in
+// unbounded shear against the small-deformation limit, a tethered run, and restart.
+#include "Tether2DTesting.hpp"
+
+#include <capsula/io/MetricsCsv.hpp>
+#include <capsula/scene2d/TetherRun2D.hpp>
+
+#include <Teuchos_DefaultSerialComm.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+using namespace capsula;
+using namespace capsula::scene2d;
+using scene2d::testing::tether2dDeck;
+
+namespace {
+
+Teuchos::RCP<const Teuchos::Comm<int>> serial()
+{
+  return Teuchos::rcp(new Teuchos::SerialComm<int>);
+}
+
+std::string scratchDirectory(const std::string& name)
+{
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("capsula_tether2d_" + name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(path);
+  return path.string();
+}
+
+} // namespace
+
+TEST(TetherRun2D, FreeCapsuleInShearReachesTheSmallDeformationShape)
+{
+  // A 2D capsule with an unstressed circular membrane has no linear resistance to shape
+  // change (a mode-2 wrinkle at fixed length does not stretch it). The mean tension is
+  // set by the perimeter increase 3 D^2 / 4 of an area-preserving mode-2 shape, and its
+  // normal load 3 D gamma / Ca must balance the strain of the shear flow: the steady
+  // tank-treading shape has D12 = (4 Ca / 3)^(1/3) (1 + O(D^2)) (docs/tether2d.md). Measured
+  // at 64 points: 0.1855, 0.2317, 0.2884 for Ca = 0.005, 0.01, 0.02 against 0.1882, 0.2371,
+  // 0.2988; the gap, 0.42 D^2, is the next order. At 32 points and Ca = 0.01: within 3%.
+  const double ca = 0.01;
+  const auto deck = tether2dDeck({"Wall/Enabled=false", "Tether/Enabled=false", "Cell/Lowest point height=-1",
+                                  "Cell/Number of points=32", "Flow/Capillary number=0.01",
+                                  "Time integration/End time=6", "Output/Interval=0.5"});
+  TetherRun2D run(serial(), deck, nullptr);
+  const TetherRunResult2D early = [&] {
+    auto d = deck;
+    d.sublist("Time integration").set("End time", 4.0);
+    TetherRun2D shortRun(serial(), d, nullptr);
+    return shortRun.run("", std::nullopt);
+  }();
+  const TetherRunResult2D result = run.run("", std::nullopt);
+  const double theory = std::cbrt(4.0 * ca / 3.0);
+  EXPECT_NEAR(result.final.D12, theory, 0.03 * theory);
+  // Steady: D12 moved by < 1e-3 between tau = 4 and 6 (the relaxation time is ~1).
+  EXPECT_NEAR(result.final.D12, early.final.D12, 1e-3);
+  // A free cell has no net membrane force (periodic spline: exact up to quadrature).
+  EXPECT_LT(result.final.tetherForce, 1e-12);
+  // Area: O(1e-4) per unit time at this size.
+  EXPECT_LT(std::abs(result.final.areaDrift), 2e-3);
+}
+
+TEST(TetherRun2D, TetheredCellIsHeldAtTheAnchorAndPulledDownstream)
+{
+  const auto deck = tether2dDeck({"Cell/Number of points=48", "Flow/Capillary number=0.25",
+                                  "Tether/Minimum preparation time=0.5", "Tether/Maximum preparation time=1",
+                                  "Time integration/End time=1", "Output/Interval=0.25"});
+  TetherRun2D run(serial(), deck, nullptr);
+  const TetherRunResult2D result = run.run("", std::nullopt);
+  ASSERT_TRUE(result.tethered);
+  EXPECT_NEAR(result.preparationTime, 1.0, 1e-12); // still deforming: ends at the maximum
+  // The tether node's velocity is zero in every stage, so it stays exactly at the anchor;
+  // the spline's lowest point is there too (the cell is pulled up and downstream of it).
+  EXPECT_NEAR(result.final.lowestPoint, 0.005, 1e-12);
+  // The flow drags the cell downstream: the tether holds it with a force along -x on the
+  // fluid side, i.e. int Delta f dl points downstream (+x) and grows after tethering.
+  EXPECT_GT(result.final.tetherForceX, 0.1);
+  EXPECT_GT(result.final.tetherForceX, 10.0 * std::abs(result.final.tetherForceY));
+  EXPECT_GT(result.final.contourLengthRatio, 1.0);
+  EXPECT_LT(result.maxAbsAreaDrift, 1e-3); // lambda = 1 over 2 units of tau
+}
+
+TEST(TetherRun2D, RestartReproducesTheUninterruptedRun)
+{
+  // The first part ends at tau = 0.25 of the tethered stage, an output time of the whole
+  // run too: outputs at k 0.125 are exact binary numbers, so both runs step onto the same
+  // times (a run ending at 0.3 would stop at 0.3, one passing it at 3 x 0.1 = 0.30000000000000004).
+  const std::vector<std::string> base{"Cell/Number of points=32", "Flow/Viscosity ratio=3",
+                                      "Flow/Capillary number=0.1", "Tether/Minimum preparation time=0.125",
+                                      "Tether/Maximum preparation time=0.25", "Output/Interval=0.125",
+                                      "Output/Checkpoint every=0"};
+  auto withEnd = [&](double end) {
+    auto o = base;
+    o.push_back("Time integration/End time=" + std::to_string(end));
+    return tether2dDeck(o);
+  };
+  const std::string whole = scratchDirectory("whole");
+  const std::string first = scratchDirectory("first");
+  TetherRun2D uninterrupted(serial(), withEnd(0.5), nullptr);
+  const TetherRunResult2D expected = uninterrupted.run(whole, std::nullopt);
+  TetherRun2D part(serial(), withEnd(0.25), nullptr);
+  part.run(first, std::nullopt);
+  TetherRun2D rest(serial(), withEnd(0.5), nullptr);
+  const TetherRunResult2D resumed = rest.run(first, first);
+
+  // Bit for bit: the same steps from the same checkpointed state (lambda = 3: GMRES starts
+  // from the explicit velocity, a pure function of the state).
+  EXPECT_EQ(resumed.final.tetherForce, expected.final.tetherForce);
+  EXPECT_EQ(resumed.final.D12, expected.final.D12);
+  EXPECT_EQ(resumed.steps, expected.steps);
+  const io::CsvTable a = io::readCsvTable(whole + "/metrics.csv");
+  const io::CsvTable b = io::readCsvTable(first + "/metrics.csv");
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  for (std::size_t r = 0; r < a.rows.size(); ++r) {
+    EXPECT_EQ(a.rows[r], b.rows[r]) << "row " << r;
+  }
+  std::filesystem::remove_all(whole);
+  std::filesystem::remove_all(first);
+}
+
+TEST(TetherRun2D, AreaDriftStaysSmallAtLambdaTen)
+{
+  // The short version of the area-drift check (docs/tether2d.md has the full runs: the
+  // thesis kept it below 1.5% at lambda = 10): 40 points, a/b = 0.5, Ca = 0.1, lambda = 10,
+  // through tethering to tau = 1. The GMRES path with its double layer is exercised.
+  const auto deck = tether2dDeck({"Cell/Number of points=40", "Cell/Aspect ratio=0.5", "Flow/Viscosity ratio=10",
+                                  "Flow/Capillary number=0.1", "Tether/Minimum preparation time=0.25",
+                                  "Tether/Maximum preparation time=0.5", "Time integration/End time=1",
+                                  "Output/Interval=0.25"});
+  TetherRun2D run(serial(), deck, nullptr);
+  const TetherRunResult2D result = run.run("", std::nullopt);
+  ASSERT_TRUE(result.tethered);
+  // Measured 3.1e-4 (the spline area error of 40 points and the quadrature of the velocity).
+  EXPECT_LT(result.maxAbsAreaDrift, 1e-3);
+  EXPECT_GT(result.final.tetherForceX, 0.0);
+}
