@@ -45,6 +45,9 @@ struct Case {
   std::string shape;
 };
 
+// Readable test names in ctest (instead of the raw bytes of the parameter).
+void PrintTo(const Case& c, std::ostream* out) { *out << c.kernel << " " << c.shape; }
+
 std::string label(const Case& c, const std::string& what) { return c.kernel + " " + c.shape + ": " + what; }
 
 class Identities : public ::testing::TestWithParam<Case> {};

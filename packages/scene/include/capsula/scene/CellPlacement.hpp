@@ -1,0 +1,27 @@
+#pragma once
+// Checks of where the cells start: above the wall, and not inside one another. Both are
+// input errors (the deck's Center or size must change), raised before any work is done.
+#include <capsula/mesh/SurfaceMesh.hpp>
+
+#include <string>
+#include <vector>
+
+namespace capsula::scene {
+
+/// Throws core::InputError naming `path` unless every node lies in the fluid, y > 0 (the
+/// wall is the plane y = 0).
+void requireAboveWall(const mesh::SurfaceMesh& cell, const std::string& path);
+
+/// Winding number of the closed surface about `point`: 1 inside, 0 outside (the surface
+/// is taken as the four flat triangles of each 6-node element; for a point farther from
+/// the surface than the chord height of an element the answer is exact).
+double windingNumber(const mesh::SurfaceMesh& surface, const mesh::Vec3& point);
+
+/// True if a node of either surface lies inside the other.
+bool surfacesOverlap(const mesh::SurfaceMesh& a, const mesh::SurfaceMesh& b);
+
+/// Throws core::InputError naming both cells if any two overlap; paths[i] names cell i.
+void requireNoOverlap(const std::vector<const mesh::SurfaceMesh*>& cells,
+                      const std::vector<std::string>& paths);
+
+} // namespace capsula::scene

@@ -1,0 +1,63 @@
+#pragma once
+// Runs a scene from a validated deck to its end time or steady state and writes the
+// output contract of the 3D apps (cell3d, twocell3d) into the output directory:
+//
+//   metrics.csv    one row per cell per output time (header row; columns in
+//                  metricsColumns()); rewritten atomically at every output
+//   probes.csv     fluid velocity at 'Output/Flow probes', only if some are given
+//   summary.json   status, final (and steady) values per cell, the terms built, step
+//                  statistics, timings, code version and the validated deck
+//   cells_NNNNNN.h5 + cells.xdmf   snapshots (positions, velocities, loads, tensions,
+//                  wall shear stress) that ParaView opens as one time series
+//   checkpoint.h5  everything needed to continue (--restart DIR)
+//   deck.xml, run.json   the validated deck and the run record
+//
+// Time stepping (timeint) lands on every output time; observers measure there and never
+// inside the right-hand side. Steady state: the root-mean-square normal speed of the nodes
+// relative to their cell's centroid, (u_i - dx_c/dt) . n_i, falls below
+// 'Time integration/Steady tolerance' for every cell (the change of positions per unit time
+// that is neither translation nor tank-treading). Restart: the deck must equal the checkpoint's except for
+// 'Time integration/End time' and 'Output/Directory'; the continued run writes the same
+// rows, bit for bit, as the uninterrupted one.
+//
+// All ranks run this together; rank 0 writes the files. A failure (non-finite state, a
+// cell reaching the wall, a GMRES breakdown) is rethrown after summary.json records it;
+// the last checkpoint and outputs stay.
+#include <capsula/operators/KernelRegistry.hpp>
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_ParameterList.hpp>
+
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace capsula::scene {
+
+struct SceneRunOptions {
+  std::string application = "cell3d";     ///< named in run.json and summary.json
+  std::string deckSource;                  ///< the deck file, for the record
+  std::optional<std::string> outputDirectory;  ///< overrides 'Output/Directory'
+  std::optional<std::string> restartDirectory; ///< continue from its checkpoint.h5
+  std::ostream* log = nullptr;             ///< progress (rank 0), or nothing
+};
+
+struct SceneRunResult {
+  std::string status;            ///< "finished" (end time) or "steady"
+  double time = 0.0;             ///< where the run stopped
+  std::int64_t acceptedSteps = 0;
+  std::string outputDirectory;
+  std::vector<std::string> terms;   ///< physics and output terms built
+};
+
+/// The metrics.csv columns; the wall-shear-stress ones only when that output is on.
+std::vector<std::string> metricsColumns(bool wallShearStress);
+
+/// Runs the scene `validatedDeck` describes. Collective over `comm`.
+SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck,
+                        const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                        const SceneRunOptions& options, const operators::KernelRegistry& kernels);
+
+} // namespace capsula::scene

@@ -1,0 +1,113 @@
+#include "capsula/scene/CellPlacement.hpp"
+
+#include <capsula/core/Error.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace capsula::scene {
+
+namespace core = capsula::core;
+using mesh::Vec3;
+
+namespace {
+
+// Signed solid angle of the flat triangle (a, b, c) seen from the origin (Van Oosterom &
+// Strackee 1983): positive when the triangle's normal (b - a) x (c - a) points away.
+double solidAngle(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const double la = a.norm(), lb = b.norm(), lc = c.norm();
+  const double numerator = a.dot(b.cross(c));
+  const double denominator = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
+  return 2.0 * std::atan2(numerator, denominator);
+}
+
+struct Box {
+  Vec3 lower = Vec3::Constant(HUGE_VAL), upper = Vec3::Constant(-HUGE_VAL);
+};
+
+Box boundingBox(const mesh::SurfaceMesh& surface)
+{
+  Box box;
+  for (int i = 0; i < surface.numNodes(); ++i) {
+    box.lower = box.lower.cwiseMin(surface.position(i));
+    box.upper = box.upper.cwiseMax(surface.position(i));
+  }
+  return box;
+}
+
+bool contains(const Box& box, const Vec3& p)
+{
+  return (p.array() >= box.lower.array()).all() && (p.array() <= box.upper.array()).all();
+}
+
+bool anyNodeInside(const mesh::SurfaceMesh& nodesOf, const mesh::SurfaceMesh& surface)
+{
+  const Box box = boundingBox(surface);
+  for (int i = 0; i < nodesOf.numNodes(); ++i) {
+    const Vec3 p = nodesOf.position(i);
+    if (contains(box, p) && windingNumber(surface, p) > 0.5) {
+      return true;
+    }
+  }
+  return false;
+}
+
+} // namespace
+
+void requireAboveWall(const mesh::SurfaceMesh& cell, const std::string& path)
+{
+  int lowest = 0;
+  for (int i = 1; i < cell.numNodes(); ++i) {
+    if (cell.position(i)[1] < cell.position(lowest)[1]) {
+      lowest = i;
+    }
+  }
+  const double y = cell.position(lowest)[1];
+  core::require<core::InputError>(
+    y > 0.0, "'", path, "' crosses the wall: node ", lowest, " lies at y = ", y,
+    " but the fluid is y > 0 when 'Wall/Enabled' is true. Raise '", path,
+    "/Center' (its y component is the height of the centre) by more than ", -y,
+    ", or disable the wall.");
+}
+
+double windingNumber(const mesh::SurfaceMesh& surface, const Vec3& point)
+{
+  // Four flat sub-triangles per element, oriented like the element (outward normal).
+  static constexpr std::array<std::array<int, 3>, 4> pieces{
+    {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}}};
+  double total = 0.0;
+  for (int e = 0; e < surface.numElements(); ++e) {
+    const auto& nodes = surface.element(e);
+    for (const auto& piece : pieces) {
+      total += solidAngle(surface.position(nodes[piece[0]]) - point,
+                          surface.position(nodes[piece[1]]) - point,
+                          surface.position(nodes[piece[2]]) - point);
+    }
+  }
+  return total / (4.0 * M_PI);
+}
+
+bool surfacesOverlap(const mesh::SurfaceMesh& a, const mesh::SurfaceMesh& b)
+{
+  const Box boxA = boundingBox(a), boxB = boundingBox(b);
+  const bool boxesMeet = (boxA.lower.array() <= boxB.upper.array()).all()
+                         && (boxB.lower.array() <= boxA.upper.array()).all();
+  return boxesMeet && (anyNodeInside(a, b) || anyNodeInside(b, a));
+}
+
+void requireNoOverlap(const std::vector<const mesh::SurfaceMesh*>& cells,
+                      const std::vector<std::string>& paths)
+{
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    for (std::size_t j = i + 1; j < cells.size(); ++j) {
+      core::require<core::InputError>(
+        !surfacesOverlap(*cells[i], *cells[j]), "'", paths[i], "' and '", paths[j],
+        "' overlap at the start: a node of one lies inside the other. Move their 'Center's "
+        "apart (or make the cells smaller).");
+    }
+  }
+}
+
+} // namespace capsula::scene

@@ -1,0 +1,237 @@
+#include "capsula/scene/Scene.hpp"
+
+#include "capsula/scene/CellPlacement.hpp"
+
+#include <capsula/core/Error.hpp>
+#include <capsula/core/Timers.hpp>
+#include <capsula/elasticity/MembraneLawFactory.hpp>
+#include <capsula/elasticity/Prestress.hpp>
+#include <capsula/mesh/CellSurfaceParameters.hpp>
+#include <capsula/operators/CellSurfaces.hpp>
+#include <capsula/operators/OperatorParameters.hpp>
+
+#include <cmath>
+#include <sstream>
+
+namespace capsula::scene {
+
+namespace core = capsula::core;
+
+namespace {
+
+std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMesh& surface)
+{
+  std::ostringstream line;
+  line << "membrane " << cell.path << ": " << cell.membraneLaw;
+  if (cell.membraneLaw == "Skalak") {
+    line << " (C = " << cell.areaDilation << ")";
+  }
+  if (cell.shearModulus != 1.0) {
+    line << ", shear modulus " << cell.shearModulus << " G";
+  }
+  line << ", " << (cell.prestress > 0.0 ? "prestressed reference, alpha = " : "unstressed at start");
+  if (cell.prestress > 0.0) {
+    line << cell.prestress;
+  }
+  line << "; mesh level " << cell.meshLevel << " (" << surface.numElements() << " elements, "
+       << surface.numNodes() << " nodes)";
+  return line.str();
+}
+
+} // namespace
+
+Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& deck,
+             const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const operators::KernelRegistry& kernels)
+    : description_(description),
+      comm_(comm),
+      membraneTimer_(core::timer("Membrane tensions and loads")),
+      velocityTimer_(core::timer("Boundary-integral velocity")),
+      constraintTimer_(core::timer("Fixed-height constraint"))
+{
+  const int n = description_.numCells();
+  core::require<core::InputError>(n >= 1, "The scene has no cell: add 'Cells/Cell 0'.");
+  core::require<core::InputError>(description_.capillaryNumber > 0.0 && std::isfinite(description_.capillaryNumber),
+                                  "'Flow/Capillary number' = ", description_.capillaryNumber,
+                                  " must be a finite number > 0.");
+  core::require<core::InputError>(description_.viscosityRatio > 0.0 && std::isfinite(description_.viscosityRatio),
+                                  "'Flow/Viscosity ratio' = ", description_.viscosityRatio,
+                                  " must be a finite number > 0.");
+
+  // Surfaces, where they start, and nothing inside anything else.
+  cells_.reserve(static_cast<std::size_t>(n));
+  std::vector<const mesh::SurfaceMesh*> placed;
+  std::vector<std::string> paths;
+  for (const auto& cell : description_.cells) {
+    cells_.push_back(mesh::buildCellSurface(cell.surface, cell.path));
+    if (description_.wall) {
+      requireAboveWall(cells_.back(), cell.path);
+    }
+    paths.push_back(cell.path);
+  }
+  for (const auto& surface : cells_) {
+    placed.push_back(&surface);
+  }
+  requireNoOverlap(placed, paths);
+
+  // Membranes.
+  const auto discretisation = operators::readDiscretisationParameters(deck.sublist("Discretisation"));
+  const auto solverParameters = operators::readSolverParameters(deck.sublist("Solver"));
+  elasticity::MembraneDiscretisation membraneDiscretisation;
+  membraneDiscretisation.numQuadraturePoints = discretisation.quadraturePoints;
+  for (int c = 0; c < n; ++c) {
+    const CellDescription& cell = description_.cells[static_cast<std::size_t>(c)];
+    elasticity::MembraneLawParameters parameters;
+    parameters.shearModulus = cell.shearModulus;
+    parameters.areaDilation = cell.areaDilation;
+    std::shared_ptr<const elasticity::MembraneLaw> law =
+      elasticity::makeMembraneLaw(cell.membraneLaw, parameters);
+    const mesh::SurfaceMesh& surface = cells_[static_cast<std::size_t>(c)];
+    std::vector<double> reference = cell.prestress > 0.0
+                                      ? elasticity::prestressedReference(surface, cell.prestress)
+                                      : surface.positions();
+    membranes_.push_back(std::make_unique<elasticity::MembraneMechanics>(
+      surface, std::move(reference), std::move(law), membraneDiscretisation));
+    terms_.push_back(describeMembrane(cell, surface));
+  }
+
+  // The boundary-integral operator for the kernel the geometry needs.
+  operators::CellSurfaces surfaces(cells_, description_.viscosityRatio);
+  initialPositions_ = surfaces.positions();
+  const std::string kernel = description_.wall ? "Wall" : "FreeSpace";
+  solver_ = kernels.create(kernel, comm_, std::move(surfaces), discretisation, solverParameters);
+  {
+    std::ostringstream line;
+    line << "kernel: " << kernel << " (" << solver_->kernelName() << "), single layer with N_Q = "
+         << discretisation.quadraturePoints << ", N_GL = " << discretisation.singularQuadraturePoints;
+    terms_.push_back(line.str());
+  }
+  {
+    std::ostringstream line;
+    if (description_.viscosityRatio == 1.0) {
+      line << "viscosity ratio 1: explicit velocity (no double layer, no linear solve)";
+    } else {
+      line << "viscosity ratio " << description_.viscosityRatio
+           << ": double layer and Belos GMRES (tolerance " << solverParameters.tolerance << ")";
+    }
+    terms_.push_back(line.str());
+  }
+  flow_.capillaryNumber = description_.capillaryNumber;
+  flow_.background = operators::LinearFlow::simpleShear(1.0);
+  {
+    std::ostringstream line;
+    line << "flow: simple shear u = (y, 0, 0), Ca = " << description_.capillaryNumber;
+    terms_.push_back(line.str());
+  }
+
+  // Constraints, only if asked for.
+  std::vector<mesh::SurfaceMesh> fixed;
+  std::vector<int> offsets;
+  for (int c = 0; c < n; ++c) {
+    if (description_.cells[static_cast<std::size_t>(c)].fixedHeight) {
+      fixed.push_back(cells_[static_cast<std::size_t>(c)]);
+      offsets.push_back(nodeOffset(c));
+      terms_.push_back("constraint: fixed centroid height of " +
+                       description_.cells[static_cast<std::size_t>(c)].path);
+    }
+  }
+  if (!fixed.empty()) {
+    fixedHeight_.emplace(std::move(fixed), std::move(offsets));
+  }
+  loads_.assign(3 * static_cast<std::size_t>(numElements()), 0.0);
+}
+
+void Scene::setPositions(double t, const std::vector<double>& positions)
+{
+  core::require(positions.size() == 3 * static_cast<std::size_t>(numNodes()), "Scene: a state of ",
+                positions.size(), " numbers for ", numNodes(), " nodes");
+  for (int c = 0; c < numCells(); ++c) {
+    const double* x = positions.data() + 3 * static_cast<std::size_t>(nodeOffset(c));
+    mesh::SurfaceMesh& surface = cells_[static_cast<std::size_t>(c)];
+    for (int i = 0; i < surface.numNodes(); ++i) {
+      const double* p = x + 3 * i;
+      core::require<core::NumericalError>(
+        std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]), "At t = ", t, " node ", i,
+        " of '", description_.cells[static_cast<std::size_t>(c)].path,
+        "' has a non-finite position: the run has become unstable. Reduce 'Time "
+        "integration/Tolerance' or refine the mesh.");
+      core::require<core::NumericalError>(
+        !description_.wall || p[1] > 0.0, "At t = ", t, " node ", i, " of '",
+        description_.cells[static_cast<std::size_t>(c)].path, "' reached the wall (y = ", p[1],
+        "). The boundary-integral model has no contact force; start the cell higher or "
+        "stop earlier.");
+    }
+    surface.setPositions(x);
+  }
+  solver_->setPositions(positions.data());
+}
+
+void Scene::computeLoads(double t)
+{
+  Teuchos::TimeMonitor guard(*membraneTimer_);
+  for (int c = 0; c < numCells(); ++c) {
+    auto& membrane = *membranes_[static_cast<std::size_t>(c)];
+    try {
+      membrane.evaluate(cells_[static_cast<std::size_t>(c)].positionData());
+    } catch (const core::NumericalError& e) {
+      throw core::NumericalError(core::message(
+        "At t = ", t, ", the membrane of '", description_.cells[static_cast<std::size_t>(c)].path,
+        "' failed: ", e.what()));
+    }
+    const auto& loads = membrane.elementLoads();
+    const std::size_t first = 3 * static_cast<std::size_t>(elementOffset(c));
+    for (std::size_t e = 0; e < loads.size(); ++e) {
+      for (int d = 0; d < 3; ++d) {
+        loads_[first + 3 * e + static_cast<std::size_t>(d)] = loads[e][d];
+      }
+    }
+  }
+}
+
+void Scene::velocity(double t, const std::vector<double>& positions, std::vector<double>& velocities)
+{
+  setPositions(t, positions);
+  computeLoads(t);
+  Teuchos::TimeMonitor guard(*velocityTimer_);
+  operators::VelocitySolution solution = solver_->nodeVelocities(loads_.data(), flow_);
+  velocities = std::move(solution.velocities);
+}
+
+void Scene::constrain(const std::vector<double>& positions, std::vector<double>& velocities)
+{
+  if (fixedHeight_) {
+    Teuchos::TimeMonitor guard(*constraintTimer_);
+    fixedHeight_->apply(positions, velocities);
+  }
+}
+
+SceneFields Scene::evaluate(double t, const std::vector<double>& positions)
+{
+  SceneFields fields;
+  fields.positions = positions;
+  setPositions(t, positions);
+  computeLoads(t);
+  {
+    Teuchos::TimeMonitor guard(*velocityTimer_);
+    operators::VelocitySolution solution = solver_->nodeVelocities(loads_.data(), flow_);
+    fields.solverVelocities = std::move(solution.velocities);
+    fields.gmresIterations = solution.iterations;
+  }
+  fields.velocities = fields.solverVelocities;
+  constrain(positions, fields.velocities);
+  fields.elementLoads = loads_;
+  fields.principalTensions.reserve(2 * static_cast<std::size_t>(numNodes()));
+  fields.stretches.reserve(2 * static_cast<std::size_t>(numNodes()));
+  for (const auto& membrane : membranes_) {
+    for (const auto& tension : membrane->nodalPrincipalTensions()) {
+      fields.principalTensions.push_back(tension.major);
+      fields.principalTensions.push_back(tension.minor);
+    }
+    for (const auto& stretch : membrane->nodalStretches()) {
+      fields.stretches.push_back(stretch.major);
+      fields.stretches.push_back(stretch.minor);
+    }
+  }
+  return fields;
+}
+
+} // namespace capsula::scene

@@ -1,0 +1,669 @@
+#include "capsula/scene/SceneRun.hpp"
+
+#include "capsula/scene/OutputMetrics.hpp"
+#include "capsula/scene/Scene.hpp"
+#include "capsula/scene/SceneDescription.hpp"
+#include "capsula/scene/SceneSnapshot.hpp"
+#include "capsula/scene/WallShearStressMap.hpp"
+
+#include <capsula/core/Deck.hpp>
+#include <capsula/core/Error.hpp>
+#include <capsula/core/RunInfo.hpp>
+#include <capsula/core/Timers.hpp>
+#include <capsula/io/Checkpoint.hpp>
+#include <capsula/io/Json.hpp>
+#include <capsula/io/MetricsCsv.hpp>
+#include <capsula/io/OutputDirectory.hpp>
+#include <capsula/io/SnapshotSeries.hpp>
+#include <capsula/timeint/TimeIntegrationParameters.hpp>
+#include <capsula/timeint/TimeIntegrator.hpp>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_oblackholestream.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <iomanip>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <sstream>
+
+namespace capsula::scene {
+
+namespace core = capsula::core;
+namespace fs = std::filesystem;
+using mesh::Vec3;
+
+namespace {
+
+// --- collective error handling ------------------------------------------------------
+
+enum class ErrorKind : int { None = 0, Input = 1, Io = 2, Other = 3 };
+
+// Runs `action` on rank 0 only; if it throws, every rank throws the same error, so no rank
+// is left waiting in a collective. Input problems become InputError (one message, exit 2).
+void onRoot(const Teuchos::Comm<int>& comm, const std::function<void()>& action)
+{
+  int kind = 0;
+  std::string message;
+  if (comm.getRank() == 0) {
+    try {
+      action();
+    } catch (const core::InputError& e) {
+      kind = static_cast<int>(ErrorKind::Input);
+      message = e.what();
+    } catch (const core::IoError& e) {
+      kind = static_cast<int>(ErrorKind::Io);
+      message = e.what();
+    } catch (const std::exception& e) {
+      kind = static_cast<int>(ErrorKind::Other);
+      message = e.what();
+    }
+  }
+  Teuchos::broadcast(comm, 0, &kind);
+  if (kind == 0) {
+    return;
+  }
+  int length = static_cast<int>(message.size());
+  Teuchos::broadcast(comm, 0, &length);
+  message.resize(static_cast<std::size_t>(length));
+  if (length > 0) {
+    Teuchos::broadcast(comm, 0, length, message.data());
+  }
+  switch (static_cast<ErrorKind>(kind)) {
+  case ErrorKind::Input:
+    throw core::InputError(message);
+  case ErrorKind::Io:
+    throw core::IoError(message);
+  default:
+    throw core::Error(message);
+  }
+}
+
+// --- restart: the deck must describe the same run ------------------------------------
+
+// The keys that may change on restart: where to stop and where to write.
+void removeRestartFreeKeys(Teuchos::ParameterList& deck)
+{
+  if (deck.isSublist("Time integration")) {
+    deck.sublist("Time integration").remove("End time", false);
+  }
+  if (deck.isSublist("Output")) {
+    deck.sublist("Output").remove("Directory", false);
+  }
+}
+
+// The first key whose value differs (or that only one list has), "" if none.
+std::string firstDifference(const Teuchos::ParameterList& a, const Teuchos::ParameterList& b,
+                            const std::string& prefix)
+{
+  for (auto it = a.begin(); it != a.end(); ++it) {
+    const std::string& name = a.name(it);
+    const std::string path = prefix.empty() ? name : prefix + "/" + name;
+    if (!b.isParameter(name)) {
+      return path;
+    }
+    if (a.isSublist(name) != b.isSublist(name)) {
+      return path;
+    }
+    if (a.isSublist(name)) {
+      const std::string inner = firstDifference(a.sublist(name), b.sublist(name), path);
+      if (!inner.empty()) {
+        return inner;
+      }
+    } else if (!a.getEntry(name).getAny(false).same(b.getEntry(name).getAny(false))) {
+      return path;
+    }
+  }
+  for (auto it = b.begin(); it != b.end(); ++it) {
+    if (!a.isParameter(b.name(it))) {
+      return prefix.empty() ? b.name(it) : prefix + "/" + b.name(it);
+    }
+  }
+  return "";
+}
+
+void requireSameRun(const Teuchos::ParameterList& current, const std::string& checkpointDeckXml,
+                    const std::string& checkpointPath)
+{
+  // Both decks pass through the same XML text, so equal values compare equal.
+  auto now = core::readDeckFromString(core::deckToXml(current, false), "the current deck");
+  auto then = core::readDeckFromString(checkpointDeckXml, checkpointPath);
+  removeRestartFreeKeys(*now);
+  removeRestartFreeKeys(*then);
+  const std::string key = firstDifference(*then, *now, "");
+  core::require<core::InputError>(
+    key.empty(), "Cannot restart from '", checkpointPath, "': the deck differs from the one the run was ",
+    "started with at '", key, "'. Only 'Time integration/End time' and 'Output/Directory' may change on ",
+    "restart (use the deck.xml written next to the checkpoint).");
+}
+
+// --- progress -------------------------------------------------------------------------
+
+std::string clock(double seconds)
+{
+  if (!std::isfinite(seconds) || seconds < 0.0) {
+    return "?";
+  }
+  const long s = std::lround(seconds);
+  std::ostringstream out;
+  out << s / 3600 << ":" << std::setw(2) << std::setfill('0') << (s / 60) % 60 << ":" << std::setw(2)
+      << std::setfill('0') << s % 60;
+  return out.str();
+}
+
+// --- the run --------------------------------------------------------------------------
+
+constexpr const char* kCheckpointFile = "checkpoint.h5";
+constexpr const char* kSnapshotBase = "cells";
+
+class Run {
+public:
+  Run(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+      const SceneRunOptions& options, const operators::KernelRegistry& kernels);
+
+  SceneRunResult execute();
+
+private:
+  bool root() const { return comm_->getRank() == 0; }
+  std::ostream& log() { return *log_; }
+  void prepareOutputDirectory();
+  void restoreFromCheckpoint();
+  void startOutputs();
+  bool observe(const timeint::IntegrationState& state);
+  void writeSummary(const std::string& status, const std::string& failure);
+  void progress(const timeint::IntegrationState& state, double lastD12);
+
+  const Teuchos::ParameterList& deck_;
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  SceneRunOptions options_;
+  std::ostream* log_;
+  Teuchos::oblackholestream quiet_;
+  SceneDescription description_;
+  std::string directory_;
+  std::unique_ptr<Scene> scene_;
+  std::unique_ptr<timeint::TimeIntegrator> integrator_;
+  timeint::IntegrationState state_;
+  OutputMetrics metrics_;
+  bool restarted_ = false;
+  io::Checkpoint restartPoint_;
+  std::vector<std::string> terms_;
+
+  // Files (rank 0 only).
+  std::optional<io::OutputDirectory> output_;
+  std::optional<io::MetricsCsv> metricsCsv_;
+  std::optional<io::MetricsCsv> probesCsv_;
+  std::optional<io::SnapshotSeries> snapshots_;
+
+  // What summary.json reports.
+  std::vector<CellSample> lastSamples_;
+  std::vector<CellSample> steadySamples_;
+  double lastTime_ = 0.0;
+  double maxVolumeDrift_ = 0.0;
+  std::optional<ElevatedStressAreas> lastWallAreas_;
+  std::int64_t outputsWritten_ = 0;
+  std::chrono::steady_clock::time_point wallStart_;
+  double simulatedStart_ = 0.0;
+  double lastD12_ = 0.0;
+};
+
+Run::Run(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+         const SceneRunOptions& options, const operators::KernelRegistry& kernels)
+    : deck_(deck),
+      comm_(comm),
+      options_(options),
+      log_(options.log && comm->getRank() == 0 ? options.log : &quiet_),
+      description_(describeScene(deck)),
+      metrics_(description_.numCells())
+{
+  directory_ = options_.outputDirectory ? *options_.outputDirectory
+               : options_.restartDirectory ? *options_.restartDirectory
+                                           : description_.output.directory;
+  core::require<core::InputError>(!directory_.empty(),
+                                  "No output directory: set 'Output/Directory' or give --output DIR.");
+  if (options_.restartDirectory) {
+    restoreFromCheckpoint();
+  }
+  scene_ = std::make_unique<Scene>(description_, deck_, comm_, kernels);
+  terms_ = scene_->terms();
+  const auto& out = description_.output;
+  if (out.wallShearStress.enabled) {
+    std::ostringstream line;
+    line << "output: wall shear stress on a grid of spacing " << out.wallShearStress.spacing << " ("
+         << out.wallShearStress.upstream << " upstream, " << out.wallShearStress.downstream
+         << " downstream, half width " << out.wallShearStress.halfWidth << "), threshold "
+         << out.wallShearStress.threshold;
+    terms_.push_back(line.str());
+  }
+  if (!out.flowProbes.empty()) {
+    terms_.push_back("output: fluid velocity at " + std::to_string(out.flowProbes.size()) + " flow probes");
+  }
+  if (out.snapshots) {
+    terms_.push_back("output: snapshots every " + std::to_string(out.snapshotStride) + " output(s)");
+  }
+  if (out.checkpoint) {
+    terms_.push_back("output: checkpoint at every output");
+  }
+
+  auto settings = timeint::timeIntegrationSettings(deck_.sublist("Time integration"));
+  // Steady state is judged on the shape at output times (see SceneRun.hpp), not on the
+  // raw node positions, which keep moving as the membrane tank-treads.
+  settings.steadyCriterion = timeint::SteadyStateCriterion::Off;
+  Scene* scene = scene_.get();
+  integrator_ = std::make_unique<timeint::TimeIntegrator>(
+    settings, [scene](double t, const std::vector<double>& y, std::vector<double>& dydt) {
+      scene->velocity(t, y, dydt);
+    });
+  if (scene_->hasConstraints()) {
+    integrator_->setStageConstraint(
+      [scene](double, const std::vector<double>& y, std::vector<double>& dydt) { scene->constrain(y, dydt); });
+  }
+}
+
+void Run::restoreFromCheckpoint()
+{
+  const std::string path = (fs::path(*options_.restartDirectory) / kCheckpointFile).string();
+  // Every rank reads the (small) checkpoint itself: no broadcast of its contents needed.
+  try {
+    restartPoint_ = io::readCheckpoint(path);
+  } catch (const core::IoError& e) {
+    throw core::InputError(core::message("--restart ", *options_.restartDirectory, ": ", e.what()));
+  }
+  requireSameRun(deck_, restartPoint_.deckXml, path);
+  timeint::StateRecord record;
+  const std::string prefix = "timeint.";
+  for (const auto& [name, value] : restartPoint_.reals) {
+    if (name.rfind(prefix, 0) == 0) {
+      record.reals[name.substr(prefix.size())] = value;
+    }
+  }
+  for (const auto& [name, value] : restartPoint_.integers) {
+    if (name.rfind(prefix, 0) == 0) {
+      record.integers[name.substr(prefix.size())] = value;
+    }
+  }
+  for (const auto& [name, value] : restartPoint_.arrays) {
+    if (name.rfind(prefix, 0) == 0) {
+      record.arrays[name.substr(prefix.size())] = value;
+    }
+  }
+  state_ = timeint::fromRecord(record, path);
+  metrics_.load(restartPoint_, path);
+  const auto outputs = restartPoint_.integers.find("scene.outputs");
+  outputsWritten_ = outputs == restartPoint_.integers.end() ? 0 : outputs->second;
+  restarted_ = true;
+}
+
+void Run::prepareOutputDirectory()
+{
+  onRoot(*comm_, [&] {
+    try {
+      output_.emplace(directory_);
+    } catch (const core::IoError& e) {
+      throw core::InputError(core::message(
+        "The output directory '", directory_, "' cannot be used (", e.what(),
+        "). Choose another with --output DIR or 'Output/Directory'."));
+    }
+    if (restarted_ && fs::path(*options_.restartDirectory) != fs::path(directory_)) {
+      // Continuing into a new directory: carry the tables over, so they hold the whole run.
+      for (const char* table : {"metrics.csv", "probes.csv"}) {
+        const fs::path from = fs::path(*options_.restartDirectory) / table;
+        if (fs::exists(from)) {
+          fs::copy_file(from, fs::path(directory_) / table, fs::copy_options::overwrite_existing);
+        }
+      }
+    }
+    io::RunMetadata metadata;
+    metadata.application = options_.application;
+    metadata.deckSource = options_.deckSource;
+    metadata.ranks = comm_->getSize();
+    output_->writeRunMetadata(deck_, metadata);
+  });
+}
+
+void Run::startOutputs()
+{
+  onRoot(*comm_, [&] {
+    const auto columns = metricsColumns(description_.output.wallShearStress.enabled);
+    std::vector<std::string> probeColumns{"time"};
+    for (std::size_t p = 0; p < description_.output.flowProbes.size(); ++p) {
+      for (const char* axis : {"u", "v", "w"}) {
+        probeColumns.push_back("probe" + std::to_string(p) + "_" + axis);
+      }
+    }
+    const std::string metricsPath = output_->file("metrics.csv");
+    const std::string probesPath = output_->file("probes.csv");
+    const bool probes = !description_.output.flowProbes.empty();
+    if (restarted_) {
+      metricsCsv_.emplace(io::MetricsCsv::resume(metricsPath, columns, state_.time));
+      if (probes) {
+        probesCsv_.emplace(io::MetricsCsv::resume(probesPath, probeColumns, state_.time));
+      }
+      if (description_.output.snapshots) {
+        snapshots_.emplace(io::SnapshotSeries::resume(directory_, kSnapshotBase, state_.time));
+      }
+    } else {
+      metricsCsv_.emplace(metricsPath, columns);
+      if (probes) {
+        probesCsv_.emplace(probesPath, probeColumns);
+      }
+      if (description_.output.snapshots) {
+        snapshots_.emplace(directory_, kSnapshotBase);
+      }
+    }
+  });
+}
+
+void Run::progress(const timeint::IntegrationState& state, double lastD12)
+{
+  const double end = integrator_->settings().endTime;
+  const double elapsed =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart_).count();
+  const double done = state.time - simulatedStart_;
+  const double eta = done > 0.0 ? elapsed / done * (end - state.time)
+                                 : std::numeric_limits<double>::quiet_NaN();
+  std::ostringstream line;
+  line << std::setprecision(4) << "t = " << state.time << " / " << end << " ("
+       << std::setprecision(3) << 100.0 * state.time / end << "%)  step " << state.statistics.acceptedSteps
+       << "  dt " << std::scientific << std::setprecision(2) << state.statistics.lastStep
+       << std::defaultfloat << std::setprecision(4) << "  D12 " << lastD12 << "  ETA " << clock(eta);
+  log() << line.str() << std::endl;
+}
+
+bool Run::observe(const timeint::IntegrationState& state)
+{
+  Teuchos::TimeMonitor metricsGuard(*core::timer("Outputs"));
+  const double t = state.time;
+  SceneFields fields = scene_->evaluate(t, state.y);
+  std::vector<CellSample> samples = metrics_.record(t, *scene_, fields);
+
+  // Wall shear stress on a grid that follows the cells (collective).
+  const auto& wallOutput = description_.output.wallShearStress;
+  std::optional<WallGrid> grid;
+  std::optional<operators::WallShearStress> wallStress;
+  if (wallOutput.enabled) {
+    Vec3 centre = Vec3::Zero();
+    for (const auto& s : samples) {
+      centre += s.shape.centroid / static_cast<double>(samples.size());
+    }
+    grid = WallGrid::around(centre[0], centre[2], wallOutput.upstream, wallOutput.downstream,
+                            wallOutput.halfWidth, wallOutput.spacing);
+    // Stencil step: 1/20 of the gap under the lowest node (the stencil reaches 4 steps up,
+    // a fifth of the gap), never more than a fifth of the grid spacing.
+    double gap = HUGE_VAL;
+    for (std::size_t k = 1; k < state.y.size(); k += 3) {
+      gap = std::min(gap, state.y[k]);
+    }
+    const double step = std::min(gap / 20.0, wallOutput.spacing / 5.0);
+    wallStress = wallShearStressOnGrid(scene_->solver(), *grid, step, fields.elementLoads.data(),
+                                       fields.solverVelocities.data(), scene_->flow());
+    lastWallAreas_ = elevatedStressAreas(*grid, wallStress->magnitude, centre[0], wallOutput.threshold);
+  }
+  std::vector<double> probeVelocities;
+  if (!description_.output.flowProbes.empty()) {
+    std::vector<double> points;
+    for (const auto& p : description_.output.flowProbes) {
+      points.insert(points.end(), {p[0], p[1], p[2]});
+    }
+    probeVelocities = scene_->solver().flowVelocity(points, fields.elementLoads.data(),
+                                                    fields.solverVelocities.data(), scene_->flow());
+  }
+
+  double shapeRate = 0.0;
+  for (const auto& s : samples) {
+    shapeRate = std::max(shapeRate, s.shapeChangeRate);
+    maxVolumeDrift_ = std::max(maxVolumeDrift_, std::abs(s.volumeChange));
+  }
+  const double steadyTolerance = integrator_->settings().steadyTolerance;
+  const bool steady = steadyTolerance > 0.0 && t > state.outputOrigin && shapeRate < steadyTolerance;
+  lastSamples_ = samples;
+  lastTime_ = t;
+  lastD12_ = samples.front().shape.deformation.D12;
+  if (steady) {
+    steadySamples_ = samples;
+  }
+  const bool snapshotDue = description_.output.snapshots && outputsWritten_ % description_.output.snapshotStride == 0;
+  ++outputsWritten_;
+
+  onRoot(*comm_, [&] {
+    Teuchos::TimeMonitor filesGuard(*core::timer("Output files"));
+    for (int c = 0; c < scene_->numCells(); ++c) {
+      const CellSample& s = samples[static_cast<std::size_t>(c)];
+      const auto& d = s.shape.deformation;
+      std::vector<double> row{t,
+                              static_cast<double>(state.statistics.acceptedSteps),
+                              state.statistics.lastStep,
+                              d.D12, d.D13, d.D23,
+                              s.shape.centroid[0], s.shape.centroid[1], s.shape.centroid[2],
+                              s.slipVelocity(), s.migrationVelocity(),
+                              s.shape.volume, s.shape.area, s.shape.reducedVolume, s.shape.footprintXZ,
+                              s.stress.mean,
+                              static_cast<double>(c), d.inclinationDegrees, s.splineVelocity[2],
+                              s.shape.centroid[1] - s.instantVelocity[0], s.instantVelocity[1],
+                              s.rotation[0], s.rotation[1], s.rotation[2],
+                              s.volumeChange, s.areaChange, s.stress.maximum,
+                              s.meanStressIncrease, s.maximumStressIncrease, s.shapeChangeRate,
+                              static_cast<double>(s.gmresIterations)};
+      if (lastWallAreas_ && wallOutput.enabled) {
+        row.insert(row.end(), {lastWallAreas_->minimum, lastWallAreas_->maximum, lastWallAreas_->upstream,
+                               lastWallAreas_->downstream});
+      }
+      metricsCsv_->appendRow(row);
+    }
+    if (probesCsv_) {
+      std::vector<double> row{t};
+      row.insert(row.end(), probeVelocities.begin(), probeVelocities.end());
+      probesCsv_->appendRow(row);
+    }
+    if (snapshotDue) {
+      io::Snapshot snapshot = sceneSnapshot(*scene_, fields, t, state.statistics.acceptedSteps);
+      if (grid) {
+        snapshot.blocks.push_back(wallSnapshotBlock(*grid, *wallStress));
+      }
+      snapshots_->write(snapshot);
+    }
+    if (description_.output.checkpoint) {
+      io::Checkpoint checkpoint;
+      checkpoint.time = t;
+      checkpoint.step = state.statistics.acceptedSteps;
+      checkpoint.stepSize = state.statistics.lastStep;
+      checkpoint.deckXml = core::deckToXml(deck_, false);
+      const timeint::StateRecord record = timeint::toRecord(state);
+      for (const auto& [name, value] : record.reals) {
+        checkpoint.reals["timeint." + name] = value;
+      }
+      for (const auto& [name, value] : record.integers) {
+        checkpoint.integers["timeint." + name] = value;
+      }
+      for (const auto& [name, value] : record.arrays) {
+        checkpoint.arrays["timeint." + name] = value;
+      }
+      metrics_.save(checkpoint);
+      checkpoint.integers["scene.outputs"] = outputsWritten_;
+      io::writeCheckpoint(output_->file(kCheckpointFile), checkpoint);
+    }
+    writeSummary(steady ? "steady" : "running", "");
+  });
+  progress(state, lastD12_);
+  return steady;
+}
+
+io::JsonValue sampleJson(const CellSample& s)
+{
+  io::JsonValue v = io::JsonValue::object();
+  const auto& d = s.shape.deformation;
+  v["D12"] = d.D12;
+  v["D13"] = d.D13;
+  v["D23"] = d.D23;
+  v["inclination (degrees)"] = d.inclinationDegrees;
+  v["centroid"] = io::JsonValue::array({s.shape.centroid[0], s.shape.centroid[1], s.shape.centroid[2]});
+  v["u_slip"] = s.slipVelocity();
+  v["u_migr"] = s.migrationVelocity();
+  v["u_slip (instantaneous)"] = s.shape.centroid[1] - s.instantVelocity[0];
+  v["u_migr (instantaneous)"] = s.instantVelocity[1];
+  v["rotation rate"] = io::JsonValue::array({s.rotation[0], s.rotation[1], s.rotation[2]});
+  v["volume"] = s.shape.volume;
+  v["area"] = s.shape.area;
+  v["volume change"] = s.volumeChange;
+  v["area change"] = s.areaChange;
+  v["reduced volume"] = s.shape.reducedVolume;
+  v["footprint A_xz"] = s.shape.footprintXZ;
+  v["mean shear stress"] = s.stress.mean;
+  v["max shear stress"] = s.stress.maximum;
+  v["mean shear stress increase"] = s.meanStressIncrease;
+  v["max shear stress increase"] = s.maximumStressIncrease;
+  v["shape change rate"] = s.shapeChangeRate;
+  return v;
+}
+
+void Run::writeSummary(const std::string& status, const std::string& failure)
+{
+  io::JsonValue summary = io::JsonValue::object();
+  summary["application"] = options_.application;
+  summary["status"] = status;
+  if (!failure.empty()) {
+    summary["failure"] = failure;
+  }
+  summary["time"] = lastTime_;
+  summary["version"]["capsula"] = core::capsulaVersion();
+  summary["version"]["git sha"] = core::gitSha();
+  summary["version"]["trilinos"] = core::trilinosVersion();
+  summary["ranks"] = comm_->getSize();
+  summary["restarted"] = restarted_;
+  for (const auto& term : terms_) {
+    summary["terms"].append(term);
+  }
+  const auto& stats = state_.statistics;
+  summary["steps"]["accepted"] = static_cast<long long>(stats.acceptedSteps);
+  summary["steps"]["rejected"] = static_cast<long long>(stats.rejectedSteps);
+  summary["steps"]["rhs evaluations"] = static_cast<long long>(stats.rhsEvaluations);
+  summary["steps"]["smallest"] = stats.smallestStep;
+  summary["steps"]["largest"] = stats.largestStep;
+  summary["max volume drift"] = maxVolumeDrift_;
+  for (std::size_t c = 0; c < lastSamples_.size(); ++c) {
+    io::JsonValue cell = io::JsonValue::object();
+    cell["name"] = description_.cells[c].path;
+    cell["final"] = sampleJson(lastSamples_[c]);
+    if (!steadySamples_.empty()) {
+      cell["steady"] = sampleJson(steadySamples_[c]);
+    }
+    summary["cells"].append(cell);
+  }
+  if (lastWallAreas_) {
+    summary["wall shear stress"]["minimum"] = lastWallAreas_->minimum;
+    summary["wall shear stress"]["maximum"] = lastWallAreas_->maximum;
+    summary["wall shear stress"]["elevated area upstream"] = lastWallAreas_->upstream;
+    summary["wall shear stress"]["elevated area downstream"] = lastWallAreas_->downstream;
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart_).count();
+  summary["timings"]["wall seconds (this process)"] = wall;
+  for (const char* name : {"Membrane tensions and loads", "Boundary-integral velocity", "Single layer",
+                           "Viscosity-ratio GMRES solve", "Fixed-height constraint", "Flow velocity at points",
+                           "Outputs", "Output files"}) {
+    summary["timings"][name] = core::timer(name)->totalElapsedTime();
+  }
+  summary["deck"] = core::deckToXml(deck_, false);
+  io::writeJsonFile(output_->file("summary.json"), summary);
+}
+
+SceneRunResult Run::execute()
+{
+  wallStart_ = std::chrono::steady_clock::now();
+  prepareOutputDirectory();
+  log() << "Output directory: " << directory_ << "\n";
+  log() << "Terms built:\n";
+  for (const auto& term : terms_) {
+    log() << "  " << term << "\n";
+  }
+  startOutputs();
+
+  const double end = integrator_->settings().endTime;
+  timeint::OutputSchedule schedule;
+  schedule.interval = description_.output.interval;
+  bool steady = false;
+  try {
+    if (!restarted_) {
+      state_ = integrator_->start(0.0, scene_->initialPositions());
+      state_.nextOutput = 1;
+      observe(state_);   // never steady: the test needs t > 0
+    } else {
+      steady = state_.steady;
+      log() << "Restarted from " << *options_.restartDirectory << " at t = " << state_.time << ", step "
+            << state_.statistics.acceptedSteps << "\n";
+    }
+    simulatedStart_ = state_.time;
+    const int progressSteps = description_.output.progressSteps;
+    while (!steady && state_.time < end) {
+      while (integrator_->outputTime(state_.outputOrigin, state_.nextOutput, schedule) <= state_.time) {
+        ++state_.nextOutput;
+      }
+      const double tOut = integrator_->outputTime(state_.outputOrigin, state_.nextOutput, schedule);
+      while (state_.time < tOut) {
+        integrator_->step(state_, tOut);
+        if (state_.statistics.acceptedSteps % progressSteps == 0 && state_.time < tOut) {
+          progress(state_, lastD12_);
+        }
+      }
+      ++state_.nextOutput;
+      steady = observe(state_);
+      state_.steady = steady;
+    }
+  } catch (const std::exception& e) {
+    // Record the failure next to the last good outputs, then let the app report it.
+    if (root() && output_) {
+      try {
+        writeSummary("failed", e.what());
+      } catch (const std::exception&) {
+        // The original error is the one to report.
+      }
+    }
+    throw;
+  }
+  const std::string status = steady ? "steady" : "finished";
+  onRoot(*comm_, [&] { writeSummary(status, ""); });
+  if (steady) {
+    log() << "Steady state at t = " << state_.time << ": the shape changes slower than "
+          << integrator_->settings().steadyTolerance << "\n";
+  }
+  log() << "Done: " << status << " at t = " << state_.time << " after " << state_.statistics.acceptedSteps
+        << " steps (" << state_.statistics.rejectedSteps << " rejected); outputs in " << directory_ << "\n";
+  SceneRunResult result;
+  result.status = status;
+  result.time = state_.time;
+  result.acceptedSteps = state_.statistics.acceptedSteps;
+  result.outputDirectory = directory_;
+  result.terms = terms_;
+  return result;
+}
+
+} // namespace
+
+std::vector<std::string> metricsColumns(bool wallShearStress)
+{
+  std::vector<std::string> columns{
+    "time", "step", "dt", "D12", "D13", "D23", "x_c", "y_c", "z_c", "u_slip", "u_migr", "volume", "area",
+    "reduced_volume", "footprint_xz", "mean_shear_stress", "cell", "inclination_deg", "w_c",
+    "u_slip_instant", "u_migr_instant", "omega_x", "omega_y", "omega_z", "volume_change", "area_change",
+    "max_shear_stress", "mean_shear_stress_increase", "max_shear_stress_increase", "shape_change_rate",
+    "gmres_iterations"};
+  if (wallShearStress) {
+    columns.insert(columns.end(),
+                   {"wall_stress_min", "wall_stress_max", "wall_area_upstream", "wall_area_downstream"});
+  }
+  return columns;
+}
+
+SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck,
+                        const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const SceneRunOptions& options,
+                        const operators::KernelRegistry& kernels)
+{
+  Run run(validatedDeck, comm, options, kernels);
+  return run.execute();
+}
+
+} // namespace capsula::scene

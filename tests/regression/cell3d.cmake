@@ -1,0 +1,156 @@
+# cell3d: each class of deck in input/cell3d/ run for a few steps at mesh level 1 on 2 ranks,
+# restart and rank-count invariance, and the inputs that must stop with a clear message.
+#
+# Golden numbers: the regression runs take fixed RK4 steps, so nothing but round-off and a
+# deliberate change of the discretisation moves them. Round-off of reordered sums moves
+# these O(0.01-1) quantities by ~1e-13; a change of a formula, a quadrature rule or a
+# default moves them by 1e-6 or more. Tolerance: 1e-8 absolute (1e-7 for the wall stress,
+# a difference quotient over a step of ~0.03, which amplifies round-off ~100 times).
+set(_decks ${PROJECT_SOURCE_DIR}/input/cell3d)
+set(_out ${CMAKE_CURRENT_BINARY_DIR}/cell3d)
+set(_level1 --set "Cells/Cell 0/Mesh level=1")
+
+# cell3d_regression(NAME DECK STEP END EXPECTATION...): RK4 steps of STEP up to END.
+function(cell3d_regression name deck step end)
+  set(dir ${_out}/${name})
+  capsula_add_mpi_command_test(regression_cell3d_${name}
+    COMMAND $<TARGET_FILE:cell3d> ${_decks}/${deck} --output ${dir} ${_level1}
+            --set "Time integration/Method=RK4" --set "Time integration/Initial step=${step}"
+            --set "Time integration/End time=${end}" --set "Output/Interval=${end}"
+    LABELS regression TIMEOUT 300)
+  set_tests_properties(regression_cell3d_${name} PROPERTIES FIXTURES_SETUP cell3d_${name})
+  add_test(NAME regression_cell3d_${name}_golden COMMAND check_metrics expect ${dir}/metrics.csv 0 ${ARGN})
+  set_tests_properties(regression_cell3d_${name}_golden PROPERTIES
+    FIXTURES_REQUIRED cell3d_${name} LABELS "mpi;regression")
+endfunction()
+
+cell3d_regression(demo demo.xml 0.01 0.05
+  D12=0.024874638191521116:1e-8 y_c=1.60000289241575:1e-8 volume=4.179536650752334:1e-8
+  mean_shear_stress=0.1928351508551855:1e-8 u_slip_instant=0.01098929824211825:1e-8
+  footprint_xz=3.135804919332752:1e-8 wall_stress_max=1.0521445281497956:1e-7)
+cell3d_regression(heights heights/Ca0.3-C2.5-prestress5-h1.6.xml 0.01 0.05
+  D12=0.024388187235848405:1e-8 y_c=1.6000063312935082:1e-8 volume=4.17894103378089:1e-8
+  mean_shear_stress=1.3896552671276543:1e-8 u_slip_instant=0.016622348022227396:1e-8
+  wall_stress_max=1.0866335231740896:1e-7)
+cell3d_regression(fixed_height fixed-height/Ca0.9-C0.5-prestress0.xml 0.01 0.05
+  D12=0.024853542415027827:1e-8 y_c=1.2499999958629069:1e-8 volume=4.179537568795478:1e-8
+  mean_shear_stress=0.11679021069656541:1e-8 u_slip_instant=0.004393438472415356:1e-8
+  wall_stress_max=1.0396123270435926:1e-7)
+cell3d_regression(unbounded unbounded/Ca0.9-C1-prestress0.xml 0.01 0.05
+  D12=0.024787597137108635:1e-8 y_c=0:1e-8 volume=4.179537465422:1e-8
+  mean_shear_stress=0.14763041042456387:1e-8 u_slip_instant=0:1e-8)
+cell3d_regression(lac2005 validation/lac2005-skalak-Ca1.8-prestress2.5.xml 0.01 0.05
+  D12=0.024840779776461663:1e-8 volume=4.179515098360295:1e-8 mean_shear_stress=0.3576192135907387:1e-8)
+cell3d_regression(lac2004 validation/lac2004-neohookean-Ca0.6.xml 0.01 0.05
+  D12=0.02470592582326617:1e-8 volume=4.179537639801025:1e-8 mean_shear_stress=0.1428819094221299:1e-8)
+# Ca = 0.01 is stiff: steps of 2e-4.
+cell3d_regression(goldman validation/goldman-rigid-h1.5431.xml 0.0002 0.002
+  D12=0.0009844098773576363:1e-8 y_c=1.5430999999897461:1e-8 volume=4.179532626456955:1e-8
+  mean_shear_stress=0.00506906860629244:1e-8 u_slip_instant=0.011605418659432765:1e-8)
+
+# The same adaptive (RKF45) run on 1 and 2 ranks: every rank computes whole rows of the
+# boundary-integral equation, so the trajectories agree to round-off (1e-12 relative).
+set(_short ${_level1} --set "Time integration/End time=0.3" --set "Output/Interval=0.1")
+add_test(NAME regression_cell3d_one_rank
+  COMMAND cell3d ${_decks}/demo.xml --output ${_out}/one_rank ${_short})
+set_tests_properties(regression_cell3d_one_rank PROPERTIES
+  FIXTURES_SETUP cell3d_ranks LABELS "mpi;regression")
+capsula_add_mpi_command_test(regression_cell3d_two_ranks
+  COMMAND $<TARGET_FILE:cell3d> ${_decks}/demo.xml --output ${_out}/two_ranks ${_short}
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_cell3d_two_ranks PROPERTIES FIXTURES_SETUP cell3d_ranks)
+add_test(NAME regression_cell3d_ranks_agree
+  COMMAND check_metrics same ${_out}/one_rank/metrics.csv ${_out}/two_ranks/metrics.csv 1e-12)
+set_tests_properties(regression_cell3d_ranks_agree PROPERTIES
+  FIXTURES_REQUIRED cell3d_ranks LABELS "mpi;regression")
+
+# Restart on 2 ranks: stop at t = 0.1, continue to 0.3, compare with the uninterrupted run
+# (two_ranks above): bit for bit, tolerance 0.
+capsula_add_mpi_command_test(regression_cell3d_restart_first_half
+  COMMAND $<TARGET_FILE:cell3d> ${_decks}/demo.xml --output ${_out}/restarted ${_level1}
+          --set "Time integration/End time=0.1" --set "Output/Interval=0.1"
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_cell3d_restart_first_half PROPERTIES FIXTURES_SETUP cell3d_restart_half)
+capsula_add_mpi_command_test(regression_cell3d_restart_second_half
+  COMMAND $<TARGET_FILE:cell3d> ${_decks}/demo.xml --restart ${_out}/restarted ${_short}
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_cell3d_restart_second_half PROPERTIES
+  FIXTURES_REQUIRED cell3d_restart_half FIXTURES_SETUP cell3d_restart)
+add_test(NAME regression_cell3d_restart_reproduces
+  COMMAND check_metrics same ${_out}/two_ranks/metrics.csv ${_out}/restarted/metrics.csv 0)
+set_tests_properties(regression_cell3d_restart_reproduces PROPERTIES
+  FIXTURES_REQUIRED "cell3d_restart;cell3d_ranks" LABELS "mpi;regression")
+
+# Inputs that must stop before any work, naming the cause (label app).
+function(cell3d_rejects name expected)
+  add_test(NAME app_cell3d_rejects_${name} COMMAND cell3d ${ARGN})
+  set_tests_properties(app_cell3d_rejects_${name} PROPERTIES LABELS app PASS_REGULAR_EXPRESSION "${expected}")
+endfunction()
+set(_demo ${_decks}/demo.xml --output ${_out}/rejected)
+cell3d_rejects(cell_crossing_the_wall "'Cells/Cell 0' crosses the wall: node [0-9]+ lies at y = -0.1"
+  ${_demo} ${_level1} --set "Cells/Cell 0/Center={0, 0.9, 0}")
+cell3d_rejects(zero_capillary_number "'Flow/Capillary number' = 0 is invalid"
+  ${_demo} --set "Flow/Capillary number=0")
+cell3d_rejects(negative_area_dilation "'Cells/Cell 0/Area dilation C' = -1 is invalid"
+  ${_demo} --set "Cells/Cell 0/Area dilation C=-1")
+cell3d_rejects(negative_shear_modulus "'Cells/Cell 0/Shear modulus' = -2 is invalid"
+  ${_demo} --set "Cells/Cell 0/Shear modulus=-2")
+cell3d_rejects(unknown_membrane_law "'Cells/Cell 0/Membrane law'.*NeoHookean, Skalak"
+  ${_demo} --set "Cells/Cell 0/Membrane law=Hooke")
+cell3d_rejects(mesh_level_out_of_range "'Cells/Cell 0/Mesh level' = 6 is invalid"
+  ${_demo} --set "Cells/Cell 0/Mesh level=6")
+cell3d_rejects(overlapping_cells "'Cells/Cell 0' and 'Cells/Cell 1' overlap"
+  ${CMAKE_CURRENT_SOURCE_DIR}/decks/overlapping-cells.xml --output ${_out}/rejected)
+cell3d_rejects(unwritable_output_directory "The output directory '.*CMakeLists.txt/out' cannot be used"
+  ${_decks}/demo.xml --output ${CMAKE_CURRENT_SOURCE_DIR}/CMakeLists.txt/out ${_level1})
+
+# A run that fails mid-way (RK4 steps far too large for the membrane) names the cause and
+# time, and keeps its last checkpoint and outputs, with the failure in summary.json.
+set(_failed ${_out}/failed_run)
+add_test(NAME app_cell3d_failure_mid_run
+  COMMAND cell3d ${_decks}/demo.xml --output ${_failed} ${_level1} --set "Flow/Capillary number=0.05"
+          --set "Time integration/Method=RK4" --set "Time integration/Initial step=0.5"
+          --set "Output/Interval=0.5" --set "Output/Wall shear stress/Enabled=false")
+set_tests_properties(app_cell3d_failure_mid_run PROPERTIES LABELS app FIXTURES_SETUP cell3d_failed
+  PASS_REGULAR_EXPRESSION "error: At t = [0-9.]+, the membrane of 'Cells/Cell 0' failed: the membrane is folded")
+add_test(NAME app_cell3d_failure_keeps_outputs
+  COMMAND check_metrics expect ${_failed}/metrics.csv 0 time=0:0 volume=4.1795326:1e-6)
+set_tests_properties(app_cell3d_failure_keeps_outputs PROPERTIES LABELS app FIXTURES_REQUIRED cell3d_failed)
+add_test(NAME app_cell3d_failure_in_summary COMMAND ${CMAKE_COMMAND} -E cat ${_failed}/summary.json)
+set_tests_properties(app_cell3d_failure_in_summary PROPERTIES LABELS app FIXTURES_REQUIRED cell3d_failed
+  PASS_REGULAR_EXPRESSION "\"status\": \"failed\",[^}]*\"failure\": \"At t = ")
+add_test(NAME app_cell3d_failure_keeps_checkpoint COMMAND ${CMAKE_COMMAND} -E md5sum ${_failed}/checkpoint.h5)
+set_tests_properties(app_cell3d_failure_keeps_checkpoint PROPERTIES LABELS app FIXTURES_REQUIRED cell3d_failed)
+
+# Fast versions of the validation runs of utils/validate-cell3d.sh (docs/validation-cell3d.md),
+# 2 ranks, mesh level 2, ~10 s each (labels mpi, validation).
+# cell3d_validation(NAME DECK END EXPECTATION...)
+function(cell3d_validation name deck end)
+  set(dir ${_out}/validation_${name})
+  capsula_add_mpi_command_test(validation_cell3d_${name}
+    COMMAND $<TARGET_FILE:cell3d> ${_decks}/validation/${deck} --output ${dir}
+            --set "Cells/Cell 0/Mesh level=2" --set "Time integration/End time=${end}"
+            --set "Output/Snapshots=false"
+    LABELS validation TIMEOUT 600)
+  set_tests_properties(validation_cell3d_${name} PROPERTIES FIXTURES_SETUP cell3d_validation_${name})
+  add_test(NAME validation_cell3d_${name}_check COMMAND check_metrics expect ${dir}/metrics.csv 0 ${ARGN})
+  set_tests_properties(validation_cell3d_${name}_check PROPERTIES
+    FIXTURES_REQUIRED cell3d_validation_${name} LABELS "mpi;validation")
+endfunction()
+
+# Lac & Barthes-Biesel (2005): D12 = 0.547 within 2% (level 2 at t = 4 is on the plateau of
+# the level-3 run; measured 0.546); the volume may not drift by 0.3% (the thesis's bound).
+cell3d_validation(lac2005 lac2005-skalak-Ca1.8-prestress2.5.xml 4
+  D12=0.547:0.01094 volume_change=0:0.003)
+# Small deformation (Barthes-Biesel & Rallison 1981): D12 = 25/12 Ca = 0.0208333 at Ca = 0.01.
+# Level 2 is 2.0% high (level 3: 0.2%): 3% allowed. Volume drift measured 2e-6.
+cell3d_validation(small_deformation small-deformation-neohookean-Ca0.01.xml 0.3
+  D12=0.0208333:0.000625 volume_change=0:0.0003)
+# Goldman, Cox & Brenner (1967), far from the wall (h/a = 10.07) where their reflection
+# solution u_slip = 5/16 (a/h)^2 = 0.003083, Omega = -(1 - 5/16 (a/h)^3)/2 = -0.49985 holds to
+# O((a/h)^2) = 1% of the slip. Measured at Ca = 0.01: slip 1.0% low (3% allowed: the
+# reflection error plus the capsule's O(Ca) deformation), both from the surface velocity and
+# from the spline of the centroid; rotation 0.15% slower (0.3% allowed: a capsule at Ca = 0.01
+# tank-treads slightly slower than a rigid sphere).
+cell3d_validation(goldman goldman-rigid-h10.0677.xml 0.3
+  u_slip_instant=0.003083:0.0000925 u_slip=0.003083:0.0000925 omega_z=-0.49985:0.0015)

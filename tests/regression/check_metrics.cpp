@@ -1,0 +1,113 @@
+// check_metrics: compares metrics.csv tables in the regression tests.
+//
+//   check_metrics expect FILE CELL COLUMN=VALUE:TOLERANCE...
+//       The last row of cell CELL (column "cell") must have |COLUMN - VALUE| <= TOLERANCE.
+//   check_metrics same FILE_A FILE_B RELATIVE_TOLERANCE
+//       Same columns and rows; every number within RELATIVE_TOLERANCE * max(1, |a|, |b|).
+//
+// Prints every comparison; exits 0 if all pass, 1 otherwise, 2 on a usage error.
+#include <capsula/core/Error.hpp>
+#include <capsula/io/MetricsCsv.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+namespace {
+
+namespace io = capsula::io;
+
+std::size_t columnIndex(const io::CsvTable& table, const std::string& name, const std::string& file)
+{
+  const auto it = std::find(table.columns.begin(), table.columns.end(), name);
+  if (it == table.columns.end()) {
+    throw capsula::core::InputError("no column '" + name + "' in " + file);
+  }
+  return static_cast<std::size_t>(it - table.columns.begin());
+}
+
+int expect(int argc, char** argv)
+{
+  const std::string file = argv[2];
+  const double cell = std::atof(argv[3]);
+  const io::CsvTable table = io::readCsvTable(file);
+  const std::size_t cellColumn = columnIndex(table, "cell", file);
+  const std::vector<double>* last = nullptr;
+  for (const auto& row : table.rows) {
+    if (row[cellColumn] == cell) {
+      last = &row;
+    }
+  }
+  if (!last) {
+    std::cerr << "no row of cell " << cell << " in " << file << "\n";
+    return 1;
+  }
+  bool ok = true;
+  for (int k = 4; k < argc; ++k) {
+    const std::string spec = argv[k];
+    const auto equals = spec.find('='), colon = spec.find(':');
+    if (equals == std::string::npos || colon == std::string::npos || colon < equals) {
+      std::cerr << "bad expectation '" << spec << "' (COLUMN=VALUE:TOLERANCE)\n";
+      return 2;
+    }
+    const std::string name = spec.substr(0, equals);
+    const double value = std::atof(spec.substr(equals + 1, colon - equals - 1).c_str());
+    const double tolerance = std::atof(spec.substr(colon + 1).c_str());
+    const double actual = (*last)[columnIndex(table, name, file)];
+    const bool pass = std::abs(actual - value) <= tolerance;
+    ok = ok && pass;
+    std::cout << (pass ? "ok    " : "FAIL  ") << name << " = " << actual << ", expected " << value
+              << " +- " << tolerance << "\n";
+  }
+  return ok ? 0 : 1;
+}
+
+int same(char** argv)
+{
+  const io::CsvTable a = io::readCsvTable(argv[2]);
+  const io::CsvTable b = io::readCsvTable(argv[3]);
+  const double tolerance = std::atof(argv[4]);
+  if (a.columns != b.columns || a.rows.size() != b.rows.size()) {
+    std::cout << "FAIL  the tables differ in shape: " << a.rows.size() << " and " << b.rows.size() << " rows\n";
+    return 1;
+  }
+  double worst = 0.0;
+  std::string where = "nowhere";
+  for (std::size_t r = 0; r < a.rows.size(); ++r) {
+    for (std::size_t c = 0; c < a.columns.size(); ++c) {
+      const double x = a.rows[r][c], y = b.rows[r][c];
+      const double difference = std::abs(x - y) / std::max({1.0, std::abs(x), std::abs(y)});
+      if (difference > worst || (std::isnan(x) != std::isnan(y))) {
+        worst = std::isnan(x) != std::isnan(y) ? HUGE_VAL : difference;
+        where = "row " + std::to_string(r + 1) + " column " + a.columns[c];
+      }
+    }
+  }
+  const bool pass = worst <= tolerance;
+  std::cout << (pass ? "ok    " : "FAIL  ") << a.rows.size() << " rows, largest relative difference " << worst
+            << " at " << where << " (allowed " << tolerance << ")\n";
+  return pass ? 0 : 1;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try {
+    const std::string mode = argc > 1 ? argv[1] : "";
+    if (mode == "expect" && argc >= 5) {
+      return expect(argc, argv);
+    }
+    if (mode == "same" && argc == 5) {
+      return same(argv);
+    }
+    std::cerr << "usage: check_metrics expect FILE CELL COLUMN=VALUE:TOLERANCE...\n"
+                 "       check_metrics same FILE_A FILE_B RELATIVE_TOLERANCE\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "check_metrics: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,47 @@
+#pragma once
+// Small validated decks for the scene tests: level-0/1 spheres, short runs.
+#include <capsula/core/Deck.hpp>
+#include <capsula/scene/SceneParameters.hpp>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <string>
+#include <vector>
+
+namespace capsula::scene::testing {
+
+/// An Array(double) deck value.
+inline Teuchos::Array<double> realArray(const std::vector<double>& values)
+{
+  return Teuchos::Array<double>(values.begin(), values.end());
+}
+
+/// A deck with one sphere of the given mesh level at height `height` (centre y), wall on
+/// or off, the other keys at their defaults unless `tweak` changes them. Validated.
+template <typename Tweak>
+Teuchos::RCP<Teuchos::ParameterList> smallDeck(int level, double height, bool wall, Tweak&& tweak)
+{
+  auto deck = Teuchos::rcp(new Teuchos::ParameterList("test"));
+  deck->sublist("Flow").set("Capillary number", 0.3);
+  deck->sublist("Wall").set("Enabled", wall);
+  auto& cell = deck->sublist("Cells").sublist("Cell 0");
+  cell.set("Center", realArray({0.0, height, 0.0}));
+  cell.set("Mesh level", level);
+  // The thesis practice (no adaptive near-singular integration) keeps the tests fast.
+  deck->sublist("Discretisation").set("Near-singular distance", 0.0);
+  deck->sublist("Time integration").set("End time", 0.2);
+  deck->sublist("Time integration").set("Initial step", 0.02);
+  deck->sublist("Time integration").set("Tolerance", 1e-4);
+  deck->sublist("Output").set("Interval", 0.1);
+  tweak(*deck);
+  core::validateDeck(*deck, *validSceneParameters(*deck, "test"), "test deck");
+  return deck;
+}
+
+inline Teuchos::RCP<Teuchos::ParameterList> smallDeck(int level, double height, bool wall)
+{
+  return smallDeck(level, height, wall, [](Teuchos::ParameterList&) {});
+}
+
+} // namespace capsula::scene::testing

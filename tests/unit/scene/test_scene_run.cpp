@@ -1,0 +1,165 @@
+#include "SceneTestDecks.hpp"
+
+#include <capsula/core/Error.hpp>
+#include <capsula/core/Timers.hpp>
+#include <capsula/io/MetricsCsv.hpp>
+#include <capsula/operators/KernelRegistry.hpp>
+#include <capsula/scene/SceneRun.hpp>
+
+#include <Tpetra_Core.hpp>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace core = capsula::core;
+namespace scene = capsula::scene;
+namespace fs = std::filesystem;
+using scene::testing::smallDeck;
+
+class SceneRunTest : public ::testing::Test {
+protected:
+  void SetUp() override
+  {
+    root_ = fs::temp_directory_path() /
+            ("capsula-scene-run-" + std::to_string(::getpid()) + "-" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+  }
+  void TearDown() override { fs::remove_all(root_); }
+
+  scene::SceneRunResult run(const Teuchos::ParameterList& deck, const std::string& directory,
+                            const std::string& restart = "")
+  {
+    static const auto kernels = capsula::operators::builtInKernels();
+    scene::SceneRunOptions options;
+    options.application = "test";
+    options.outputDirectory = (root_ / directory).string();
+    if (!restart.empty()) {
+      options.restartDirectory = (root_ / restart).string();
+    }
+    return scene::runScene(deck, Tpetra::getDefaultComm(), options, kernels);
+  }
+
+  std::string read(const std::string& file) const
+  {
+    std::ifstream in(root_ / file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  fs::path root_;
+};
+
+TEST_F(SceneRunTest, WritesTheOutputContract)
+{
+  const auto result = run(*smallDeck(1, 2.0, true), "out");
+  EXPECT_EQ(result.status, "finished");
+  EXPECT_DOUBLE_EQ(result.time, 0.2);
+  for (const char* file : {"metrics.csv", "summary.json", "cells.xdmf", "cells_000000.h5", "cells_000002.h5",
+                           "checkpoint.h5", "deck.xml", "run.json"}) {
+    EXPECT_TRUE(fs::exists(root_ / "out" / file)) << file;
+  }
+  const auto table = capsula::io::readCsvTable((root_ / "out" / "metrics.csv").string());
+  const std::vector<std::string> required{"time", "step", "dt", "D12", "D13", "D23", "x_c", "y_c", "z_c",
+                                          "u_slip", "u_migr", "volume", "area", "reduced_volume",
+                                          "footprint_xz", "mean_shear_stress"};
+  ASSERT_GE(table.columns.size(), required.size());
+  for (std::size_t k = 0; k < required.size(); ++k) {
+    EXPECT_EQ(table.columns[k], required[k]);
+  }
+  ASSERT_EQ(table.rows.size(), 3u);   // t = 0, 0.1, 0.2
+  EXPECT_DOUBLE_EQ(table.rows[2][0], 0.2);
+  EXPECT_GT(table.rows[2][3], 0.01);  // the capsule has deformed
+  const std::string summary = read("out/summary.json");
+  EXPECT_NE(summary.find("\"status\": \"finished\""), std::string::npos);
+  EXPECT_NE(summary.find("kernel: Wall"), std::string::npos);
+  EXPECT_NE(summary.find("\"deck\""), std::string::npos);
+  EXPECT_NE(summary.find("\"git sha\""), std::string::npos);
+}
+
+TEST_F(SceneRunTest, WallShearStressCostsOnlyWhenAsked)
+{
+  const auto flowPoints = core::timer("Flow velocity at points");
+  int before = flowPoints->numCalls();
+  auto result = run(*smallDeck(1, 2.0, true), "off");
+  EXPECT_EQ(flowPoints->numCalls(), before);
+  for (const auto& term : result.terms) {
+    EXPECT_EQ(term.find("wall shear stress"), std::string::npos) << term;
+  }
+  EXPECT_EQ(read("off/metrics.csv").find("wall_area_upstream"), std::string::npos);
+
+  before = flowPoints->numCalls();
+  result = run(*smallDeck(1, 2.0, true, [](Teuchos::ParameterList& d) {
+    auto& wall = d.sublist("Output").sublist("Wall shear stress");
+    wall.set("Enabled", true);
+    wall.set("Spacing", 1.0);
+  }),
+               "on");
+  EXPECT_GT(flowPoints->numCalls(), before);
+  EXPECT_NE(read("on/metrics.csv").find("wall_area_upstream"), std::string::npos);
+  const auto table = capsula::io::readCsvTable((root_ / "on" / "metrics.csv").string());
+  // Undisturbed shear puts stress 1 on the wall; a cell above it raises some and lowers
+  // some: the grid sees both sides of 1.
+  const std::size_t minimum = table.columns.size() - 4, maximum = table.columns.size() - 3;
+  EXPECT_LT(table.rows.back()[minimum], 1.0);
+  EXPECT_GT(table.rows.back()[maximum], 1.0);
+}
+
+TEST_F(SceneRunTest, RestartReproducesTheUninterruptedRun)
+{
+  const auto deck = smallDeck(1, 1.6, true);
+  run(*deck, "whole");
+  const auto half = smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) {
+    d.sublist("Time integration").set("End time", 0.1);
+  });
+  run(*half, "split");
+  const auto result = run(*deck, "split", "split");
+  EXPECT_EQ(result.status, "finished");
+  // Bit for bit: the tables are the same text.
+  EXPECT_EQ(read("split/metrics.csv"), read("whole/metrics.csv"));
+  // Restarting into another directory carries the table over.
+  run(*deck, "moved", "split");
+  EXPECT_EQ(read("moved/metrics.csv"), read("whole/metrics.csv"));
+}
+
+TEST_F(SceneRunTest, RestartRefusesAChangedDeck)
+{
+  run(*smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) { d.sublist("Time integration").set("End time", 0.1); }),
+      "first");
+  const auto changed = smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) {
+    d.sublist("Flow").set("Capillary number", 0.6);
+  });
+  try {
+    run(*changed, "first", "first");
+    FAIL() << "a restart with another capillary number must be refused";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'Flow/Capillary number'"), std::string::npos) << e.what();
+  }
+  try {
+    run(*changed, "first", "nowhere");
+    FAIL() << "a restart from a directory without a checkpoint must be refused";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--restart"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(SceneRunTest, RejectsAnUnusableOutputDirectory)
+{
+  std::ofstream(root_ / "plain-file") << "not a directory\n";
+  try {
+    run(*smallDeck(0, 2.0, true), "plain-file/out");
+    FAIL() << "a directory inside a file cannot be created";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("The output directory"), std::string::npos) << e.what();
+  }
+}
+
+} // namespace
