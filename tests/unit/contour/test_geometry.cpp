@@ -1,5 +1,6 @@
 // Contour geometry: orientation conventions, convergence of position, curvature and arc
 // length under refinement, the tethered (natural-end) contour.
+#include "capsula/testing/ConvergenceOrder.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/InitialShapes.hpp>
 #include <capsula/core/Error.hpp>
@@ -20,21 +21,7 @@ using capsula::contour::Parametrisation;
 
 const double pi = std::acos(-1.0);
 
-/// Least-squares slope p of log(error) = c - p log(N).
-double fittedOrder(const std::vector<int>& n, const std::vector<double>& error)
-{
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  const double m = static_cast<double>(n.size());
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    const double x = std::log(static_cast<double>(n[i]));
-    const double y = std::log(error[i]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
-}
+using capsula::testing::fittedOrder;
 
 const std::vector<int> refinements{16, 32, 64, 128, 256};
 

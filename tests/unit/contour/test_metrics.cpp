@@ -1,5 +1,6 @@
 // Shape metrics (App. A.9.1, eq 4.2): area, length, centroid, second moment, D12 and
 // the cell length, against exact ellipse values and under rigid motions.
+#include "capsula/testing/ConvergenceOrder.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/ContourMetrics.hpp>
 #include <capsula/contour/InitialShapes.hpp>
@@ -17,20 +18,7 @@ using capsula::contour::EllipseShape;
 
 const double pi = std::acos(-1.0);
 
-double fittedOrder(const std::vector<int>& n, const std::vector<double>& error)
-{
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  const double m = static_cast<double>(n.size());
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    const double x = std::log(static_cast<double>(n[i]));
-    const double y = std::log(error[i]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
-}
+using capsula::testing::fittedOrder;
 
 /// Perimeter of the ellipse with semi-axes a, b by the arithmetic-geometric mean:
 /// P = 2 pi / AGM(a, b) (a^2 - sum_n 2^(n-1) c_n^2), c_0^2 = a^2 - b^2.

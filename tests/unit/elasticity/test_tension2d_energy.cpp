@@ -4,6 +4,7 @@
 // because dE/dt = int gamma d(omega)/dt dl0 = int gamma t . dv/dl dl = -int d(gamma t)/dl . v dl
 // (closed contour, or v = 0 at the tether). This fixes the sign of Delta f and ties the
 // discrete stretch, tension and load together.
+#include "capsula/testing/ConvergenceOrder.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/InitialShapes.hpp>
 #include <capsula/elasticity/ElasticMembrane2D.hpp>
@@ -26,20 +27,7 @@ using capsula::elasticity::MembraneState2D;
 
 const double pi = std::acos(-1.0);
 
-double fittedOrder(const std::vector<int>& n, const std::vector<double>& error)
-{
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  const double m = static_cast<double>(n.size());
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    const double x = std::log(static_cast<double>(n[i]));
-    const double y = std::log(error[i]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
-}
+using capsula::testing::fittedOrder;
 
 /// Reference: ellipse a/b = 0.5, node 0 at the bottom of the b-axis (the tether point).
 Eigen::Matrix2Xd referenceNodes(int n)

@@ -1,6 +1,7 @@
 // Stretch, tension and load of a 2D membrane (thesis A.5) against exact states:
 // reference and rigidly moved shapes, the inflated circle (Laplace law), a dilated
 // ellipse, tangential slip on a circle, and the global balances of force and torque.
+#include "capsula/testing/ConvergenceOrder.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/InitialShapes.hpp>
 #include <capsula/core/Error.hpp>
@@ -24,20 +25,7 @@ using capsula::elasticity::MembraneState2D;
 const double pi = std::acos(-1.0);
 const double modulus = 2.5;
 
-double fittedOrder(const std::vector<int>& n, const std::vector<double>& error)
-{
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  const double m = static_cast<double>(n.size());
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    const double x = std::log(static_cast<double>(n[i]));
-    const double y = std::log(error[i]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
-}
+using capsula::testing::fittedOrder;
 
 ContourOptions withClosure(Closure closure)
 {
