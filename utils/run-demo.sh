@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Runs the default demo deck with the apps built in BUILD (default: build): a Skalak capsule
 # released near the wall in shear flow (input/cell3d/demo.xml), on 2 MPI ranks, about a
-# minute on 2 cores. Outputs in out/cell3d-demo: metrics.csv, summary.json, cells.xdmf
-# (open it in ParaView), checkpoint.h5.
+# minute on 2 cores. Outputs in out/cell3d-demo: metrics.csv, summary.json, snapshots.xdmf
+# (open it in ParaView; the data are in snapshots.h5), checkpoint.h5.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-build}

@@ -127,7 +127,7 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int level, double la
   const Timing geometry = timeIt(*comm, repeat, [&] { solver.setPositions(positions.data()); });
   Timing velocity = timeIt(*comm, repeat, [&] {
     solver.setPositions(positions.data());
-    solution = solver.nodeVelocities(loads.data(), flow);
+    solution = solver.nodeVelocities(LoadDensity::constantOverElements(loads), flow);
   });
   velocity.wall -= geometry.wall;
   velocity.cpu -= geometry.cpu;

@@ -75,16 +75,16 @@ void compareRanks(double lambdaSphere, double lambdaEllipsoid, double tolerance)
   const auto loads = loadsOf(reference->surfaces());
   FlowConditions flow;
   flow.capillaryNumber = 0.5;
-  const auto u2 = distributed->nodeVelocities(loads.data(), flow);
-  const auto u1 = reference->nodeVelocities(loads.data(), flow);
+  const auto u2 = distributed->nodeVelocities(LoadDensity::constantOverElements(loads), flow);
+  const auto u1 = reference->nodeVelocities(LoadDensity::constantOverElements(loads), flow);
   const double nodes = relativeDifference(u1.velocities, u2.velocities);
 
   std::vector<double> probes;
   for (int p = 0; p < 7; ++p) {
     probes.insert(probes.end(), {-1.5 + 0.6 * p, 0.05 + 0.4 * p, 0.3 - 0.1 * p});
   }
-  const auto flow2 = distributed->flowVelocity(probes, loads.data(), u2.velocities.data(), flow);
-  const auto flow1 = reference->flowVelocity(probes, loads.data(), u1.velocities.data(), flow);
+  const auto flow2 = distributed->flowVelocity(probes, LoadDensity::constantOverElements(loads), u2.velocities.data(), flow);
+  const auto flow1 = reference->flowVelocity(probes, LoadDensity::constantOverElements(loads), u1.velocities.data(), flow);
   const double points = relativeDifference(flow1, flow2);
   if (comm->getRank() == 0) {
     std::printf("lambda (%g, %g): 1 vs 2 ranks, node velocities %.2e, flow %.2e relative; GMRES %d / %d iterations\n",

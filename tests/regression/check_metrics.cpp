@@ -2,6 +2,7 @@
 //
 //   check_metrics expect FILE CELL COLUMN=VALUE:TOLERANCE...
 //       The last row of cell CELL (column "cell") must have |COLUMN - VALUE| <= TOLERANCE.
+//       CELL "-": the table of several cells (one row per time, columns NAME_c), last row.
 //   check_metrics same FILE_A FILE_B RELATIVE_TOLERANCE
 //       Same columns and rows; every number within RELATIVE_TOLERANCE * max(1, |a|, |b|).
 //
@@ -31,12 +32,13 @@ std::size_t columnIndex(const io::CsvTable& table, const std::string& name, cons
 int expect(int argc, char** argv)
 {
   const std::string file = argv[2];
+  const bool wholeRows = std::string(argv[3]) == "-";
   const double cell = std::atof(argv[3]);
   const io::CsvTable table = io::readCsvTable(file);
-  const std::size_t cellColumn = columnIndex(table, "cell", file);
+  const std::size_t cellColumn = wholeRows ? 0 : columnIndex(table, "cell", file);
   const std::vector<double>* last = nullptr;
   for (const auto& row : table.rows) {
-    if (row[cellColumn] == cell) {
+    if (wholeRows || row[cellColumn] == cell) {
       last = &row;
     }
   }

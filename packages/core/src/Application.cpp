@@ -8,6 +8,7 @@
 #include <Tpetra_Core.hpp>
 
 #include <iostream>
+#include <string>
 #include <mpi.h>
 
 namespace capsula::core {
@@ -38,6 +39,14 @@ int runApplication(int argc, char** argv, const AppDescription& app,
                    const ValidParameterBuilder& validParameters,
                    const std::function<void(RunContext&)>& run)
 {
+  // --help is answered before Kokkos starts: Kokkos also takes --help and would print its
+  // own forty lines of options above ours.
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      std::cout << usage(app);
+      return 0;
+    }
+  }
   Tpetra::ScopeGuard tpetraScope(&argc, &argv);
   const auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;

@@ -26,6 +26,21 @@ std::size_t slot(int element, int localNode)
 
 } // namespace
 
+MembraneForceMethod membraneForceMethod(const std::string& name)
+{
+  if (name == "Contour integral") {
+    return MembraneForceMethod::ContourIntegral;
+  }
+  core::require<core::InputError>(name == "Virtual work", "unknown membrane force method '", name,
+                                  "': use 'Virtual work' or 'Contour integral'");
+  return MembraneForceMethod::VirtualWork;
+}
+
+std::string to_string(MembraneForceMethod method)
+{
+  return method == MembraneForceMethod::ContourIntegral ? "Contour integral" : "Virtual work";
+}
+
 MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh,
                                      std::vector<double> referencePositions,
                                      std::shared_ptr<const MembraneLaw> law,
@@ -67,6 +82,22 @@ MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh,
       referenceDual_[slot(e, j)] = {rotateOnto(dual[0], S.normal, N),
                                     rotateOnto(dual[1], S.normal, N)};
     }
+  }
+
+  if (discretisation.forceMethod == MembraneForceMethod::VirtualWork) {
+    // Material coordinates: the reference shape parameters at the N_Q points.
+    const quadrature::TriangleRule& rule = *areaRule_;
+    referencePoints_.reserve(static_cast<std::size_t>(numElements) * rule.weight.size());
+    for (int e = 0; e < numElements; ++e) {
+      const ElementNodes X = mesh.elementNodes(e, reference_.data());
+      for (std::size_t q = 0; q < rule.weight.size(); ++q) {
+        referencePoints_.push_back(referenceQuadraturePoint(X, referenceParameters_[e], rule.xi[q],
+                                                            rule.eta[q], rule.weight[q]));
+      }
+    }
+    mass_ = std::make_unique<mesh::SurfaceMassMatrix>(mesh);
+    nodalForce_.assign(numNodes, Vec3::Zero());
+    nodalLoad_.assign(numNodes, Vec3::Zero());
   }
 
   currentTangent_.resize(6 * static_cast<std::size_t>(numElements));
@@ -156,7 +187,19 @@ void MembraneMechanics::evaluate(const double* positions)
     principal_[i] = principalTensions(s, dw);
   }
 
-  // 4. Contour integrals (eq 3.37): each edge once, opposite signs on its two elements.
+  // 4. The load.
+  if (discretisation_.forceMethod == MembraneForceMethod::VirtualWork) {
+    virtualWorkLoads(positions);
+  } else {
+    contourIntegralLoads(positions);
+  }
+}
+
+void MembraneMechanics::contourIntegralLoads(const double* positions)
+{
+  // Contour integrals (eq 3.37): each edge once, opposite signs on its two elements.
+  const mesh::SurfaceMesh& mesh = *mesh_;
+  const int numElements = mesh.numElements();
   for (int e = 0; e < numElements; ++e) {
     force_[e].setZero();
     moment_[e].setZero();
@@ -180,6 +223,59 @@ void MembraneMechanics::evaluate(const double* positions)
   }
   for (int e = 0; e < numElements; ++e) {
     load_[e] = force_[e] / area_[e];
+  }
+}
+
+void MembraneMechanics::virtualWorkLoads(const double* positions)
+{
+  const mesh::SurfaceMesh& mesh = *mesh_;
+  const quadrature::TriangleRule& rule = *areaRule_;
+  const std::size_t nq = rule.weight.size();
+  const MembraneLaw& law = *law_;
+  for (Vec3& F : nodalForce_) {
+    F.setZero();
+  }
+  // F_k = dE/dx_k, element by element (MembraneEnergyGradient.hpp).
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const ElementNodes x = mesh.elementNodes(e, positions);
+    Vec3 gradient[6];
+    for (Vec3& g : gradient) {
+      g.setZero();
+    }
+    for (std::size_t q = 0; q < nq; ++q) {
+      const double energy =
+        addEnergyGradient(referencePoints_[static_cast<std::size_t>(e) * nq + q], x, law, gradient);
+      core::require<core::NumericalError>(std::isfinite(energy), "the membrane is crushed in element ",
+                                          e, " (degenerate tangents at a quadrature point)");
+    }
+    for (int k = 0; k < 6; ++k) {
+      nodalForce_[static_cast<std::size_t>(mesh.element(e)[k])] += gradient[k];
+    }
+  }
+  // The load density: int phi_k Delta f dS = F_k, i.e. M f = F.
+  mass_->assemble(positions);
+  mass_->solve(nodalForce_.front().data(), nodalLoad_.front().data());
+  // Element totals and moments of the continuous load, for the outputs and for a single
+  // layer that takes element-averaged loads.
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const ElementNodes x = mesh.elementNodes(e, positions);
+    const ShapeParameters p = mesh::shapeParameters(x);
+    Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+    for (std::size_t q = 0; q < nq; ++q) {
+      const SurfacePoint s = mesh::evaluateSurfacePoint(x, p, rule.xi[q], rule.eta[q]);
+      double phi[6];
+      mesh::shapeFunctions(p, rule.xi[q], rule.eta[q], phi);
+      Vec3 f = Vec3::Zero();
+      for (int k = 0; k < 6; ++k) {
+        f += phi[k] * nodalLoad_[static_cast<std::size_t>(mesh.element(e)[k])];
+      }
+      const double w = rule.weight[q] * s.metric;
+      force += w * f;
+      moment += w * s.position.cross(f);
+    }
+    force_[e] = force;
+    moment_[e] = moment;
+    load_[e] = force / area_[e];
   }
 }
 

@@ -269,6 +269,33 @@ Handle openFileForReading(const std::string& path, const std::string& role)
   return file;
 }
 
+void flush(hid_t object)
+{
+  ErrorSilencer quiet;
+  check(H5Fflush(object, H5F_SCOPE_GLOBAL) >= 0, "flush '" + fileNameOf(object) + "'");
+}
+
+Handle createAnonymousGroup(hid_t object)
+{
+  ErrorSilencer quiet;
+  Handle gcpl = creationOrderedGroupProperties();
+  Handle group(H5Gcreate_anon(object, gcpl.get(), H5P_DEFAULT));
+  check(group.get() >= 0, "create a group in '" + fileNameOf(object) + "'");
+  return group;
+}
+
+void link(hid_t object, hid_t parent, const std::string& name)
+{
+  ErrorSilencer quiet;
+  check(H5Olink(object, parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT) >= 0, "link " + where(parent, name));
+}
+
+void unlink(hid_t parent, const std::string& name)
+{
+  ErrorSilencer quiet;
+  check(H5Ldelete(parent, name.c_str(), H5P_DEFAULT) >= 0, "remove " + where(parent, name));
+}
+
 Handle createGroup(hid_t parent, const std::string& name)
 {
   ErrorSilencer quiet;
@@ -326,6 +353,16 @@ void writeIntegers(hid_t parent, const std::string& name, const std::vector<std:
                    const std::vector<hsize_t>& shape)
 {
   writeArray(parent, name, data, shape, H5T_STD_I64LE, H5T_NATIVE_INT64);
+}
+
+std::vector<hsize_t> datasetShape(hid_t parent, const std::string& name)
+{
+  ErrorSilencer quiet;
+  Handle set(H5Dopen2(parent, name.c_str(), H5P_DEFAULT));
+  check(set.get() >= 0, "open dataset " + where(parent, name));
+  Handle space(H5Dget_space(set.get()));
+  check(space.get() >= 0, "query dataset " + where(parent, name));
+  return shapeOf(space.get());
 }
 
 std::vector<double> readDoubles(hid_t parent, const std::string& name, std::vector<hsize_t>* shape)

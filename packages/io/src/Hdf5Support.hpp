@@ -49,10 +49,19 @@ private:
 /// messages ("checkpoint", "snapshot").
 Handle createFile(const std::string& path, const std::string& role);
 Handle openFileForReading(const std::string& path, const std::string& role);
+/// Writes everything HDF5 holds in memory for the file of `object` to it.
+void flush(hid_t object);
 
 /// Groups track the creation order of their members, so listings keep the write order.
 Handle createGroup(hid_t parent, const std::string& name);
 Handle openGroup(hid_t parent, const std::string& name);
+/// A group in the file of `object` that no path reaches yet; link() makes it visible. An
+/// anonymous group that is closed unlinked is dropped, so a group filled and linked last
+/// appears whole or not at all.
+Handle createAnonymousGroup(hid_t object);
+void link(hid_t object, hid_t parent, const std::string& name);
+/// Removes the link `name` from `parent` (the object goes when nothing links to it).
+void unlink(hid_t parent, const std::string& name);
 bool exists(hid_t parent, const std::string& name);
 /// Names of the members of a group, in creation order.
 std::vector<std::string> memberNames(hid_t group);
@@ -64,6 +73,9 @@ void writeDoubles(hid_t parent, const std::string& name, const std::vector<doubl
 void writeIntegers(hid_t parent, const std::string& name, const std::vector<std::int64_t>& data,
                    const std::vector<hsize_t>& shape);
 void writeString(hid_t parent, const std::string& name, const std::string& text);
+
+/// The shape of a dataset, without reading it.
+std::vector<hsize_t> datasetShape(hid_t parent, const std::string& name);
 
 std::vector<double> readDoubles(hid_t parent, const std::string& name, std::vector<hsize_t>* shape);
 std::vector<std::int64_t> readIntegers(hid_t parent, const std::string& name,

@@ -48,7 +48,7 @@ std::string attributeType(int components)
   }
 }
 
-void attributes(std::ostream& out, const SnapshotLayout& snapshot,
+void attributes(std::ostream& out, const std::string& fileName, const SnapshotLayout& snapshot,
                 const SnapshotLayout::BlockLayout& block,
                 const std::vector<SnapshotLayout::FieldLayout>& fields, bool onNodes)
 {
@@ -57,13 +57,14 @@ void attributes(std::ostream& out, const SnapshotLayout& snapshot,
     out << "          <Attribute Name=\"" << escaped(f.name) << "\" AttributeType=\""
         << attributeType(f.components) << "\" Center=\"" << (onNodes ? "Node" : "Cell") << "\">\n";
     dataItem(out, "            ", dimensions(count, static_cast<std::size_t>(f.components)), false,
-             snapshot.fileName,
-             "/" + block.name + (onNodes ? "/node_fields/" : "/cell_fields/") + f.name);
+             fileName,
+             snapshot.group + "/" + block.name + (onNodes ? "/node_fields/" : "/cell_fields/") + f.name);
     out << "          </Attribute>\n";
   }
 }
 
-void topology(std::ostream& out, const SnapshotLayout& snapshot, const SnapshotLayout::BlockLayout& block)
+void topology(std::ostream& out, const std::string& fileName, const SnapshotLayout& snapshot,
+              const SnapshotLayout::BlockLayout& block)
 {
   const std::string type = xdmfTopologyName(block.topology);
   if (block.topology == Topology::StructuredGrid) {
@@ -76,17 +77,18 @@ void topology(std::ostream& out, const SnapshotLayout& snapshot, const SnapshotL
     out << " NodesPerElement=\"" << block.nodesPerCell << "\"";
   }
   out << ">\n";
-  dataItem(out, "            ", dimensions(block.cells, block.nodesPerCell), true, snapshot.fileName,
-           "/" + block.name + "/connectivity");
+  dataItem(out, "            ", dimensions(block.cells, block.nodesPerCell), true, fileName,
+           snapshot.meshGroup + "/" + block.name + "/connectivity");
   out << "          </Topology>\n";
 }
 
 } // namespace
 
-SnapshotLayout layoutOf(const Snapshot& snapshot, const std::string& fileName)
+SnapshotLayout layoutOf(const Snapshot& snapshot, const std::string& group, const std::string& meshGroup)
 {
   SnapshotLayout layout;
-  layout.fileName = fileName;
+  layout.group = group;
+  layout.meshGroup = meshGroup;
   layout.time = snapshot.time;
   layout.step = snapshot.step;
   for (const auto& b : snapshot.blocks) {
@@ -109,7 +111,7 @@ SnapshotLayout layoutOf(const Snapshot& snapshot, const std::string& fileName)
   return layout;
 }
 
-std::string xdmfTimeSeries(const std::vector<SnapshotLayout>& snapshots)
+std::string xdmfTimeSeries(const std::string& fileName, const std::vector<SnapshotLayout>& snapshots)
 {
   std::ostringstream out;
   out << "<?xml version=\"1.0\" ?>\n"
@@ -122,13 +124,13 @@ std::string xdmfTimeSeries(const std::vector<SnapshotLayout>& snapshots)
         << "        <Time Value=\"" << shortestDecimal(snapshot.time) << "\"/>\n";
     for (const auto& block : snapshot.blocks) {
       out << "        <Grid Name=\"" << escaped(block.name) << "\" GridType=\"Uniform\">\n";
-      topology(out, snapshot, block);
+      topology(out, fileName, snapshot, block);
       out << "          <Geometry GeometryType=\"" << (block.dimension == 2 ? "XY" : "XYZ") << "\">\n";
       dataItem(out, "            ", dimensions(block.nodes, static_cast<std::size_t>(block.dimension)),
-               false, snapshot.fileName, "/" + block.name + "/positions");
+               false, fileName, snapshot.group + "/" + block.name + "/positions");
       out << "          </Geometry>\n";
-      attributes(out, snapshot, block, block.nodeFields, true);
-      attributes(out, snapshot, block, block.cellFields, false);
+      attributes(out, fileName, snapshot, block, block.nodeFields, true);
+      attributes(out, fileName, snapshot, block, block.cellFields, false);
       out << "        </Grid>\n";
     }
     out << "      </Grid>\n";

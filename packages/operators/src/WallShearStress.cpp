@@ -7,7 +7,7 @@
 namespace capsula::operators {
 
 WallShearStress wallShearStress(BoundaryIntegralSolver& solver, const std::vector<double>& wallPoints,
-                                double step, const double* elementLoads, const double* nodeVelocities,
+                                double step, const LoadDensity& load, const double* nodeVelocities,
                                 const FlowConditions& flow)
 {
   core::require<core::InputError>(step > 0.0 && std::isfinite(step), "The wall shear stress step is ",
@@ -25,7 +25,7 @@ WallShearStress wallShearStress(BoundaryIntegralSolver& solver, const std::vecto
       points.insert(points.end(), {wallPoints[2 * p], level * step, wallPoints[2 * p + 1]});
     }
   }
-  const std::vector<double> u = solver.flowVelocity(points, elementLoads, nodeVelocities, flow);
+  const std::vector<double> u = solver.flowVelocity(points, load, nodeVelocities, flow);
   WallShearStress result;
   result.dudy.resize(n);
   result.dwdy.resize(n);

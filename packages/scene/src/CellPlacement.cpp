@@ -1,5 +1,7 @@
 #include "capsula/scene/CellPlacement.hpp"
 
+#include "capsula/scene/SurfaceGap.hpp"
+
 #include <capsula/core/Error.hpp>
 
 #include <algorithm>
@@ -98,7 +100,7 @@ bool surfacesOverlap(const mesh::SurfaceMesh& a, const mesh::SurfaceMesh& b)
 }
 
 void requireNoOverlap(const std::vector<const mesh::SurfaceMesh*>& cells,
-                      const std::vector<std::string>& paths)
+                      const std::vector<std::string>& paths, double minimumGap)
 {
   for (std::size_t i = 0; i < cells.size(); ++i) {
     for (std::size_t j = i + 1; j < cells.size(); ++j) {
@@ -106,6 +108,12 @@ void requireNoOverlap(const std::vector<const mesh::SurfaceMesh*>& cells,
         !surfacesOverlap(*cells[i], *cells[j]), "'", paths[i], "' and '", paths[j],
         "' overlap at the start: a node of one lies inside the other. Move their 'Center's "
         "apart (or make the cells smaller).");
+      const SurfaceGap gap = minimumSurfaceGap(*cells[i], *cells[j]);
+      core::require<core::InputError>(
+        gap.distance > minimumGap, "'", paths[i], "' and '", paths[j], "' touch at the start: their surfaces are ",
+        gap.distance, " apart (near (", gap.onFirst[0], ", ", gap.onFirst[1], ", ", gap.onFirst[2],
+        ")), not more than 'Cells/Minimum gap' = ", minimumGap,
+        ". Move their 'Center's apart (or lower 'Cells/Minimum gap').");
     }
   }
 }

@@ -29,6 +29,7 @@ std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMes
   if (cell.shearModulus != 1.0) {
     line << ", shear modulus " << cell.shearModulus << " G";
   }
+  line << ", load by " << cell.membraneForces;
   line << ", " << (cell.prestress > 0.0 ? "prestressed reference, alpha = " : "unstressed at start");
   if (cell.prestress > 0.0) {
     line << cell.prestress;
@@ -71,7 +72,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   for (const auto& surface : cells_) {
     placed.push_back(&surface);
   }
-  requireNoOverlap(placed, paths);
+  requireNoOverlap(placed, paths, description_.minimumGap);
 
   // Membranes.
   const auto discretisation = operators::readDiscretisationParameters(deck.sublist("Discretisation"));
@@ -89,6 +90,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     std::vector<double> reference = cell.prestress > 0.0
                                       ? elasticity::prestressedReference(surface, cell.prestress)
                                       : surface.positions();
+    membraneDiscretisation.forceMethod = elasticity::membraneForceMethod(cell.membraneForces);
     membranes_.push_back(std::make_unique<elasticity::MembraneMechanics>(
       surface, std::move(reference), std::move(law), membraneDiscretisation));
     terms_.push_back(describeMembrane(cell, surface));
@@ -138,6 +140,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     fixedHeight_.emplace(std::move(fixed), std::move(offsets));
   }
   loads_.assign(3 * static_cast<std::size_t>(numElements()), 0.0);
+  loadDensity_.assign(18 * static_cast<std::size_t>(numElements()), 0.0);
 }
 
 void Scene::setPositions(double t, const std::vector<double>& positions)
@@ -177,11 +180,20 @@ void Scene::computeLoads(double t)
         "At t = ", t, ", the membrane of '", description_.cells[static_cast<std::size_t>(c)].path,
         "' failed: ", e.what()));
     }
-    const auto& loads = membrane.elementLoads();
-    const std::size_t first = 3 * static_cast<std::size_t>(elementOffset(c));
-    for (std::size_t e = 0; e < loads.size(); ++e) {
+    // Delta f at the six nodes of each element (operators/LoadDensity.hpp).
+    const mesh::SurfaceMesh& surface = cells_[static_cast<std::size_t>(c)];
+    const bool continuous = membrane.discretisation().forceMethod == elasticity::MembraneForceMethod::VirtualWork;
+    const std::size_t first = static_cast<std::size_t>(elementOffset(c));
+    for (int e = 0; e < surface.numElements(); ++e) {
+      const std::size_t m = first + static_cast<std::size_t>(e);
+      for (int a = 0; a < 6; ++a) {
+        const mesh::Vec3& f = continuous ? membrane.nodalLoads()[surface.element(e)[a]] : membrane.elementLoads()[e];
+        for (int d = 0; d < 3; ++d) {
+          loadDensity_[18 * m + 3 * a + d] = f[d];
+        }
+      }
       for (int d = 0; d < 3; ++d) {
-        loads_[first + 3 * e + static_cast<std::size_t>(d)] = loads[e][d];
+        loads_[3 * m + d] = membrane.elementLoads()[e][d];
       }
     }
   }
@@ -192,7 +204,7 @@ void Scene::velocity(double t, const std::vector<double>& positions, std::vector
   setPositions(t, positions);
   computeLoads(t);
   Teuchos::TimeMonitor guard(*velocityTimer_);
-  operators::VelocitySolution solution = solver_->nodeVelocities(loads_.data(), flow_);
+  operators::VelocitySolution solution = solver_->nodeVelocities(operators::LoadDensity(loadDensity_.data()), flow_);
   velocities = std::move(solution.velocities);
 }
 
@@ -212,13 +224,15 @@ SceneFields Scene::evaluate(double t, const std::vector<double>& positions)
   computeLoads(t);
   {
     Teuchos::TimeMonitor guard(*velocityTimer_);
-    operators::VelocitySolution solution = solver_->nodeVelocities(loads_.data(), flow_);
+    operators::VelocitySolution solution =
+      solver_->nodeVelocities(operators::LoadDensity(loadDensity_.data()), flow_);
     fields.solverVelocities = std::move(solution.velocities);
     fields.gmresIterations = solution.iterations;
   }
   fields.velocities = fields.solverVelocities;
   constrain(positions, fields.velocities);
   fields.elementLoads = loads_;
+  fields.loadDensity = loadDensity_;
   fields.principalTensions.reserve(2 * static_cast<std::size_t>(numNodes()));
   fields.stretches.reserve(2 * static_cast<std::size_t>(numNodes()));
   for (const auto& membrane : membranes_) {

@@ -42,6 +42,7 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
   scene.wall = deck.sublist("Wall").get<bool>("Enabled");
 
   const auto& cells = deck.sublist("Cells");
+  scene.minimumGap = cells.get<double>("Minimum gap");
   const int n = countCells(cells);
   core::require<core::InputError>(n >= 1, "'Cells' has no cell: add a sublist 'Cells/Cell 0'.");
   for (int c = 0; c < n; ++c) {
@@ -55,6 +56,7 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
     cell.path = "Cells/" + name;
     cell.surface = list;
     cell.membraneLaw = list.get<std::string>("Membrane law");
+    cell.membraneForces = list.get<std::string>("Membrane forces");
     cell.shearModulus = list.get<double>("Shear modulus");
     cell.areaDilation = list.get<double>("Area dilation C");
     cell.prestress = list.get<double>("Prestress");
@@ -92,6 +94,16 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
   ws.halfWidth = wallStress.get<double>("Half width");
   ws.spacing = wallStress.get<double>("Spacing");
   ws.threshold = wallStress.get<double>("Threshold");
+  const auto& range = wallStress.get<Teuchos::Array<double>>("Isolated range");
+  core::require<core::InputError>(range.empty() || (range.size() == 2 && range[0] <= range[1]),
+                                  "'Output/Wall shear stress/Isolated range' must be empty or two numbers, "
+                                  "the smallest and the largest wall stress of the isolated cell "
+                                  "(wall_stress_min, wall_stress_max of its run), smallest first.");
+  if (!range.empty()) {
+    ws.isolatedRange = true;
+    ws.isolatedMinimum = range[0];
+    ws.isolatedMaximum = range[1];
+  }
   core::require<core::InputError>(!ws.enabled || scene.wall,
                                   "'Output/Wall shear stress/Enabled' is true but 'Wall/Enabled' is "
                                   "false: there is no wall to measure.");

@@ -52,9 +52,28 @@ void declareWallShearStressParameters(Teuchos::ParameterList& wall)
                     "Elevated stress: at least this multiple of the ambient wall stress (1 in units "
                     "of mu k); the thesis uses 5% above ambient.",
                     core::greaterThan(0.0));
+  core::declareRealArray(wall, "Isolated range", {}, 0,
+                         "{smallest, largest} wall stress of an isolated cell at the same height "
+                         "(wall_stress_min, wall_stress_max of its run); when given, metrics.csv "
+                         "gets the wall areas below and above that range (thesis Figs 6.6, 6.12: "
+                         "what a pair of cells does to the wall that one cell does not). Empty: "
+                         "no comparison.",
+                         core::atLeast(0.0));
 }
 
 } // namespace
+
+void declareMinimumGap(Teuchos::ParameterList& cells)
+{
+  core::declareReal(cells, "Minimum gap", 0.05,
+                    "Safety distance between cells, in cell radii: cells whose surfaces are no "
+                    "farther apart at the start are rejected as touching, and a run stops (after "
+                    "writing its outputs and a checkpoint) when two surfaces come closer. The gap "
+                    "is measured after every time step on the flat-faceted surfaces "
+                    "(packages/scene SurfaceGap.hpp). Below ~0.05 a the film between the cells is "
+                    "thinner than the near-singular quadrature and a level-2/3 mesh resolve.",
+                    core::greaterThan(0.0));
+}
 
 std::string cellSublistName(int index) { return "Cell " + std::to_string(index); }
 
@@ -63,6 +82,12 @@ void declareCellParameters(Teuchos::ParameterList& cell)
   mesh::declareCellSurfaceParameters(cell);
   core::declareChoice(cell, "Membrane law", "Skalak", {"NeoHookean", "Skalak"},
                       "Strain energy of the membrane: NeoHookean (eq 3.31) or Skalak (eq 3.32).");
+  core::declareChoice(cell, "Membrane forces", "Virtual work", {"Virtual work", "Contour integral"},
+                      "How the membrane's load on the fluids is computed. 'Virtual work': nodal "
+                      "forces dE/dx of the strain energy and a continuous load interpolated over "
+                      "each element (stable for prestressed and stiff-dilation membranes). "
+                      "'Contour integral': the thesis's element-averaged load (eq 3.37), which "
+                      "folds prestressed membranes at low Ca (docs/validation-cell3d.md).");
   core::declareReal(cell, "Shear modulus", 1.0,
                     "This cell's membrane shear modulus relative to the G of the capillary number "
                     "(1: the cell Ca refers to; 0.5: an activated cell, half as stiff).",
@@ -129,6 +154,7 @@ Teuchos::RCP<const Teuchos::ParameterList> validSceneParameters(const Teuchos::P
                     "unbounded shear (free-space kernel).");
 
   auto& cells = core::declareSublist(*valid, "Cells", "One sublist per cell: Cell 0, Cell 1, ...");
+  declareMinimumGap(cells);
   bool anyCell = false;
   if (deck.isSublist("Cells")) {
     const auto& given = deck.sublist("Cells");

@@ -1,6 +1,7 @@
 #include "capsula/scene/SceneRun.hpp"
 
 #include "capsula/scene/OutputMetrics.hpp"
+#include "capsula/scene/PairMetrics.hpp"
 #include "capsula/scene/Scene.hpp"
 #include "capsula/scene/SceneDescription.hpp"
 #include "capsula/scene/SceneSnapshot.hpp"
@@ -157,10 +158,42 @@ std::string clock(double seconds)
   return out.str();
 }
 
+// --- metrics.csv rows ---------------------------------------------------------------------
+
+// The metrics of one cell, in the order of cellValues. One cell: one row with these columns
+// ("cell" after mean_shear_stress); several cells: one row per output with a column
+// "NAME_c" for every metric and cell.
+const std::vector<std::string>& cellMetricNames()
+{
+  static const std::vector<std::string> names{
+    "D12", "D13", "D23", "x_c", "y_c", "z_c", "u_slip", "u_migr", "volume", "area", "reduced_volume",
+    "footprint_xz", "mean_shear_stress", "inclination_deg", "w_c", "u_slip_instant", "u_migr_instant",
+    "omega_x", "omega_y", "omega_z", "volume_change", "area_change", "max_shear_stress",
+    "mean_shear_stress_increase", "max_shear_stress_increase", "shape_change_rate"};
+  return names;
+}
+
+// The one-cell table puts "cell" after this many metrics (its layout predates the others).
+constexpr std::size_t kMetricsBeforeCellColumn = 13;
+
+std::vector<double> cellValues(const CellSample& s)
+{
+  const auto& d = s.shape.deformation;
+  return {d.D12, d.D13, d.D23,
+          s.shape.centroid[0], s.shape.centroid[1], s.shape.centroid[2],
+          s.slipVelocity(), s.migrationVelocity(),
+          s.shape.volume, s.shape.area, s.shape.reducedVolume, s.shape.footprintXZ,
+          s.stress.mean, d.inclinationDegrees, s.splineVelocity[2],
+          s.shape.centroid[1] - s.instantVelocity[0], s.instantVelocity[1],
+          s.rotation[0], s.rotation[1], s.rotation[2],
+          s.volumeChange, s.areaChange, s.stress.maximum,
+          s.meanStressIncrease, s.maximumStressIncrease, s.shapeChangeRate};
+}
+
 // --- the run --------------------------------------------------------------------------
 
 constexpr const char* kCheckpointFile = "checkpoint.h5";
-constexpr const char* kSnapshotBase = "cells";
+constexpr const char* kSnapshotBase = "snapshots";   // snapshots.h5 + snapshots.xdmf
 
 class Run {
 public:
@@ -176,7 +209,8 @@ private:
   void restoreFromCheckpoint();
   void startOutputs();
   bool observe(const timeint::IntegrationState& state);
-  void writeSummary(const std::string& status, const std::string& failure);
+  bool cellsTooClose();
+  void writeSummary(const std::string& status, const std::string& note);
   void progress(const timeint::IntegrationState& state, double lastD12);
 
   const Teuchos::ParameterList& deck_;
@@ -203,9 +237,13 @@ private:
   // What summary.json reports.
   std::vector<CellSample> lastSamples_;
   std::vector<CellSample> steadySamples_;
+  std::vector<PairSample> lastPairs_;
+  std::vector<PairSample> steadyPairs_;
+  std::string stopReason_;
   double lastTime_ = 0.0;
   double maxVolumeDrift_ = 0.0;
   std::optional<ElevatedStressAreas> lastWallAreas_;
+  std::optional<OutsideRangeAreas> lastOutsideIsolated_;
   std::int64_t outputsWritten_ = 0;
   std::chrono::steady_clock::time_point wallStart_;
   double simulatedStart_ = 0.0;
@@ -329,7 +367,8 @@ void Run::prepareOutputDirectory()
 void Run::startOutputs()
 {
   onRoot(*comm_, [&] {
-    const auto columns = metricsColumns(description_.output.wallShearStress.enabled);
+    const auto& wallOutput = description_.output.wallShearStress;
+    const auto columns = metricsColumns(wallOutput.enabled, description_.numCells(), wallOutput.isolatedRange);
     std::vector<std::string> probeColumns{"time"};
     for (std::size_t p = 0; p < description_.output.flowProbes.size(); ++p) {
       for (const char* axis : {"u", "v", "w"}) {
@@ -345,7 +384,8 @@ void Run::startOutputs()
         probesCsv_.emplace(io::MetricsCsv::resume(probesPath, probeColumns, state_.time));
       }
       if (description_.output.snapshots) {
-        snapshots_.emplace(io::SnapshotSeries::resume(directory_, kSnapshotBase, state_.time));
+        snapshots_.emplace(
+          io::SnapshotSeries::resume(directory_, kSnapshotBase, state_.time, *options_.restartDirectory));
       }
     } else {
       metricsCsv_.emplace(metricsPath, columns);
@@ -381,6 +421,7 @@ bool Run::observe(const timeint::IntegrationState& state)
   const double t = state.time;
   SceneFields fields = scene_->evaluate(t, state.y);
   std::vector<CellSample> samples = metrics_.record(t, *scene_, fields);
+  std::vector<PairSample> pairs = pairSamples(*scene_, fields.positions, samples);
 
   // Wall shear stress on a grid that follows the cells (collective).
   const auto& wallOutput = description_.output.wallShearStress;
@@ -400,9 +441,13 @@ bool Run::observe(const timeint::IntegrationState& state)
       gap = std::min(gap, state.y[k]);
     }
     const double step = std::min(gap / 20.0, wallOutput.spacing / 5.0);
-    wallStress = wallShearStressOnGrid(scene_->solver(), *grid, step, fields.elementLoads.data(),
+    wallStress = wallShearStressOnGrid(scene_->solver(), *grid, step, operators::LoadDensity(fields.loadDensity.data()),
                                        fields.solverVelocities.data(), scene_->flow());
     lastWallAreas_ = elevatedStressAreas(*grid, wallStress->magnitude, centre[0], wallOutput.threshold);
+    if (wallOutput.isolatedRange) {
+      lastOutsideIsolated_ = areasOutsideRange(*grid, wallStress->magnitude, wallOutput.isolatedMinimum,
+                                               wallOutput.isolatedMaximum);
+    }
   }
   std::vector<double> probeVelocities;
   if (!description_.output.flowProbes.empty()) {
@@ -410,7 +455,7 @@ bool Run::observe(const timeint::IntegrationState& state)
     for (const auto& p : description_.output.flowProbes) {
       points.insert(points.end(), {p[0], p[1], p[2]});
     }
-    probeVelocities = scene_->solver().flowVelocity(points, fields.elementLoads.data(),
+    probeVelocities = scene_->solver().flowVelocity(points, operators::LoadDensity(fields.loadDensity.data()),
                                                     fields.solverVelocities.data(), scene_->flow());
   }
 
@@ -422,43 +467,55 @@ bool Run::observe(const timeint::IntegrationState& state)
   const double steadyTolerance = integrator_->settings().steadyTolerance;
   const bool steady = steadyTolerance > 0.0 && t > state.outputOrigin && shapeRate < steadyTolerance;
   lastSamples_ = samples;
+  lastPairs_ = pairs;
   lastTime_ = t;
   lastD12_ = samples.front().shape.deformation.D12;
   if (steady) {
     steadySamples_ = samples;
+    steadyPairs_ = pairs;
   }
   const bool snapshotDue = description_.output.snapshots && outputsWritten_ % description_.output.snapshotStride == 0;
   ++outputsWritten_;
 
   onRoot(*comm_, [&] {
     Teuchos::TimeMonitor filesGuard(*core::timer("Output files"));
-    for (int c = 0; c < scene_->numCells(); ++c) {
-      const CellSample& s = samples[static_cast<std::size_t>(c)];
-      const auto& d = s.shape.deformation;
-      std::vector<double> row{t,
-                              static_cast<double>(state.statistics.acceptedSteps),
-                              state.statistics.lastStep,
-                              d.D12, d.D13, d.D23,
-                              s.shape.centroid[0], s.shape.centroid[1], s.shape.centroid[2],
-                              s.slipVelocity(), s.migrationVelocity(),
-                              s.shape.volume, s.shape.area, s.shape.reducedVolume, s.shape.footprintXZ,
-                              s.stress.mean,
-                              static_cast<double>(c), d.inclinationDegrees, s.splineVelocity[2],
-                              s.shape.centroid[1] - s.instantVelocity[0], s.instantVelocity[1],
-                              s.rotation[0], s.rotation[1], s.rotation[2],
-                              s.volumeChange, s.areaChange, s.stress.maximum,
-                              s.meanStressIncrease, s.maximumStressIncrease, s.shapeChangeRate,
-                              static_cast<double>(s.gmresIterations)};
-      if (lastWallAreas_ && wallOutput.enabled) {
-        row.insert(row.end(), {lastWallAreas_->minimum, lastWallAreas_->maximum, lastWallAreas_->upstream,
-                               lastWallAreas_->downstream});
-      }
-      metricsCsv_->appendRow(row);
+    std::vector<double> wallValues =
+      lastWallAreas_ && wallOutput.enabled
+        ? std::vector<double>{lastWallAreas_->minimum, lastWallAreas_->maximum, lastWallAreas_->upstream,
+                              lastWallAreas_->downstream}
+        : std::vector<double>{};
+    if (lastOutsideIsolated_ && wallOutput.enabled) {
+      wallValues.insert(wallValues.end(), {lastOutsideIsolated_->below, lastOutsideIsolated_->above});
     }
+    std::vector<double> row{t, static_cast<double>(state.statistics.acceptedSteps), state.statistics.lastStep};
+    if (samples.size() == 1) {
+      const std::vector<double> values = cellValues(samples.front());
+      const auto split = values.begin() + static_cast<std::ptrdiff_t>(kMetricsBeforeCellColumn);
+      row.insert(row.end(), values.begin(), split);
+      row.push_back(0.0);   // the cell's index
+      row.insert(row.end(), split, values.end());
+    } else {
+      std::vector<std::vector<double>> values;
+      for (const auto& s : samples) {
+        values.push_back(cellValues(s));
+      }
+      for (std::size_t m = 0; m < cellMetricNames().size(); ++m) {
+        for (const auto& cell : values) {
+          row.push_back(cell[m]);
+        }
+      }
+    }
+    row.push_back(static_cast<double>(samples.front().gmresIterations));
+    for (const auto& pair : pairs) {
+      const std::vector<double> values = pairValues(pair);
+      row.insert(row.end(), values.begin(), values.end());
+    }
+    row.insert(row.end(), wallValues.begin(), wallValues.end());
+    metricsCsv_->appendRow(row);
     if (probesCsv_) {
-      std::vector<double> row{t};
-      row.insert(row.end(), probeVelocities.begin(), probeVelocities.end());
-      probesCsv_->appendRow(row);
+      std::vector<double> probeRow{t};
+      probeRow.insert(probeRow.end(), probeVelocities.begin(), probeVelocities.end());
+      probesCsv_->appendRow(probeRow);
     }
     if (snapshotDue) {
       io::Snapshot snapshot = sceneSnapshot(*scene_, fields, t, state.statistics.acceptedSteps);
@@ -493,6 +550,35 @@ bool Run::observe(const timeint::IntegrationState& state)
   return steady;
 }
 
+// After every step: if two cell surfaces are closer than 'Cells/Minimum gap', records the
+// state as an output (metrics row, snapshot, checkpoint) and the reason, and returns true.
+// Every rank holds the same state, so every rank takes the same decision.
+bool Run::cellsTooClose()
+{
+  if (scene_->numCells() < 2) {
+    return false;
+  }
+  ClosestPair closest;
+  {
+    Teuchos::TimeMonitor guard(*core::timer("Cell gap"));
+    closest = closestPair(*scene_, state_.y);
+  }
+  if (closest.gap >= description_.minimumGap) {
+    return false;
+  }
+  std::ostringstream reason;
+  reason << std::setprecision(6) << "Stopped at t = " << state_.time << ": the surfaces of '"
+         << description_.cells[static_cast<std::size_t>(closest.first)].path << "' and '"
+         << description_.cells[static_cast<std::size_t>(closest.second)].path << "' are " << closest.gap
+         << " apart, less than 'Cells/Minimum gap' = " << description_.minimumGap
+         << ". The outputs and the checkpoint at this time are in " << directory_ << ".";
+  stopReason_ = reason.str();
+  observe(state_);
+  onRoot(*comm_, [&] { writeSummary("too close", stopReason_); });
+  log() << stopReason_ << "\n";
+  return true;
+}
+
 io::JsonValue sampleJson(const CellSample& s)
 {
   io::JsonValue v = io::JsonValue::object();
@@ -521,13 +607,26 @@ io::JsonValue sampleJson(const CellSample& s)
   return v;
 }
 
-void Run::writeSummary(const std::string& status, const std::string& failure)
+io::JsonValue pairJson(const PairSample& p)
+{
+  io::JsonValue v = io::JsonValue::object();
+  v["separation"] = io::JsonValue::array({p.separation[0], p.separation[1], p.separation[2]});
+  v["distance"] = p.distance;
+  v["relative velocity"] =
+    io::JsonValue::array({p.relativeVelocity[0], p.relativeVelocity[1], p.relativeVelocity[2]});
+  v["relative u_slip"] = p.relativeSlip;
+  v["gap"] = p.gap.distance;
+  return v;
+}
+
+// `note`: the failure message (status "failed") or why the run stopped early.
+void Run::writeSummary(const std::string& status, const std::string& note)
 {
   io::JsonValue summary = io::JsonValue::object();
   summary["application"] = options_.application;
   summary["status"] = status;
-  if (!failure.empty()) {
-    summary["failure"] = failure;
+  if (!note.empty()) {
+    summary[status == "failed" ? "failure" : "stop reason"] = note;
   }
   summary["time"] = lastTime_;
   summary["version"]["capsula"] = core::capsulaVersion();
@@ -554,17 +653,32 @@ void Run::writeSummary(const std::string& status, const std::string& failure)
     }
     summary["cells"].append(cell);
   }
+  for (std::size_t k = 0; k < lastPairs_.size(); ++k) {
+    io::JsonValue pair = io::JsonValue::object();
+    pair["cells"].append(description_.cells[static_cast<std::size_t>(lastPairs_[k].first)].path);
+    pair["cells"].append(description_.cells[static_cast<std::size_t>(lastPairs_[k].second)].path);
+    pair["final"] = pairJson(lastPairs_[k]);
+    if (k < steadyPairs_.size()) {
+      pair["steady"] = pairJson(steadyPairs_[k]);
+    }
+    summary["pairs"].append(pair);
+  }
+  summary["minimum gap"] = description_.minimumGap;
   if (lastWallAreas_) {
     summary["wall shear stress"]["minimum"] = lastWallAreas_->minimum;
     summary["wall shear stress"]["maximum"] = lastWallAreas_->maximum;
     summary["wall shear stress"]["elevated area upstream"] = lastWallAreas_->upstream;
     summary["wall shear stress"]["elevated area downstream"] = lastWallAreas_->downstream;
   }
+  if (lastOutsideIsolated_) {
+    summary["wall shear stress"]["area below the isolated cell's minimum"] = lastOutsideIsolated_->below;
+    summary["wall shear stress"]["area above the isolated cell's maximum"] = lastOutsideIsolated_->above;
+  }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart_).count();
   summary["timings"]["wall seconds (this process)"] = wall;
   for (const char* name : {"Membrane tensions and loads", "Boundary-integral velocity", "Single layer",
                            "Viscosity-ratio GMRES solve", "Fixed-height constraint", "Flow velocity at points",
-                           "Outputs", "Output files"}) {
+                           "Cell gap", "Outputs", "Output files"}) {
     summary["timings"][name] = core::timer(name)->totalElapsedTime();
   }
   summary["deck"] = core::deckToXml(deck_, false);
@@ -586,6 +700,7 @@ SceneRunResult Run::execute()
   timeint::OutputSchedule schedule;
   schedule.interval = description_.output.interval;
   bool steady = false;
+  bool tooClose = false;
   try {
     if (!restarted_) {
       state_ = integrator_->start(0.0, scene_->initialPositions());
@@ -598,16 +713,23 @@ SceneRunResult Run::execute()
     }
     simulatedStart_ = state_.time;
     const int progressSteps = description_.output.progressSteps;
-    while (!steady && state_.time < end) {
+    while (!steady && !tooClose && state_.time < end) {
       while (integrator_->outputTime(state_.outputOrigin, state_.nextOutput, schedule) <= state_.time) {
         ++state_.nextOutput;
       }
       const double tOut = integrator_->outputTime(state_.outputOrigin, state_.nextOutput, schedule);
       while (state_.time < tOut) {
         integrator_->step(state_, tOut);
+        tooClose = cellsTooClose();
+        if (tooClose) {
+          break;
+        }
         if (state_.statistics.acceptedSteps % progressSteps == 0 && state_.time < tOut) {
           progress(state_, lastD12_);
         }
+      }
+      if (tooClose) {
+        break;
       }
       ++state_.nextOutput;
       steady = observe(state_);
@@ -624,8 +746,8 @@ SceneRunResult Run::execute()
     }
     throw;
   }
-  const std::string status = steady ? "steady" : "finished";
-  onRoot(*comm_, [&] { writeSummary(status, ""); });
+  const std::string status = tooClose ? "too close" : steady ? "steady" : "finished";
+  onRoot(*comm_, [&] { writeSummary(status, stopReason_); });
   if (steady) {
     log() << "Steady state at t = " << state_.time << ": the shape changes slower than "
           << integrator_->settings().steadyTolerance << "\n";
@@ -643,14 +765,43 @@ SceneRunResult Run::execute()
 
 } // namespace
 
+std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange)
+{
+  if (numCells <= 1) {
+    std::vector<std::string> columns = metricsColumns(wallShearStress);
+    if (wallShearStress && isolatedRange) {
+      columns.insert(columns.end(), {"wall_area_below_isolated", "wall_area_above_isolated"});
+    }
+    return columns;
+  }
+  std::vector<std::string> columns{"time", "step", "dt"};
+  for (const auto& name : cellMetricNames()) {
+    for (int c = 0; c < numCells; ++c) {
+      columns.push_back(name + "_" + std::to_string(c));
+    }
+  }
+  columns.push_back("gmres_iterations");
+  const auto pairs = pairColumns(numCells);
+  columns.insert(columns.end(), pairs.begin(), pairs.end());
+  if (wallShearStress) {
+    columns.insert(columns.end(),
+                   {"wall_stress_min", "wall_stress_max", "wall_area_upstream", "wall_area_downstream"});
+    if (isolatedRange) {
+      columns.insert(columns.end(), {"wall_area_below_isolated", "wall_area_above_isolated"});
+    }
+  }
+  return columns;
+}
+
 std::vector<std::string> metricsColumns(bool wallShearStress)
 {
-  std::vector<std::string> columns{
-    "time", "step", "dt", "D12", "D13", "D23", "x_c", "y_c", "z_c", "u_slip", "u_migr", "volume", "area",
-    "reduced_volume", "footprint_xz", "mean_shear_stress", "cell", "inclination_deg", "w_c",
-    "u_slip_instant", "u_migr_instant", "omega_x", "omega_y", "omega_z", "volume_change", "area_change",
-    "max_shear_stress", "mean_shear_stress_increase", "max_shear_stress_increase", "shape_change_rate",
-    "gmres_iterations"};
+  const auto& names = cellMetricNames();
+  std::vector<std::string> columns{"time", "step", "dt"};
+  const auto split = names.begin() + static_cast<std::ptrdiff_t>(kMetricsBeforeCellColumn);
+  columns.insert(columns.end(), names.begin(), split);
+  columns.push_back("cell");
+  columns.insert(columns.end(), split, names.end());
+  columns.push_back("gmres_iterations");
   if (wallShearStress) {
     columns.insert(columns.end(),
                    {"wall_stress_min", "wall_stress_max", "wall_area_upstream", "wall_area_downstream"});

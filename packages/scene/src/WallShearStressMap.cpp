@@ -41,7 +41,7 @@ WallGrid WallGrid::around(double cx, double cz, double upstream, double downstre
 
 operators::WallShearStress wallShearStressOnGrid(operators::BoundaryIntegralSolver& solver,
                                                  const WallGrid& grid, double step,
-                                                 const double* elementLoads,
+                                                 const operators::LoadDensity& load,
                                                  const double* nodeVelocities,
                                                  const operators::FlowConditions& flow)
 {
@@ -57,7 +57,7 @@ operators::WallShearStress wallShearStressOnGrid(operators::BoundaryIntegralSolv
       points.insert(points.end(), {p[0], level * step, p[2]});
     }
   }
-  const std::vector<double> u = solver.flowVelocity(points, elementLoads, nodeVelocities, flow);
+  const std::vector<double> u = solver.flowVelocity(points, load, nodeVelocities, flow);
   operators::WallShearStress stress;
   stress.dudy.resize(nodes.size());
   stress.dwdy.resize(nodes.size());
@@ -103,6 +103,29 @@ ElevatedStressAreas elevatedStressAreas(const WallGrid& grid, const std::vector<
         areas.upstream += area;
       } else {
         areas.downstream += area;
+      }
+    }
+  }
+  return areas;
+}
+
+OutsideRangeAreas areasOutsideRange(const WallGrid& grid, const std::vector<double>& stress, double lowest,
+                                    double highest)
+{
+  core::require(static_cast<int>(stress.size()) == grid.numNodes(), "areasOutsideRange: ", stress.size(),
+                " values for ", grid.numNodes(), " grid nodes");
+  OutsideRangeAreas areas;
+  const double h2 = grid.spacing * grid.spacing;
+  // The trapezoidal rule's node areas, as in elevatedStressAreas.
+  const auto edgeWeight = [](int k, int n) { return (n > 1 && (k == 0 || k == n - 1)) ? 0.5 : 1.0; };
+  for (int j = 0; j < grid.nz; ++j) {
+    for (int i = 0; i < grid.nx; ++i) {
+      const double sigma = stress[static_cast<std::size_t>(grid.index(i, j))];
+      const double area = h2 * edgeWeight(i, grid.nx) * edgeWeight(j, grid.nz);
+      if (sigma < lowest) {
+        areas.below += area;
+      } else if (sigma > highest) {
+        areas.above += area;
       }
     }
   }

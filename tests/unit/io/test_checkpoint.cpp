@@ -128,7 +128,7 @@ TEST(Checkpoint, MissingTruncatedOrForeignFilesAreNamed)
   std::ofstream(garbage) << "this is not HDF5";
 
   const std::string snapshot = dir.file("snapshot.h5");
-  io::writeSnapshotFile(snapshot, io::Snapshot{});
+  io::createSnapshotFile(snapshot);
 
   for (const auto& path : {dir.file("missing.h5"), truncated, garbage, snapshot}) {
     try {

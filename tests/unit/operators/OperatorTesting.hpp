@@ -64,6 +64,23 @@ std::vector<double> elementAverages(const CellSurfaces& surfaces, Field&& f)
   return loads;
 }
 
+/// Nodal values (3 per node) in the 18-per-element layout of LoadDensity: a continuous
+/// load interpolated by the shape functions.
+inline std::vector<double> gatherElementNodeValues(const CellSurfaces& surfaces, const std::vector<double>& nodal)
+{
+  std::vector<double> values;
+  for (int c = 0; c < surfaces.numCells(); ++c) {
+    const auto& cell = surfaces.cell(c);
+    for (int e = 0; e < cell.numElements(); ++e) {
+      for (const int node : cell.element(e)) {
+        const std::size_t g = 3 * static_cast<std::size_t>(surfaces.nodeOffset(c) + node);
+        values.insert(values.end(), {nodal[g], nodal[g + 1], nodal[g + 2]});
+      }
+    }
+  }
+  return values;
+}
+
 /// A nodal field g(position) at every node of every cell, 3 per node.
 template <class Field>
 std::vector<double> nodalField(const CellSurfaces& surfaces, Field&& g)

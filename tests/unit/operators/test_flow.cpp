@@ -70,8 +70,8 @@ TEST(FlowVelocity, HadamardRybczynskiFlowInsideAndOutside)
       FlowConditions flow;
       flow.capillaryNumber = 1.0;
       flow.background = LinearFlow::quiescent();
-      const auto nodes = solver->nodeVelocities(loads.data(), flow);
-      const auto u = solver->flowVelocity(points, loads.data(), nodes.velocities.data(), flow);
+      const auto nodes = solver->nodeVelocities(LoadDensity::constantOverElements(loads), flow);
+      const auto u = solver->flowVelocity(points, LoadDensity::constantOverElements(loads), nodes.velocities.data(), flow);
       double error = 0.0;
       for (std::size_t p = 0; p < probes.size(); ++p) {
         const Vec3 exact = hadamardRybczynskiFlow(probes[p], lambda);
@@ -116,7 +116,7 @@ double passiveNeighbourError(double gap, const DiscretisationParameters& paramet
   FlowConditions flow;
   flow.capillaryNumber = 1.0;
   flow.background = LinearFlow::quiescent();
-  const auto u = solver->nodeVelocities(loads.data(), flow).velocities;
+  const auto u = solver->nodeVelocities(LoadDensity::constantOverElements(loads), flow).velocities;
   const auto x = solver->surfaces().positions();
   double error = 0.0;
   for (int n = solver->surfaces().nodeOffset(1); n < solver->surfaces().numNodes(); ++n) {
@@ -165,7 +165,7 @@ TEST(FlowVelocity, BlakeFlowVanishesOnTheWall)
     });
     FlowConditions flow;
     flow.capillaryNumber = 0.3;
-    const auto nodes = solver->nodeVelocities(loads.data(), flow);
+    const auto nodes = solver->nodeVelocities(LoadDensity::constantOverElements(loads), flow);
     std::vector<double> wall, above;
     for (const double x : {-2.0, 0.0, 0.2, 0.5, 3.0}) {
       for (const double z : {-1.0, -0.1, 0.3}) {
@@ -173,8 +173,8 @@ TEST(FlowVelocity, BlakeFlowVanishesOnTheWall)
         above.insert(above.end(), {x, 0.5, z});
       }
     }
-    const auto onWall = solver->flowVelocity(wall, loads.data(), nodes.velocities.data(), flow);
-    const auto nearWall = solver->flowVelocity(above, loads.data(), nodes.velocities.data(), flow);
+    const auto onWall = solver->flowVelocity(wall, LoadDensity::constantOverElements(loads), nodes.velocities.data(), flow);
+    const auto nearWall = solver->flowVelocity(above, LoadDensity::constantOverElements(loads), nodes.velocities.data(), flow);
     const double scale = std::abs(*std::max_element(nearWall.begin(), nearWall.end(),
                                                     [](double a, double b) { return std::abs(a) < std::abs(b); }));
     for (const double v : onWall) {
@@ -230,9 +230,9 @@ TEST(WallShearStress, LoadedSphereMatchesBlakeSolution)
   const auto loads = elementAverages(solver->surfaces(), [&](const Vec3&, const Vec3&) { return f; });
   FlowConditions flow;
   flow.capillaryNumber = 1.0;
-  const auto nodes = solver->nodeVelocities(loads.data(), flow);
+  const auto nodes = solver->nodeVelocities(LoadDensity::constantOverElements(loads), flow);
   const std::vector<double> wallPoints = {0.2, -0.1, 1.0, 0.5, -0.7, -1.2, 2.5, 0.0};
-  const auto stress = wallShearStress(*solver, wallPoints, 0.02, loads.data(), nodes.velocities.data(), flow);
+  const auto stress = wallShearStress(*solver, wallPoints, 0.02, LoadDensity::constantOverElements(loads), nodes.velocities.data(), flow);
   double largest = 0.0, error = 0.0;
   for (std::size_t p = 0; p < wallPoints.size() / 2; ++p) {
     const Vec3 du = blakeSphereWallGradient(c, a, F, wallPoints[2 * p], wallPoints[2 * p + 1]);
@@ -257,13 +257,13 @@ TEST(WallShearStress, UndisturbedShearGivesOne)
   auto solver = makeSolver("Wall", cellAboveWall(1, 0.5, 1.0));
   const std::vector<double> zero(3 * solver->surfaces().numElements(), 0.0);
   FlowConditions flow;
-  const auto nodes = solver->nodeVelocities(zero.data(), flow);
-  const auto stress = wallShearStress(*solver, {0.0, 0.0, 1.0, 2.0}, 0.05, zero.data(), nodes.velocities.data(), flow);
+  const auto nodes = solver->nodeVelocities(LoadDensity::constantOverElements(zero), flow);
+  const auto stress = wallShearStress(*solver, {0.0, 0.0, 1.0, 2.0}, 0.05, LoadDensity::constantOverElements(zero), nodes.velocities.data(), flow);
   for (std::size_t p = 0; p < 2; ++p) {
     EXPECT_NEAR(stress.magnitude[p], 1.0, 1e-13); // the stencil is exact for linear u
     EXPECT_NEAR(stress.dwdy[p], 0.0, 1e-13);
   }
-  EXPECT_THROW(wallShearStress(*solver, {0.0, 0.0}, 0.0, zero.data(), nodes.velocities.data(), flow),
+  EXPECT_THROW(wallShearStress(*solver, {0.0, 0.0}, 0.0, LoadDensity::constantOverElements(zero), nodes.velocities.data(), flow),
                core::InputError);
 }
 

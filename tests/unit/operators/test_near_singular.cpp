@@ -108,14 +108,16 @@ void expectCurvedElementMatchesReference(const Vec3& centre)
   placement.centre = centre;
   const auto sphere = mesh::makeSphere(2, 1.0, placement);
   const auto& fine = quadrature::triangleRule(19);
-  const Vec3 load(0.3, -1.1, 0.6);
+  // A load that varies over the element (values at its six nodes, LoadDensity layout).
+  const double load[18] = {0.3, -1.1, 0.6, 0.5, -0.9, 0.4, 0.1, -1.3, 0.8,
+                           0.4, -1.0, 0.5, 0.3, -1.2, 0.7, 0.2, -1.1, 0.6};
   for (const int e : {5, 211}) {
     const mesh::ElementNodes x = sphere.elementNodes(e);
     const ElementMap element(x, mesh::shapeParameters(x));
     const double size = std::max({(x[1] - x[0]).norm(), (x[2] - x[1]).norm(), (x[0] - x[2]).norm()});
     for (const double ratio : {1.0, 0.1, 0.01}) {
       for (const Vec3& x0 : targets(x, ratio * size)) {
-        const LoadedSingleLayerIntegrand<Kernel> single{x0.data(), load.data()};
+        const LoadedSingleLayerIntegrand<Kernel> single{x0.data(), load};
         const DoubleLayerIntegrand<Kernel> dbl{x0.data()};
         const auto u = integrateAdaptively(element, single, defaultRule(), defaultTolerance);
         const auto uRef = integrateAdaptively(element, single, fine, 1e-13);

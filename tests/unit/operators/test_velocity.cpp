@@ -77,7 +77,7 @@ TEST(Velocity, StokesDragOfTranslatingSphere)
     auto solver = makeSolver("FreeSpace", sphere(level));
     const Vec3 f = -1.5 / radius * U;
     const auto loads = elementAverages(solver->surfaces(), [&](const Vec3&, const Vec3&) { return f; });
-    const auto u = solver->nodeVelocities(loads.data(), quiescent()).velocities;
+    const auto u = solver->nodeVelocities(LoadDensity::constantOverElements(loads), quiescent()).velocities;
     errors.push_back(maxError(u, nodalField(solver->surfaces(), [](const Vec3&) { return U; })));
   }
   const double order = reportConvergence("Stokes sphere: u = U at the nodes", levels, errors);
@@ -114,7 +114,7 @@ TEST(Velocity, HadamardRybczynskiDropForEachViscosityRatio)
     for (const int level : levels) {
       auto solver = makeSolver("FreeSpace", sphere(level), lambda);
       const auto loads = hadamardRybczynskiLoads(solver->surfaces(), lambda);
-      const VelocitySolution solution = solver->nodeVelocities(loads.data(), quiescent());
+      const VelocitySolution solution = solver->nodeVelocities(LoadDensity::constantOverElements(loads), quiescent());
       errors.push_back(maxError(solution.velocities, hadamardRybczynskiVelocity(solver->surfaces(), lambda)));
       iterations.push_back(solution.iterations);
       std::printf("HR drop lambda %4.1f level %d: GMRES %d iterations, residual %.2e\n", lambda, level,
@@ -143,11 +143,11 @@ TEST(Velocity, GmresAtLambdaOneReproducesTheExplicitVelocity)
   const auto loads = hadamardRybczynskiLoads(explicitSolver->surfaces(), 1.0);
   FlowConditions flow; // simple shear over the wall
   flow.capillaryNumber = 0.4;
-  const auto a = explicitSolver->nodeVelocities(loads.data(), flow);
+  const auto a = explicitSolver->nodeVelocities(LoadDensity::constantOverElements(loads), flow);
   // From a zero start (the default start, the right-hand side, is already the answer):
   // with 1 - lambda = 0 the operator is the identity and GMRES needs one step.
   const std::vector<double> zero(a.velocities.size(), 0.0);
-  const auto b = gmresSolver->nodeVelocities(loads.data(), flow, zero.data());
+  const auto b = gmresSolver->nodeVelocities(LoadDensity::constantOverElements(loads), flow, zero.data());
   EXPECT_EQ(a.iterations, 0);
   EXPECT_EQ(b.iterations, 1);
   double scale = 0.0, difference = 0.0;
@@ -174,7 +174,7 @@ TEST(Velocity, RigidMotionOfTheFlowIsFollowedForAnyViscosityRatio)
       flow.background.velocity = Vec3(0.2, -0.1, 0.3);
       flow.background.gradient << 0.0, -0.5, 0.2, 0.5, 0.0, -0.3, -0.2, 0.3, 0.0; // antisymmetric
       const std::vector<double> zero(3 * solver->surfaces().numElements(), 0.0);
-      const auto solution = solver->nodeVelocities(zero.data(), flow);
+      const auto solution = solver->nodeVelocities(LoadDensity::constantOverElements(zero), flow);
       const auto exact = nodalField(solver->surfaces(), [&](const Vec3& x) { return Vec3(flow.background.at(x)); });
       double error = 0.0;
       for (std::size_t k = 0; k < exact.size(); ++k) {
@@ -206,8 +206,8 @@ TEST(Velocity, PassiveCellDoesNotDisturbTheOther)
   loads.resize(3 * pair->surfaces().numElements(), 0.0);
   FlowConditions flow;
   flow.capillaryNumber = 1.0;
-  const auto a = alone->nodeVelocities(loadsA.data(), flow);
-  const auto ab = pair->nodeVelocities(loads.data(), flow);
+  const auto a = alone->nodeVelocities(LoadDensity::constantOverElements(loadsA), flow);
+  const auto ab = pair->nodeVelocities(LoadDensity::constantOverElements(loads), flow);
   const int numA = alone->surfaces().numNodes();
   double scale = 0.0, differenceA = 0.0;
   for (int k = 0; k < 3 * numA; ++k) {
@@ -218,7 +218,7 @@ TEST(Velocity, PassiveCellDoesNotDisturbTheOther)
   EXPECT_LT(differenceA, 1e-8 * scale);
   const auto positions = pair->surfaces().positions();
   const std::vector<double> pointsB(positions.begin() + 3 * numA, positions.end());
-  const auto flowAtB = alone->flowVelocity(pointsB, loadsA.data(), a.velocities.data(), flow);
+  const auto flowAtB = alone->flowVelocity(pointsB, LoadDensity::constantOverElements(loadsA), a.velocities.data(), flow);
   double differenceB = 0.0;
   for (std::size_t k = 0; k < flowAtB.size(); ++k) {
     differenceB = std::max(differenceB, std::abs(flowAtB[k] - ab.velocities[3 * numA + k]));

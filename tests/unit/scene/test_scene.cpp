@@ -163,7 +163,7 @@ TEST(Scene, WallShearStressConvergesAtFourthOrderAndMatchesTheOperators)
   const auto fields = s.evaluate(0.0, x);
   const auto grid = scene::WallGrid::around(0.0, 0.0, 2.0, 2.0, 1.0, 0.5);
   const auto at = [&](double step) {
-    return scene::wallShearStressOnGrid(s.solver(), grid, step, fields.elementLoads.data(),
+    return scene::wallShearStressOnGrid(s.solver(), grid, step, capsula::operators::LoadDensity(fields.loadDensity.data()),
                                         fields.solverVelocities.data(), s.flow());
   };
   const auto coarse = at(0.04), medium = at(0.02), fine = at(0.01);
@@ -177,7 +177,7 @@ TEST(Scene, WallShearStressConvergesAtFourthOrderAndMatchesTheOperators)
   for (const auto& p : grid.nodes()) {
     wallPoints.insert(wallPoints.end(), {p[0], p[2]});
   }
-  const auto theirs = capsula::operators::wallShearStress(s.solver(), wallPoints, 0.02, fields.elementLoads.data(),
+  const auto theirs = capsula::operators::wallShearStress(s.solver(), wallPoints, 0.02, capsula::operators::LoadDensity(fields.loadDensity.data()),
                                                           fields.solverVelocities.data(), s.flow());
   double lowest = HUGE_VAL, highest = 0.0;
   for (std::size_t k = 0; k < fine.magnitude.size(); ++k) {
@@ -198,7 +198,7 @@ TEST(Scene, WallShearStressOfTheUndisturbedFlowIsOne)
   auto s = makeScene(*smallDeck(1, 1.6, true));
   const auto fields = s.evaluate(0.0, s.initialPositions());
   const auto grid = scene::WallGrid::around(0.0, 0.0, 1.0, 1.0, 1.0, 0.5);
-  const auto stress = scene::wallShearStressOnGrid(s.solver(), grid, 0.03, fields.elementLoads.data(),
+  const auto stress = scene::wallShearStressOnGrid(s.solver(), grid, 0.03, capsula::operators::LoadDensity(fields.loadDensity.data()),
                                                    fields.solverVelocities.data(), s.flow());
   for (double sigma : stress.magnitude) {
     EXPECT_NEAR(sigma, 1.0, 1e-10);

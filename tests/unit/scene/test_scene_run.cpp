@@ -3,6 +3,7 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
 #include <capsula/io/MetricsCsv.hpp>
+#include <capsula/io/SnapshotFile.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/scene/SceneRun.hpp>
 
@@ -55,6 +56,28 @@ protected:
     return text.str();
   }
 
+  /// The snapshot series of two run directories hold the same values, bit for bit.
+  void expectSameSnapshots(const std::string& a, const std::string& b) const
+  {
+    const std::string fileA = (root_ / a / "snapshots.h5").string(), fileB = (root_ / b / "snapshots.h5").string();
+    const std::size_t count = capsula::io::readSnapshotLayouts(fileB).size();
+    ASSERT_EQ(capsula::io::readSnapshotLayouts(fileA).size(), count);
+    EXPECT_GT(count, 1u);
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto x = capsula::io::readSnapshot(fileA, k), y = capsula::io::readSnapshot(fileB, k);
+      EXPECT_EQ(x.time, y.time);
+      ASSERT_EQ(x.blocks.size(), y.blocks.size());
+      for (std::size_t i = 0; i < x.blocks.size(); ++i) {
+        EXPECT_EQ(x.blocks[i].positions, y.blocks[i].positions) << "snapshot " << k;
+        ASSERT_EQ(x.blocks[i].nodeFields.size(), y.blocks[i].nodeFields.size());
+        for (std::size_t f = 0; f < x.blocks[i].nodeFields.size(); ++f) {
+          EXPECT_EQ(x.blocks[i].nodeFields[f].values, y.blocks[i].nodeFields[f].values) << "snapshot " << k;
+        }
+      }
+    }
+    EXPECT_EQ(read(a + "/snapshots.xdmf"), read(b + "/snapshots.xdmf"));
+  }
+
   fs::path root_;
 };
 
@@ -63,10 +86,12 @@ TEST_F(SceneRunTest, WritesTheOutputContract)
   const auto result = run(*smallDeck(1, 2.0, true), "out");
   EXPECT_EQ(result.status, "finished");
   EXPECT_DOUBLE_EQ(result.time, 0.2);
-  for (const char* file : {"metrics.csv", "summary.json", "cells.xdmf", "cells_000000.h5", "cells_000002.h5",
+  for (const char* file : {"metrics.csv", "summary.json", "snapshots.xdmf", "snapshots.h5",
                            "checkpoint.h5", "deck.xml", "run.json"}) {
     EXPECT_TRUE(fs::exists(root_ / "out" / file)) << file;
   }
+  // One file holds every snapshot: t = 0, 0.1, 0.2.
+  EXPECT_EQ(capsula::io::readSnapshotLayouts((root_ / "out" / "snapshots.h5").string()).size(), 3u);
   const auto table = capsula::io::readCsvTable((root_ / "out" / "metrics.csv").string());
   const std::vector<std::string> required{"time", "step", "dt", "D12", "D13", "D23", "x_c", "y_c", "z_c",
                                           "u_slip", "u_migr", "volume", "area", "reduced_volume",
@@ -125,9 +150,12 @@ TEST_F(SceneRunTest, RestartReproducesTheUninterruptedRun)
   EXPECT_EQ(result.status, "finished");
   // Bit for bit: the tables are the same text.
   EXPECT_EQ(read("split/metrics.csv"), read("whole/metrics.csv"));
-  // Restarting into another directory carries the table over.
+  // The restarted run appended to the same snapshot file: the same series, bit for bit.
+  expectSameSnapshots("split", "whole");
+  // Restarting into another directory carries the table and the snapshots over.
   run(*deck, "moved", "split");
   EXPECT_EQ(read("moved/metrics.csv"), read("whole/metrics.csv"));
+  expectSameSnapshots("moved", "whole");
 }
 
 TEST_F(SceneRunTest, RestartRefusesAChangedDeck)

@@ -47,4 +47,26 @@ TEST(WallShearStressMap, AreasAreTrapezoidalAndSplitAtTheCell)
   EXPECT_DOUBLE_EQ(areas.maximum, 1.06);
 }
 
+TEST(WallShearStressMap, AreasOutsideTheIsolatedCellsRange)
+{
+  const auto grid = scene::WallGrid::around(0.0, 0.0, 2.0, 4.0, 1.0, 0.5);   // 6 x 2 in all
+  // Below the range where x < -1 (nodes at -2 .. -1.5: dual strip [-2, -1.25] x [-1, 1]),
+  // above it where x > 3 (nodes 3.5 .. 4: [3.25, 4] x [-1, 1]), inside elsewhere; the range
+  // ends themselves count as inside. Sums of halves and quarters: exact.
+  std::vector<double> stress(static_cast<std::size_t>(grid.numNodes()));
+  for (int j = 0; j < grid.nz; ++j) {
+    for (int i = 0; i < grid.nx; ++i) {
+      const double x = grid.node(i, j)[0];
+      stress[static_cast<std::size_t>(grid.index(i, j))] = x < -1.0 ? 0.7 : x > 3.0 ? 1.3 : x == 0.0 ? 0.9 : 1.1;
+    }
+  }
+  auto areas = scene::areasOutsideRange(grid, stress, 0.9, 1.1);
+  EXPECT_DOUBLE_EQ(areas.below, 1.5);
+  EXPECT_DOUBLE_EQ(areas.above, 1.5);
+  areas = scene::areasOutsideRange(grid, stress, 0.0, 10.0);
+  EXPECT_DOUBLE_EQ(areas.below + areas.above, 0.0);
+  areas = scene::areasOutsideRange(grid, stress, 5.0, 10.0);
+  EXPECT_DOUBLE_EQ(areas.below, 12.0);   // the whole grid
+}
+
 } // namespace

@@ -18,24 +18,50 @@
 //     rest and under uniform dilation, and frame indifferent. Then A <- (I - nn) A (I - NN)
 //     (eq 3.26), B = A A^T, principal stretches, invariants, the law's dw/dI and the
 //     tension T (eq 3.30) with its principal values;
-//  3. per edge: the force int T . b dl across it (EdgeTensionForce.hpp), added to the
-//     two elements with opposite signs, so that A_m <Delta f>_m = -oint_{C_m} T . b dl
-//     (eq 3.37, ERRATA) and sum_m A_m <Delta f>_m = 0 exactly on a closed membrane.
+//  3. the load, by one of two methods (MembraneForceMethod):
+//     - ContourIntegral, the thesis's: per edge the force int T . b dl across it
+//       (EdgeTensionForce.hpp), added to the two elements with opposite signs, so that
+//       A_m <Delta f>_m = -oint_{C_m} T . b dl (eq 3.37, ERRATA) and sum_m A_m <Delta f>_m
+//       = 0 exactly on a closed membrane. The load is constant per element.
+//     - VirtualWork: nodal forces F_k = dE/dx_k of the strain energy (element-wise exact
+//       deformation at the N_Q points, MembraneEnergyGradient.hpp), and the continuous
+//       load Delta f = sum_k phi_k f_k with M f = F (M the consistent mass matrix,
+//       mesh::SurfaceMassMatrix): int phi_k Delta f dS = dE/dx_k, the weak form of
+//       Delta f = -div_s T. Unlike the contour integral, which sees the kinks of a C0
+//       mesh only through averaged nodal normals, it has no zero-energy modes: the
+//       element-averaged load lets a prestressed or stiff-dilation membrane fold within
+//       a few shear times (docs/validation-cell3d.md), the virtual-work load does not.
+//     Both give elementLoads() (the average over each element); VirtualWork also gives
+//     nodalLoads() for the single layer to interpolate.
 // Sign (ERRATA): Delta f = (sigma_ext - sigma_int) . n = -div_s T, n outward; a sphere
 // of radius r under isotropic tension T carries Delta f = (2 T / r) n.
+#include "capsula/elasticity/MembraneEnergyGradient.hpp"
 #include "capsula/elasticity/MembraneLaw.hpp"
 #include "capsula/elasticity/MembraneTension.hpp"
 #include "capsula/elasticity/SurfaceKinematics.hpp"
 
+#include <capsula/mesh/SurfaceMassMatrix.hpp>
 #include <capsula/mesh/SurfaceMesh.hpp>
 #include <capsula/quadrature/Rule1D.hpp>
 #include <capsula/quadrature/TriangleRule.hpp>
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace capsula::elasticity {
+
+/// How the load on the fluids is computed from the membrane's deformation.
+enum class MembraneForceMethod {
+  ContourIntegral, ///< thesis eq 3.37: element-averaged, from nodal tensions
+  VirtualWork      ///< nodal forces dE/dx_k and a continuous load M^-1 F
+};
+
+/// "Contour integral" / "Virtual work" (the deck's names) and back; throws
+/// core::InputError for an unknown name.
+MembraneForceMethod membraneForceMethod(const std::string& name);
+std::string to_string(MembraneForceMethod method);
 
 /// Accuracy knobs of MembraneMechanics.
 struct MembraneDiscretisation {
@@ -44,6 +70,8 @@ struct MembraneDiscretisation {
   int numQuadraturePoints = 7;
   /// Gauss-Legendre points along each curved edge for the contour integral (eq 3.37).
   int numEdgePoints = 4;
+  /// How the load is computed (the scene's default is VirtualWork, see SceneParameters).
+  MembraneForceMethod forceMethod = MembraneForceMethod::ContourIntegral;
 };
 
 /// The node where the smallest principal tension sits, and its value.
@@ -81,6 +109,10 @@ public:
   const std::vector<Vec3>& elementForces() const { return force_; }
   /// <Delta f>_m (eq 3.37), what multiplies int_{E_m} G dS in the single layer (eq 3.38).
   const std::vector<Vec3>& elementLoads() const { return load_; }
+  /// VirtualWork only: the nodal values f_k of the continuous load Delta f = sum phi_k f_k.
+  const std::vector<Vec3>& nodalLoads() const { return nodalLoad_; }
+  /// VirtualWork only: F_k = dE/dx_k, the nodal forces of virtual work (sum_k F_k = 0).
+  const std::vector<Vec3>& nodalForces() const { return nodalForce_; }
 
   /// sum_m A_m <Delta f>_m: zero to round-off (shared edges cancel exactly).
   Vec3 netForce() const;
@@ -112,6 +144,9 @@ private:
   const quadrature::TriangleRule* areaRule_;
   quadrature::Rule1D edgeRule_;
 
+  void contourIntegralLoads(const double* positions);
+  void virtualWorkLoads(const double* positions);
+
   // Reference data, per element (shape parameters) and per element node (6 e + j).
   std::vector<mesh::ShapeParameters> referenceParameters_;
   std::vector<Vec3> referenceNormal_;              // per node, area-averaged N
@@ -121,6 +156,8 @@ private:
   std::vector<std::array<Vec3, 2>> currentTangent_; // x_xi, x_eta per element node (material)
   std::vector<double> weight_;                      // per node: sum of incident areas
   std::vector<Mat3> gradient_;                      // per node: averaged A
+  std::vector<ReferenceQuadraturePoint> referencePoints_; // VirtualWork: N_Q per element
+  std::unique_ptr<mesh::SurfaceMassMatrix> mass_;          // VirtualWork only
 
   // Results.
   std::vector<double> area_;
@@ -132,6 +169,8 @@ private:
   std::vector<PrincipalTensions> principal_;
   std::vector<Vec3> force_;
   std::vector<Vec3> load_;
+  std::vector<Vec3> nodalForce_;
+  std::vector<Vec3> nodalLoad_;
 };
 
 } // namespace capsula::elasticity

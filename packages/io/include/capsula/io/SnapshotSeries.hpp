@@ -1,14 +1,25 @@
 #pragma once
-// A time series of snapshots in an output directory:
+// A run's time series of snapshots in its output directory:
 //
-//   <dir>/<base>_000000.h5, <base>_000001.h5, ...   one self-contained file per snapshot
-//   <dir>/<base>.xdmf                                the ParaView entry point
+//   <dir>/<base>.h5     every snapshot, the mesh versions and the wall fields
+//                       (one HDF5 file, layout in SnapshotFile.hpp)
+//   <dir>/<base>.xdmf   the ParaView entry point: a temporal collection over <base>.h5
 //
-// Why one file per snapshot: each is written to a temporary name and renamed, and the
-// XDMF is rewritten atomically afterwards, so at every instant the XDMF references only
-// complete files, and a crash can neither corrupt earlier snapshots (as a crash inside a
-// single growing HDF5 file can) nor leave a half-written one. Restart drops the snapshots
-// written after the checkpoint.
+// Why this order of writes, and what a failure costs:
+// - A new series creates <base>.h5 (no snapshot yet) atomically: a temporary file,
+//   fsync, rename; then the XDMF.
+// - write() appends the snapshot to <base>.h5 (the file is closed between snapshots; an
+//   append opens it, writes through an undo journal, links the new group last, flushes,
+//   closes and fsyncs: see SnapshotFile.hpp) and only then rewrites the XDMF atomically
+//   (write-then-rename). So the XDMF never names a snapshot that is not complete on disk,
+//   and a run that dies at any point leaves a file that holds every snapshot completed
+//   before, possibly after the next writer has undone the interrupted append (the
+//   journal <base>.h5.undo exists only while an append runs or after one was
+//   interrupted), and an XDMF that is at most one snapshot short.
+// - resume() (restart from a checkpoint at time t) first undoes an interrupted append,
+//   then keeps the snapshots with time <= t, removes the ones the stopped run wrote after
+//   its checkpoint, and rewrites the XDMF, so a restarted run appends to the same file
+//   and ends with the series of an uninterrupted run.
 //
 // Serial: call from one rank (gather to it first).
 #include "capsula/io/Snapshot.hpp"
@@ -21,33 +32,31 @@ namespace capsula::io {
 
 class SnapshotSeries {
 public:
-  /// A new series. Snapshot files of an earlier series with the same base name in
-  /// `directory` are removed (they would otherwise mix with this run's). `baseName` must
-  /// be letters, digits, '_', '-' or '.'.
+  /// A new, empty series: creates <directory>/<baseName>.h5 and .xdmf, replacing those of
+  /// an earlier run. `baseName` must be letters, digits, '_', '-' or '.'. Throws
+  /// core::IoError naming a directory or file that cannot be written.
   SnapshotSeries(std::string directory, std::string baseName);
 
   /// Continues the series after a restart from a checkpoint at `checkpointTime`: keeps the
-  /// snapshots with time <= checkpointTime, deletes later ones (written after the
-  /// checkpoint by the run that stopped) and rewrites the XDMF. Throws core::IoError
-  /// naming a file that cannot be read.
-  static SnapshotSeries resume(std::string directory, std::string baseName, double checkpointTime);
+  /// snapshots with time <= checkpointTime, removes later ones (written after the
+  /// checkpoint by the run that stopped) and rewrites the XDMF. If `sourceDirectory` is
+  /// given and differs from `directory` (a restart that writes elsewhere), the source's
+  /// file is first copied over, so the new directory holds the whole series. Without a
+  /// file to continue (the stopped run wrote no snapshot) a new series starts. Throws
+  /// core::IoError naming a file that cannot be read (with what to do about it).
+  static SnapshotSeries resume(std::string directory, std::string baseName, double checkpointTime,
+                               const std::string& sourceDirectory = "");
 
-  /// Writes the next snapshot file and the updated XDMF; returns the snapshot's path.
-  std::string write(const Snapshot& snapshot);
+  /// Appends the snapshot, then updates the XDMF; returns its index (0-based).
+  std::size_t write(const Snapshot& snapshot);
 
   std::size_t size() const { return layouts_.size(); }
   const std::vector<SnapshotLayout>& layouts() const { return layouts_; }
+  std::string filePath() const;
   std::string xdmfPath() const;
-  /// Path of snapshot `index` (0-based).
-  std::string snapshotPath(std::size_t index) const;
 
 private:
-  SnapshotSeries() = default;
-  struct ExistingFile {
-    std::size_t index;
-    std::string path;
-  };
-  std::vector<ExistingFile> existingFiles() const;
+  SnapshotSeries(std::string directory, std::string baseName, bool create);
   void writeXdmf() const;
 
   std::string directory_;

@@ -18,6 +18,7 @@
 #include <capsula/operators/CellSurfaces.hpp>
 #include <capsula/operators/DoubleLayerForm.hpp>
 #include <capsula/operators/LinearFlow.hpp>
+#include <capsula/operators/LoadDensity.hpp>
 
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_RCP.hpp>
@@ -53,11 +54,11 @@ public:
   /// quadrature caches. Throws core::InputError if a node leaves the fluid domain.
   virtual void setPositions(const double* positions) = 0;
 
-  /// The velocity of every node (eq above) for element-averaged loads <Delta f>_m (3 per
-  /// element, global numbering). `initialGuess` (3 per node, or null: the right-hand
+  /// The velocity of every node (eq above) for the membrane load `load` (LoadDensity.hpp:
+  /// Delta f at the nodes of every element, global numbering). `initialGuess` (3 per node, or null: the right-hand
   /// side) starts GMRES when some lambda != 1. Collective; throws core::NumericalError if
   /// GMRES does not converge.
-  virtual VelocitySolution nodeVelocities(const double* elementLoads, const FlowConditions& flow,
+  virtual VelocitySolution nodeVelocities(const LoadDensity& load, const FlowConditions& flow,
                                           const double* initialGuess = nullptr) = 0;
 
   /// The fluid velocity at points off the surfaces (eq 3.59; 3 per point, the same list
@@ -67,15 +68,15 @@ public:
   /// geometry (may be null when every lambda = 1). Points must lie off the surfaces (a
   /// point on one gets a meaningless value) and in the kernel's fluid domain (else
   /// core::InputError). Collective.
-  virtual std::vector<double> flowVelocity(const std::vector<double>& points, const double* elementLoads,
+  virtual std::vector<double> flowVelocity(const std::vector<double>& points, const LoadDensity& load,
                                            const double* nodeVelocities, const FlowConditions& flow) = 0;
 
   /// The raw integrals (no prefactors), for checks and diagnostics; collective, results
   /// on every rank. At the nodes: SL(x_t), 3 per node, and DL(x_t) of a nodal density.
-  virtual std::vector<double> singleLayer(const double* elementLoads) = 0;
+  virtual std::vector<double> singleLayer(const LoadDensity& load) = 0;
   virtual std::vector<double> doubleLayer(const double* density, DoubleLayerForm form) = 0;
   /// At points off the surfaces (3 per point).
-  virtual std::vector<double> singleLayerAt(const std::vector<double>& points, const double* elementLoads) = 0;
+  virtual std::vector<double> singleLayerAt(const std::vector<double>& points, const LoadDensity& load) = 0;
   virtual std::vector<double> doubleLayerAt(const std::vector<double>& points, const double* density) = 0;
   /// Solid angle of each cell seen from each point: [numCells * p + c], 4 pi inside.
   virtual std::vector<double> solidAnglesAt(const std::vector<double>& points) = 0;

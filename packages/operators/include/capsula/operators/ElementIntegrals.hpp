@@ -126,8 +126,9 @@ struct SingleLayerIntegrand {
   }
 };
 
-/// f_i int_E G_ij(x, x0) dS for a load f constant on the element, as value[j] (one group):
-/// the element's term of the single layer (eq 3.36) when the load is known.
+/// int_E f_i G_ij(x, x0) dS for the load f = sum_a phi_a f_a interpolated from the
+/// element's nodes, as value[j] (one group): the element's term of the single layer
+/// (eq 3.36) when the load is known.
 template <class Kernel>
 struct LoadedSingleLayerIntegrand {
   static constexpr int size = 3;
@@ -135,11 +136,19 @@ struct LoadedSingleLayerIntegrand {
   using Value = std::array<double, size>;
 
   const double* x0;
-  const double* load;
+  const double* load; ///< Delta f at the element's six nodes, [3 a + i] (LoadDensity.hpp)
 
   void evaluate(const ElementSample& s, Value& value) const
   {
-    const double f[3] = {s.weight * load[0], s.weight * load[1], s.weight * load[2]};
+    double f[3] = {0.0, 0.0, 0.0};
+    for (int a = 0; a < 6; ++a) {
+      for (int i = 0; i < 3; ++i) {
+        f[i] += s.phi[a] * load[3 * a + i];
+      }
+    }
+    for (double& fi : f) {
+      fi *= s.weight;
+    }
     value = {0.0, 0.0, 0.0};
     addSingleLayerTerm<Kernel>(s.x, x0, f, value.data());
   }

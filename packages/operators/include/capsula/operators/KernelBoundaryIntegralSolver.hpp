@@ -35,14 +35,14 @@ public:
   int numOwnedNodes() const override { return distribution_.numOwnedNodes(); }
 
   void setPositions(const double* positions) override;
-  VelocitySolution nodeVelocities(const double* elementLoads, const FlowConditions& flow,
+  VelocitySolution nodeVelocities(const LoadDensity& load, const FlowConditions& flow,
                                   const double* initialGuess = nullptr) override;
-  std::vector<double> flowVelocity(const std::vector<double>& points, const double* elementLoads,
+  std::vector<double> flowVelocity(const std::vector<double>& points, const LoadDensity& load,
                                    const double* nodeVelocities, const FlowConditions& flow) override;
 
-  std::vector<double> singleLayer(const double* elementLoads) override;
+  std::vector<double> singleLayer(const LoadDensity& load) override;
   std::vector<double> doubleLayer(const double* density, DoubleLayerForm form) override;
-  std::vector<double> singleLayerAt(const std::vector<double>& points, const double* elementLoads) override;
+  std::vector<double> singleLayerAt(const std::vector<double>& points, const LoadDensity& load) override;
   std::vector<double> doubleLayerAt(const std::vector<double>& points, const double* density) override;
   std::vector<double> solidAnglesAt(const std::vector<double>& points) override;
 
@@ -99,7 +99,7 @@ void KernelBoundaryIntegralSolver<Kernel>::setPositions(const double* positions)
 }
 
 template <class Kernel>
-VelocitySolution KernelBoundaryIntegralSolver<Kernel>::nodeVelocities(const double* elementLoads,
+VelocitySolution KernelBoundaryIntegralSolver<Kernel>::nodeVelocities(const LoadDensity& load,
                                                                       const FlowConditions& flow,
                                                                       const double* initialGuess)
 {
@@ -113,7 +113,7 @@ VelocitySolution KernelBoundaryIntegralSolver<Kernel>::nodeVelocities(const doub
   std::vector<double> single(3 * static_cast<std::size_t>(numOwned));
   {
     Teuchos::TimeMonitor guard(*singleLayerTimer_);
-    potentials_.singleLayerAtNodes(elementLoads, single.data());
+    potentials_.singleLayerAtNodes(load, single.data());
   }
   // Right-hand side: 2/(1+lambda) u_inf - 1/(4 pi (1+lambda) Ca) SL (eq 3.15).
   std::vector<double> rhs(single.size());
@@ -201,7 +201,7 @@ std::vector<double> KernelBoundaryIntegralSolver<Kernel>::ownedPointsShare(const
 
 template <class Kernel>
 std::vector<double> KernelBoundaryIntegralSolver<Kernel>::flowVelocity(const std::vector<double>& points,
-                                                                       const double* elementLoads,
+                                                                       const LoadDensity& load,
                                                                        const double* nodeVelocities,
                                                                        const FlowConditions& flow)
 {
@@ -210,7 +210,7 @@ std::vector<double> KernelBoundaryIntegralSolver<Kernel>::flowVelocity(const std
   const std::vector<double> mine = ownedPointsShare(points);
   const int n = static_cast<int>(mine.size() / 3);
   std::vector<double> single(mine.size()), velocity(mine.size());
-  potentials_.singleLayerAtPoints(mine.data(), n, elementLoads, single.data());
+  potentials_.singleLayerAtPoints(mine.data(), n, load, single.data());
   std::vector<double> dbl(mine.size(), 0.0);
   std::vector<double> omega;
   const bool allOne = surfaces_.allViscosityRatiosOne();
@@ -241,10 +241,10 @@ std::vector<double> KernelBoundaryIntegralSolver<Kernel>::flowVelocity(const std
 }
 
 template <class Kernel>
-std::vector<double> KernelBoundaryIntegralSolver<Kernel>::singleLayer(const double* elementLoads)
+std::vector<double> KernelBoundaryIntegralSolver<Kernel>::singleLayer(const LoadDensity& load)
 {
   std::vector<double> rows(3 * static_cast<std::size_t>(distribution_.numOwnedNodes()));
-  potentials_.singleLayerAtNodes(elementLoads, rows.data());
+  potentials_.singleLayerAtNodes(load, rows.data());
   return distribution_.gather(rows);
 }
 
@@ -258,12 +258,12 @@ std::vector<double> KernelBoundaryIntegralSolver<Kernel>::doubleLayer(const doub
 
 template <class Kernel>
 std::vector<double> KernelBoundaryIntegralSolver<Kernel>::singleLayerAt(const std::vector<double>& points,
-                                                                        const double* elementLoads)
+                                                                        const LoadDensity& load)
 {
   requireInFluid(points);
   const std::vector<double> mine = ownedPointsShare(points);
   std::vector<double> values(mine.size());
-  potentials_.singleLayerAtPoints(mine.data(), static_cast<int>(mine.size() / 3), elementLoads, values.data());
+  potentials_.singleLayerAtPoints(mine.data(), static_cast<int>(mine.size() / 3), load, values.data());
   return distribution_.gatherShares(values, static_cast<int>(points.size() / 3), 3);
 }
 

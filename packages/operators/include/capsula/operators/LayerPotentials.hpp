@@ -32,6 +32,7 @@
 #include <capsula/operators/DoubleLayerForm.hpp>
 #include <capsula/operators/ElementIntegrals.hpp>
 #include <capsula/operators/KernelTraits.hpp>
+#include <capsula/operators/LoadDensity.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/operators/PolarRules.hpp>
 #include <capsula/operators/RegularSums.hpp>
@@ -70,9 +71,9 @@ public:
   /// targets (doubleLayerAtNodes calls it when needed).
   void prepareDoubleLayerCorrections();
 
-  /// result[3 t + j] = sum_m <Delta f>_m,i int_Em G_ij(x, x_t) dS (eq 3.36) at the target
-  /// nodes; elementLoads holds 3 per element, global numbering.
-  void singleLayerAtNodes(const double* elementLoads, double* result);
+  /// result[3 t + j] = sum_m int_Em Delta f_i G_ij(x, x_t) dS (eq 3.36) at the target
+  /// nodes, Delta f interpolated from its values at the element nodes (LoadDensity.hpp).
+  void singleLayerAtNodes(const LoadDensity& load, double* result);
 
   /// result[3 t + j] = sum over all cells of PV int u_i T_ijk(x, x_t) n_k dS at the target
   /// nodes, for the density u given at every node (3 per node, global numbering) and
@@ -81,7 +82,7 @@ public:
 
   /// The single layer at n arbitrary points (3 each) off the surfaces (a point on a
   /// surface gets the subdivision down to its depth limit and a meaningless value).
-  void singleLayerAtPoints(const double* points, int n, const double* elementLoads, double* result);
+  void singleLayerAtPoints(const double* points, int n, const LoadDensity& load, double* result);
 
   /// The double layer at n arbitrary points off the surfaces.
   void doubleLayerAtPoints(const double* points, int n, const double* density, double* result);
@@ -125,7 +126,7 @@ private:
   typename Integrand::Value singularCorrection(int m, int localNode, const Integrand& integrand,
                                                ParametricRule& rule) const;
   void correctDoubleLayer(int target, TargetCorrections& out, ParametricRule& rule, std::vector<int>& near) const;
-  void buildSingleLayerSources(const double* elementLoads);
+  void buildSingleLayerSources(const LoadDensity& load);
   void buildDoubleLayerSources(const double* density);
   SingleLayerSources singleLayerSources() const;
   DoubleLayerSources doubleLayerSources() const;
@@ -458,7 +459,7 @@ void LayerPotentials<Kernel>::prepareDoubleLayerCorrections()
 }
 
 template <class Kernel>
-void LayerPotentials<Kernel>::buildSingleLayerSources(const double* elementLoads)
+void LayerPotentials<Kernel>::buildSingleLayerSources(const LoadDensity& load)
 {
   const QuadraturePoints& p = quadrature_.points();
   const int nq = quadrature_.pointsPerElement();
@@ -467,9 +468,16 @@ void LayerPotentials<Kernel>::buildSingleLayerSources(const double* elementLoads
   fy_.resize(n);
   fz_.resize(n);
   for (int m = 0; m < quadrature_.numElements(); ++m) {
-    const double* f = elementLoads + 3 * m;
+    const double* nodal = load.element(m);
     for (int k = 0; k < nq; ++k) {
       const std::size_t q = static_cast<std::size_t>(m) * nq + k;
+      double f[3] = {0.0, 0.0, 0.0};
+      for (int a = 0; a < 6; ++a) {
+        const double phi = p.phi[6 * q + a];
+        for (int i = 0; i < 3; ++i) {
+          f[i] += phi * nodal[3 * a + i];
+        }
+      }
       fx_[q] = f[0] * p.weight[q];
       fy_[q] = f[1] * p.weight[q];
       fz_[q] = f[2] * p.weight[q];
@@ -520,9 +528,9 @@ DoubleLayerSources LayerPotentials<Kernel>::doubleLayerSources() const
 }
 
 template <class Kernel>
-void LayerPotentials<Kernel>::singleLayerAtNodes(const double* elementLoads, double* result)
+void LayerPotentials<Kernel>::singleLayerAtNodes(const LoadDensity& load, double* result)
 {
-  buildSingleLayerSources(elementLoads);
+  buildSingleLayerSources(load);
   const SingleLayerSources sources = singleLayerSources();
   const double* positions = quadrature_.nodePositions().data();
   const auto blocks = detail::nodeBlocks(cells_, firstTarget_, numTargets_);
@@ -554,12 +562,12 @@ void LayerPotentials<Kernel>::singleLayerAtNodes(const double* elementLoads, dou
         }
       };
       for (const auto& [m, localNode] : neighbourhoods_[t].incident) {
-        add(singularCorrection(m, localNode, LoadedSingleLayerIntegrand<Kernel>{x0, elementLoads + 3 * m}, rule));
+        add(singularCorrection(m, localNode, LoadedSingleLayerIntegrand<Kernel>{x0, load.element(m)}, rule));
       }
       findNearElements(x0, &neighbourhoods_[t], near);
       nearCount += static_cast<long long>(near.size());
       for (const int m : near) {
-        add(nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{x0, elementLoads + 3 * m}));
+        add(nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{x0, load.element(m)}));
       }
       for (int j = 0; j < 3; ++j) {
         result[3 * t + j] = u[j];
@@ -627,10 +635,10 @@ void LayerPotentials<Kernel>::doubleLayerAtNodes(const double* density, DoubleLa
 }
 
 template <class Kernel>
-void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, const double* elementLoads,
+void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, const LoadDensity& load,
                                                   double* result)
 {
-  buildSingleLayerSources(elementLoads);
+  buildSingleLayerSources(load);
   const SingleLayerSources sources = singleLayerSources();
   const int numPoints = quadrature_.numPoints();
 #if defined(_OPENMP)
@@ -646,7 +654,7 @@ void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, c
       double u[3] = {block.ux[k], block.uy[k], block.uz[k]};
       findNearElements(x0, nullptr, near);
       for (const int m : near) {
-        const auto correction = nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{x0, elementLoads + 3 * m});
+        const auto correction = nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{x0, load.element(m)});
         for (int j = 0; j < 3; ++j) {
           u[j] += correction[j];
         }

@@ -28,7 +28,7 @@ struct WallShearStress {
 /// geometry, loads and node velocities of `solver`; `step` is h above. Collective.
 /// Throws core::InputError unless step > 0.
 WallShearStress wallShearStress(BoundaryIntegralSolver& solver, const std::vector<double>& wallPoints,
-                                double step, const double* elementLoads, const double* nodeVelocities,
+                                double step, const LoadDensity& load, const double* nodeVelocities,
                                 const FlowConditions& flow);
 
 } // namespace capsula::operators

@@ -20,8 +20,11 @@ double windingNumber(const mesh::SurfaceMesh& surface, const mesh::Vec3& point);
 /// True if a node of either surface lies inside the other.
 bool surfacesOverlap(const mesh::SurfaceMesh& a, const mesh::SurfaceMesh& b);
 
-/// Throws core::InputError naming both cells if any two overlap; paths[i] names cell i.
+/// Throws core::InputError naming both cells if any two overlap, or touch: their surfaces
+/// are no more than `minimumGap` apart (SurfaceGap.hpp; 'Cells/Minimum gap' of the deck,
+/// the gap at which a run stops). Touching cells are rejected even with minimumGap = 0,
+/// where a gap of exactly 0 remains. paths[i] names cell i.
 void requireNoOverlap(const std::vector<const mesh::SurfaceMesh*>& cells,
-                      const std::vector<std::string>& paths);
+                      const std::vector<std::string>& paths, double minimumGap = 0.0);
 
 } // namespace capsula::scene

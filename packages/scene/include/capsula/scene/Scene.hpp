@@ -39,7 +39,8 @@ struct SceneFields {
   std::vector<double> positions;          ///< 3 per node
   std::vector<double> velocities;         ///< 3 per node, constraints applied (the motion)
   std::vector<double> solverVelocities;   ///< 3 per node, the boundary-integral solution
-  std::vector<double> elementLoads;       ///< <Delta f>_m, 3 per element (eq 3.37)
+  std::vector<double> elementLoads;       ///< <Delta f>_m, 3 per element: the average over each element
+  std::vector<double> loadDensity;        ///< Delta f at the nodes of each element, 18 per element (operators::LoadDensity)
   std::vector<double> principalTensions;  ///< major, minor per node (eq 3.30)
   std::vector<double> stretches;          ///< major, minor principal stretch per node
   int gmresIterations = 0;                ///< 0: explicit velocity (lambda = 1)
@@ -91,8 +92,11 @@ public:
   /// Positions, constrained velocities, loads and tensions at `positions`. Collective.
   SceneFields evaluate(double t, const std::vector<double>& positions);
 
-  /// Element loads of the latest evaluation (3 per element, global numbering).
+  /// Element loads of the latest evaluation (3 per element, global numbering): the
+  /// average of Delta f over each element.
   const std::vector<double>& elementLoads() const { return loads_; }
+  /// Delta f at the nodes of each element (18 per element), what the single layer integrates.
+  operators::LoadDensity loadDensity() const { return operators::LoadDensity(loadDensity_.data()); }
 
 private:
   void computeLoads(double t);
@@ -106,6 +110,7 @@ private:
   operators::FlowConditions flow_;
   std::vector<double> initialPositions_;
   std::vector<double> loads_;
+  std::vector<double> loadDensity_;
   std::vector<std::string> terms_;
   Teuchos::RCP<Teuchos::Time> membraneTimer_, velocityTimer_, constraintTimer_;
 };

@@ -15,6 +15,7 @@ struct CellDescription {
   std::string path;                  ///< "Cells/Cell 0", for messages
   Teuchos::ParameterList surface;    ///< the cell's sublist (mesh::buildCellSurface reads it)
   std::string membraneLaw;           ///< "NeoHookean" or "Skalak"
+  std::string membraneForces;        ///< "Virtual work" or "Contour integral"
   double shearModulus = 1.0;         ///< relative to the G of the capillary number
   double areaDilation = 0.0;         ///< C (Skalak)
   double prestress = 0.0;            ///< alpha (eq 3.45)
@@ -26,6 +27,8 @@ struct WallShearStressOutput {
   bool enabled = false;
   double upstream = 0.0, downstream = 0.0, halfWidth = 0.0, spacing = 1.0;
   double threshold = 1.05;
+  bool isolatedRange = false;        ///< 'Isolated range' given: compare with it
+  double isolatedMinimum = 0.0, isolatedMaximum = 0.0;
 };
 
 struct OutputDescription {
@@ -44,6 +47,7 @@ struct SceneDescription {
   double viscosityRatio = 1.0;
   bool wall = true;
   std::vector<CellDescription> cells;
+  double minimumGap = 0.05;          ///< 'Cells/Minimum gap': closer surfaces stop the run
   OutputDescription output;
 
   int numCells() const { return static_cast<int>(cells.size()); }

@@ -8,6 +8,7 @@
 //                     (capsula::mesh), Membrane law, Shear modulus, Area dilation C,
 //                     Prestress, Fixed height
 //   Cells/Cell 1/     ... one sublist per cell, numbered from 0
+//   Cells/            Minimum gap (between cell surfaces: touching at the start, stop of a run)
 //   Time integration/ (capsula::timeint)
 //   Discretisation/, Solver/   (capsula::operators)
 //   Output/           Directory, Interval, Snapshots, Checkpoint, Progress steps,
@@ -25,6 +26,10 @@ namespace capsula::scene {
 
 /// Declares the keys of one cell in `cell` (the "Cells/Cell k" sublist).
 void declareCellParameters(Teuchos::ParameterList& cell);
+
+/// Declares 'Minimum gap' in the "Cells" sublist (read by describeScene; used by the
+/// Scene at the start and by runScene after every step).
+void declareMinimumGap(Teuchos::ParameterList& cells);
 
 /// Declares the "Output" sublist.
 void declareOutputParameters(Teuchos::ParameterList& output);

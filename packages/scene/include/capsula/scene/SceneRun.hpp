@@ -2,13 +2,17 @@
 // Runs a scene from a validated deck to its end time or steady state and writes the
 // output contract of the 3D apps (cell3d, twocell3d) into the output directory:
 //
-//   metrics.csv    one row per cell per output time (header row; columns in
-//                  metricsColumns()); rewritten atomically at every output
+//   metrics.csv    one row per output time (header row; columns in metricsColumns()):
+//                  with one cell its metrics (and a column "cell" = 0); with N > 1 cells
+//                  a column NAME_c for every metric and cell (x_c_0, x_c_1, ...), then
+//                  the pair metrics of every pair i < j (PairMetrics.hpp: dx_i_j, ...,
+//                  gap_i_j); rewritten atomically at every output
 //   probes.csv     fluid velocity at 'Output/Flow probes', only if some are given
 //   summary.json   status, final (and steady) values per cell, the terms built, step
 //                  statistics, timings, code version and the validated deck
-//   cells_NNNNNN.h5 + cells.xdmf   snapshots (positions, velocities, loads, tensions,
-//                  wall shear stress) that ParaView opens as one time series
+//   snapshots.h5 + snapshots.xdmf   one HDF5 file with every snapshot (mesh, positions,
+//                  velocities, loads, tensions, wall shear stress; io/SnapshotSeries.hpp)
+//                  that ParaView opens as one time series through the XDMF
 //   checkpoint.h5  everything needed to continue (--restart DIR)
 //   deck.xml, run.json   the validated deck and the run record
 //
@@ -19,6 +23,12 @@
 // that is neither translation nor tank-treading). Restart: the deck must equal the checkpoint's except for
 // 'Time integration/End time' and 'Output/Directory'; the continued run writes the same
 // rows, bit for bit, as the uninterrupted one.
+//
+// Cells too close: after every step the smallest gap between two cell surfaces is compared
+// with 'Cells/Minimum gap'; below it the run records that state as an output (metrics row,
+// snapshot, checkpoint), writes the reason naming the two cells, the gap and the time into
+// summary.json and the log, and returns with status "too close" (not an error: the cells
+// met, which is a result; the thin film between them is no longer resolved).
 //
 // All ranks run this together; rank 0 writes the files. A failure (non-finite state, a
 // cell reaching the wall, a GMRES breakdown) is rethrown after summary.json records it;
@@ -45,15 +55,19 @@ struct SceneRunOptions {
 };
 
 struct SceneRunResult {
-  std::string status;            ///< "finished" (end time) or "steady"
+  std::string status;            ///< "finished" (end time), "steady" or "too close" (two cells met)
   double time = 0.0;             ///< where the run stopped
   std::int64_t acceptedSteps = 0;
   std::string outputDirectory;
   std::vector<std::string> terms;   ///< physics and output terms built
 };
 
-/// The metrics.csv columns; the wall-shear-stress ones only when that output is on.
+/// The metrics.csv columns of one cell; the wall-shear-stress ones only when that output is on.
 std::vector<std::string> metricsColumns(bool wallShearStress);
+/// The metrics.csv columns of `numCells` cells (the one-cell layout for numCells = 1); with
+/// `isolatedRange` (and the wall stress) also wall_area_below_isolated,
+/// wall_area_above_isolated ('Output/Wall shear stress/Isolated range').
+std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange = false);
 
 /// Runs the scene `validatedDeck` describes. Collective over `comm`.
 SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck,

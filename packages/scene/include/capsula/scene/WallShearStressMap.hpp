@@ -46,9 +46,21 @@ struct ElevatedStressAreas {
 /// to a zero integral) would subdivide to its depth limit. Collective.
 operators::WallShearStress wallShearStressOnGrid(operators::BoundaryIntegralSolver& solver,
                                                  const WallGrid& grid, double step,
-                                                 const double* elementLoads,
+                                                 const operators::LoadDensity& load,
                                                  const double* nodeVelocities,
                                                  const operators::FlowConditions& flow);
+
+/// Wall areas where the stress leaves the range of an isolated cell's map (thesis Figs 6.6,
+/// 6.12: where a pair of cells puts less stress on the wall than one cell ever does, or more).
+struct OutsideRangeAreas {
+  double below = 0.0;   ///< wall area with stress < lowest
+  double above = 0.0;   ///< wall area with stress > highest
+};
+
+/// Areas where `stress` (one value per grid node) is below `lowest` or above `highest`,
+/// with the node areas of elevatedStressAreas.
+OutsideRangeAreas areasOutsideRange(const WallGrid& grid, const std::vector<double>& stress, double lowest,
+                                    double highest);
 
 /// Areas where `stress` (one value per grid node) is >= threshold. Each node carries the
 /// area of its dual cell (h^2, halved on an edge, quartered at a corner: the trapezoidal

@@ -1,0 +1,65 @@
+# tether2d: short runs of the Chapter 4 decks (lambda = 1, 5, 10) at 32 points on 2 ranks
+# with golden numbers, and the same adaptive lambda = 10 run on 1 and 2 ranks.
+#
+# Golden numbers: fixed RK4 steps through a preparation stage of tau = 0.1 (ended by the
+# maximum preparation time) and a short tethered stage, so only round-off and deliberate
+# changes of the discretisation move them. Round-off (reordered sums over ranks, GMRES's
+# reduced inner products at lambda != 1, converged to 1e-10) moves these O(0.01-10)
+# quantities by < 1e-9; a change of a formula, a quadrature rule or a default moves them by
+# 1e-6 or more. Tolerance: 1e-8 absolute (1e-7 for the leading-edge velocity, which is
+# O(10-50) at lambda = 5, 10 since it is scaled by lambda / a).
+set(_t2decks ${PROJECT_SOURCE_DIR}/input/tether2d)
+set(_t2out ${CMAKE_CURRENT_BINARY_DIR}/tether2d)
+set(_t2short --set "Cell/Number of points=32" --set "Time integration/Method=RK4"
+             --set "Tether/Minimum preparation time=0.1" --set "Tether/Maximum preparation time=0.1")
+
+# tether2d_regression(NAME DECK STEP END EXPECTATION...): RK4 steps of STEP (k t), a tethered
+# stage of END (tau), expectations on the last row of metrics.csv.
+function(tether2d_regression name deck step end)
+  set(dir ${_t2out}/${name})
+  capsula_add_mpi_command_test(regression_tether2d_${name}
+    COMMAND $<TARGET_FILE:tether2d> ${_t2decks}/${deck} --output ${dir} ${_t2short}
+            --set "Time integration/Initial step=${step}" --set "Time integration/End time=${end}"
+            --set "Output/Interval=${end}"
+    LABELS regression TIMEOUT 300)
+  set_tests_properties(regression_tether2d_${name} PROPERTIES FIXTURES_SETUP tether2d_${name})
+  add_test(NAME regression_tether2d_${name}_golden COMMAND check_metrics expect ${dir}/metrics.csv - ${ARGN})
+  set_tests_properties(regression_tether2d_${name}_golden PROPERTIES
+    FIXTURES_REQUIRED tether2d_${name} LABELS "mpi;regression")
+endfunction()
+
+# lambda = 1 (explicit velocity): the demo deck.
+tether2d_regression(demo demo.xml 0.01 0.05
+  tether_force=0.011108393569109254:1e-8 contour_length_ratio=1.0042056537980917:1e-8
+  cell_length=2.0226622026829726:1e-8 area=3.141216041852518:1e-8 D12=0.07508437512736413:1e-8
+  leading_edge_velocity=1.1348953083151114:1e-7)
+# lambda = 5, a/b = 0.5 (Belos GMRES on the second-kind equation, tether row u_0 = 0).
+tether2d_regression(ab0.5_lambda5 study/ab0.5_lambda5_ca0.1.xml 0.02 0.02
+  tether_force=0.09163083415766363:1e-8 contour_length_ratio=1.044510315405253:1e-8
+  cell_length=1.923755350210622:1e-8 area=3.141309862549119:1e-8 D12=0.3992185570704041:1e-8
+  leading_edge_velocity=12.162964180116953:1e-7)
+# lambda = 10, a/b = 0.25.
+tether2d_regression(ab0.25_lambda10 study/ab0.25_lambda10_ca0.25.xml 0.02 0.02
+  tether_force=0.48804493523606357:1e-8 contour_length_ratio=1.174355691373369:1e-8
+  cell_length=3.594983252326533:1e-8 area=3.14100900579956:1e-8 D12=0.6947366385254176:1e-8
+  leading_edge_velocity=41.19148380800115:1e-7)
+
+# The same adaptive (RKF45) lambda = 10 run on 1 and 2 ranks: whole rows per rank, but
+# GMRES's inner products are reduced in another order on 2 ranks, so the velocities differ
+# by round-off; 1e-10 relative on every column (measured: the two tables agree to 1e-14,
+# with the same steps and GMRES iteration counts).
+set(_t2ranks ${_t2short} --set "Tether/Maximum preparation time=0.2" --set "Time integration/End time=0.1"
+             --set "Output/Interval=0.05" --set "Time integration/Method=RKF45")
+add_test(NAME regression_tether2d_one_rank
+  COMMAND tether2d ${_t2decks}/study/ab0.25_lambda10_ca0.25.xml --output ${_t2out}/one_rank ${_t2ranks})
+set_tests_properties(regression_tether2d_one_rank PROPERTIES
+  FIXTURES_SETUP tether2d_ranks LABELS "mpi;regression")
+capsula_add_mpi_command_test(regression_tether2d_two_ranks
+  COMMAND $<TARGET_FILE:tether2d> ${_t2decks}/study/ab0.25_lambda10_ca0.25.xml --output ${_t2out}/two_ranks
+          ${_t2ranks}
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_tether2d_two_ranks PROPERTIES FIXTURES_SETUP tether2d_ranks)
+add_test(NAME regression_tether2d_ranks_agree
+  COMMAND check_metrics same ${_t2out}/one_rank/metrics.csv ${_t2out}/two_ranks/metrics.csv 1e-10)
+set_tests_properties(regression_tether2d_ranks_agree PROPERTIES
+  FIXTURES_REQUIRED tether2d_ranks LABELS "mpi;regression")
