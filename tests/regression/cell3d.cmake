@@ -27,28 +27,28 @@ function(cell3d_regression name deck step end)
 endfunction()
 
 cell3d_regression(demo demo.xml 0.01 0.05
-  D12=0.02505353859022826:1e-8 y_c=1.6000027676458468:1e-8 volume=4.179539731501853:1e-8
-  mean_shear_stress=0.19125880452486416:1e-8 u_slip_instant=0.011432963201249757:1e-8
-  footprint_xz=3.1359062161874935:1e-8 wall_stress_max=1.0531736457052563:1e-7)
+  D12=0.025053537021985695:1e-8 y_c=1.6000027678982343:1e-8 volume=4.179539730797187:1e-8
+  mean_shear_stress=0.19125935663647806:1e-8 u_slip_instant=0.011432995429585091:1e-8
+  footprint_xz=3.135906217620249:1e-8 wall_stress_max=1.053173766488283:1e-7)
 cell3d_regression(heights heights/Ca0.3-C2.5-prestress5-h1.6.xml 0.01 0.05
-  D12=0.024577305800343802:1e-8 y_c=1.6000062621774764:1e-8 volume=4.180500155092496:1e-8
-  mean_shear_stress=1.39509958881977:1e-8 u_slip_instant=0.01727861592396218:1e-8
-  wall_stress_max=1.0885044477957138:1e-7)
+  D12=0.024577305614454557:1e-8 y_c=1.6000062611395844:1e-8 volume=4.180500059553344:1e-8
+  mean_shear_stress=1.3950994323325294:1e-8 u_slip_instant=0.017278652642080283:1e-8
+  wall_stress_max=1.0885046710903534:1e-7)
 cell3d_regression(fixed_height fixed-height/Ca0.9-C0.5-prestress0.xml 0.01 0.05
-  D12=0.02488452044368365:1e-8 y_c=1.2499999962191244:1e-8 volume=4.179538409673961:1e-8
-  mean_shear_stress=0.11658561727946992:1e-8 u_slip_instant=0.004495168800977556:1e-8
-  wall_stress_max=1.0384680338801864:1e-7)
+  D12=0.024884520179478814:1e-8 y_c=1.2499999962216408:1e-8 volume=4.179538409653448:1e-8
+  mean_shear_stress=0.11658571449926519:1e-8 u_slip_instant=0.0044951729852427125:1e-8
+  wall_stress_max=1.0384686371808558:1e-7)
 cell3d_regression(unbounded unbounded/Ca0.9-C1-prestress0.xml 0.01 0.05
-  D12=0.024829883556367158:1e-8 y_c=0:1e-8 volume=4.179538547268805:1e-8
-  mean_shear_stress=0.1473030162033807:1e-8 u_slip_instant=0:1e-8)
+  D12=0.02482988320253423:1e-8 y_c=0:1e-8 volume=4.17953854718308:1e-8
+  mean_shear_stress=0.1473031802897389:1e-8 u_slip_instant=0:1e-8)
 cell3d_regression(lac2005 validation/lac2005-skalak-Ca1.8-prestress2.5.xml 0.01 0.05
-  D12=0.02486460021584872:1e-8 volume=4.1795847882409:1e-8 mean_shear_stress=0.3568801424072133:1e-8)
+  D12=0.0248646000815673:1e-8 volume=4.179584784787695:1e-8 mean_shear_stress=0.3568801899146123:1e-8)
 cell3d_regression(lac2004 validation/lac2004-neohookean-Ca0.6.xml 0.01 0.05
-  D12=0.02476716592889887:1e-8 volume=4.179538138131035:1e-8 mean_shear_stress=0.14261006062512843:1e-8)
+  D12=0.024767165396105188:1e-8 volume=4.17953813805168:1e-8 mean_shear_stress=0.14261027575459298:1e-8)
 # Ca = 0.01 is stiff: steps of 2e-4.
 cell3d_regression(goldman validation/goldman-rigid-h1.5431.xml 0.0002 0.002
-  D12=0.000989689545036834:1e-8 y_c=1.5430999999897494:1e-8 volume=4.179532627193329:1e-8
-  mean_shear_stress=0.005062427170252576:1e-8 u_slip_instant=0.011980277474239687:1e-8)
+  D12=0.0009896895015324711:1e-8 y_c=1.5430999999896498:1e-8 volume=4.179532627200056:1e-8
+  mean_shear_stress=0.005062440000053078:1e-8 u_slip_instant=0.011980301920989866:1e-8)
 
 # The same adaptive (RKF45) run on 1 and 2 ranks: every rank computes whole rows of the
 # boundary-integral equation, so the trajectories agree to round-off (1e-12 relative).

@@ -16,11 +16,11 @@ capsula_add_mpi_command_test(regression_twocell3d_demo
 set_tests_properties(regression_twocell3d_demo PROPERTIES FIXTURES_SETUP twocell3d_demo)
 add_test(NAME regression_twocell3d_demo_golden
   COMMAND check_metrics expect ${_twoout}/demo/metrics.csv -
-    D12_0=0.025131615901390167:1e-8 D12_1=0.02513161590280592:1e-8 y_c_0=1.2499999927137728:1e-8
-    z_c_0=1.2500025071235:1e-8 z_c_1=-1.250002506861448:1e-8 volume_0=4.179539741298241:1e-8
-    u_slip_instant_0=0.020110565167944516:1e-8 mean_shear_stress_0=0.19148268580156766:1e-8
-    dz_0_1=2.500005013984948:1e-8 dw_0_1=0.00010027969900239242:1e-8 gap_0_1=0.4999756420736814:1e-8
-    wall_stress_max=1.1578587006347294:1e-7)
+    D12_0=0.025131614455724833:1e-8 D12_1=0.02513161445572483:1e-8 y_c_0=1.2499999927190684:1e-8
+    z_c_0=1.2500025070225058:1e-8 z_c_1=-1.2500025070225054:1e-8 volume_0=4.179539740660264:1e-8
+    u_slip_instant_0=0.020110597095194915:1e-8 mean_shear_stress_0=0.1914832387565429:1e-8
+    dz_0_1=2.500005014045011:1e-8 dw_0_1=0.00010028090026814596:1e-8 gap_0_1=0.499975641314614:1e-8
+    wall_stress_max=1.1578598492213377:1e-7)
 set_tests_properties(regression_twocell3d_demo_golden PROPERTIES
   FIXTURES_REQUIRED twocell3d_demo LABELS "mpi;regression")
 

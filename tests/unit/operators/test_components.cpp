@@ -32,7 +32,8 @@ namespace ot = capsula::operators::testing;
 
 // --- polar rules -------------------------------------------------------------------------
 
-double integrate(const ParametricRule& rule, double (*f)(double, double))
+template <class Integrand>
+double integrate(const ParametricRule& rule, Integrand&& f)
 {
   double sum = 0.0;
   for (int k = 0; k < rule.size(); ++k) {
@@ -41,19 +42,60 @@ double integrate(const ParametricRule& rule, double (*f)(double, double))
   return sum;
 }
 
+// The polar rules are built in the equilateral image of the parametric triangle
+// (PolarRules.cpp): (x, y) = (xi + eta / 2, sqrt(3)/2 eta), dxi deta = (2 / sqrt 3) dx dy.
+double equilateralDistance(double xi, double eta, double apexX, double apexY)
+{
+  return std::hypot(xi + 0.5 * eta - apexX, std::sqrt(3.0) / 2.0 * eta - apexY);
+}
+
 TEST(PolarRules, VertexRuleIntegratesInverseDistanceExactly)
 {
-  // int_T 1/rho dxi deta around vertex (0,0) = int_0^{pi/2} dtheta / (cos + sin) = sqrt(2) ln(1 + sqrt(2)).
+  // int_T 1/rho dxi deta around any vertex, rho the equilateral-frame distance:
+  // (2/sqrt 3) * p [asinh(1/(2p)) - asinh(-1/(2p))] with p = sqrt(3)/2, i.e. ln 3.
   // In u = asinh(tan(theta - theta_perp)) the integrand r' / rho is constant: exact with
-  // ONE point per direction (round-off).
+  // ONE point per direction (round-off), at each of the three vertices alike.
   const auto gauss = quadrature::gaussLegendre(1, 0.0, 1.0);
+  const double apex[3][2] = {{0.0, 0.0}, {1.0, 0.0}, {0.5, std::sqrt(3.0) / 2.0}};
   ParametricRule rule;
-  singularRule(0, mesh::ShapeParameters{}, gauss, rule);
-  const double exact = std::sqrt(2.0) * std::log(1.0 + std::sqrt(2.0));
-  EXPECT_NEAR(integrate(rule, [](double x, double y) { return 1.0 / std::hypot(x, y); }), exact, 1e-15);
+  for (int vertex = 0; vertex < 3; ++vertex) {
+    singularRule(vertex, mesh::ShapeParameters{}, gauss, rule);
+    EXPECT_NEAR(integrate(rule, [&](double x, double y) {
+                  return 1.0 / equilateralDistance(x, y, apex[vertex][0], apex[vertex][1]);
+                }),
+                std::log(3.0), 1e-15)
+      << "vertex " << vertex;
+  }
   // The area 1/2 needs a few points (cosh u is not constant): 10 reach round-off.
   singularRule(0, mesh::ShapeParameters{}, quadrature::gaussLegendre(10, 0.0, 1.0), rule);
   EXPECT_NEAR(integrate(rule, [](double, double) { return 1.0; }), 0.5, 1e-15);
+}
+
+TEST(PolarRules, VertexRulesDoNotDependOnTheVertexNumbering)
+{
+  // Fixed bug (two-cell symmetry): the rule around vertex k must be the rule around
+  // vertex 0 with the barycentric coordinates relabelled, so that mirror-image meshes
+  // (whose elements list their vertices in the other order) get mirror-image integrals.
+  // Built in the right-angled parametric triangle, the rules at the right angle and at a
+  // 45-degree corner differed, and side-by-side cells lost symmetry at the 1e-5 level.
+  const auto gauss = quadrature::gaussLegendre(6, 0.0, 1.0);
+  ParametricRule reference, rule;
+  singularRule(0, mesh::ShapeParameters{}, gauss, reference);
+  // Barycentric (l0, l1, l2) of point k of the vertex-0 rule; vertex v's rule must hold the
+  // point with l_v = l0 and the other two in either order (the rule is symmetric).
+  for (int vertex = 1; vertex < 3; ++vertex) {
+    singularRule(vertex, mesh::ShapeParameters{}, gauss, rule);
+    ASSERT_EQ(rule.size(), reference.size());
+    for (int k = 0; k < reference.size(); ++k) {
+      const double l0 = 1.0 - reference.xi[k] - reference.eta[k];
+      const double l[3] = {1.0 - rule.xi[k] - rule.eta[k], rule.xi[k], rule.eta[k]};
+      const double others[2] = {l[(vertex + 1) % 3], l[(vertex + 2) % 3]};
+      EXPECT_NEAR(l[vertex], l0, 1e-15) << "vertex " << vertex << " point " << k;
+      EXPECT_NEAR(others[0], reference.xi[k], 1e-15) << "vertex " << vertex << " point " << k;
+      EXPECT_NEAR(others[1], reference.eta[k], 1e-15) << "vertex " << vertex << " point " << k;
+      EXPECT_NEAR(rule.weight[k], reference.weight[k], 1e-15) << "vertex " << vertex << " point " << k;
+    }
+  }
 }
 
 TEST(PolarRules, EveryNodeRuleCoversTheTriangle)
@@ -75,23 +117,24 @@ TEST(PolarRules, EveryNodeRuleCoversTheTriangle)
 
 TEST(PolarRules, MidsideRuleIntegratesInverseDistanceExactly)
 {
-  // Around P = (alpha, 0): int_T 1/rho = sum over the sub-triangles (P, A, B) of
-  // p [asinh(sigma_B / p) - asinh(sigma_A / p)] (p the distance from P to side AB,
-  // sigma the positions of A and B along it from the foot of the perpendicular):
-  // (P, (1,0), (0,1)): p = (1 - alpha)/sqrt 2, sigma = -+ (1 - alpha)/sqrt 2 ... written out below.
+  // Around P = (alpha, 0) (equilateral frame: (alpha, 0) too): int_T 1/rho dxi deta =
+  // (2/sqrt 3) sum over the sub-triangles (P, A, B) of p [asinh(sigma_B / p) -
+  // asinh(sigma_A / p)], p the distance from P to side AB and sigma the positions of A
+  // and B along it from the foot of the perpendicular, all in the equilateral frame.
   constexpr double alpha = 0.4;
+  const double h = std::sqrt(3.0) / 2.0;
   const mesh::ShapeParameters shape{alpha, 0.5, 0.5};
   const auto piece = [](double ax, double ay, double bx, double by) {
-    // Sub-triangle with apex (alpha, 0) and side from a to b.
     const double lx = bx - ax, ly = by - ay, l = std::hypot(lx, ly);
     const double sigmaA = ((ax - alpha) * lx + ay * ly) / l;
     const double p = std::abs((ax - alpha) * ly - ay * lx) / l;
     return p * (std::asinh((sigmaA + l) / p) - std::asinh(sigmaA / p));
   };
-  const double exact = piece(1.0, 0.0, 0.0, 1.0) + piece(0.0, 1.0, 0.0, 0.0);
+  const double exact = 2.0 / std::sqrt(3.0) * (piece(1.0, 0.0, 0.5, h) + piece(0.5, h, 0.0, 0.0));
   ParametricRule rule;
   singularRule(3, shape, quadrature::gaussLegendre(1, 0.0, 1.0), rule);
-  EXPECT_NEAR(integrate(rule, [](double x, double y) { return 1.0 / std::hypot(x - alpha, y); }), exact, 1e-15);
+  EXPECT_NEAR(integrate(rule, [&](double x, double y) { return 1.0 / equilateralDistance(x, y, alpha, 0.0); }),
+              exact, 1e-15);
 }
 
 // --- element map -------------------------------------------------------------------------

@@ -31,17 +31,14 @@ using scene::testing::realArray;
 
 using Point = std::array<double, 3>;
 
-// Mirror symmetry (z -> -z) of the discretisation. The mesh is mirror-symmetric, but the
-// singular quadrature of the single layer (eq 3.42, polar coordinates in the element's
-// right-angled parameter triangle) depends on which local vertex the collocation node is,
-// and a mirrored element lists its vertices in another order, so mirror-image nodes get
-// slightly different integration errors. Measured on a mirror-symmetric density over a
-// mirror-symmetric level-1 surface: the single layer is mirror-symmetric to 4e-4 relative
-// with N_GL = 4, 2e-5 with 6 (the default), 5e-9 with 12 and 7e-14 with 20, independent of
-// N_Q. The symmetry tests therefore use N_GL = 20, which leaves only round-off of sums
-// taken in another order: measured 2e-11 after 5 steps, bound 1e-10 (the issue's
-// acceptance). A sign error or mixed-up cells give O(1).
-constexpr int kSymmetricSingularPoints = 20;
+// Mirror symmetry (z -> -z) of the discretisation, with the default quadrature. The mesh
+// is mirror-symmetric, and the singular quadrature of the single layer is built so that it
+// does not depend on which local number the collocation node has (PolarRules.cpp,
+// PolarRules.VertexRulesDoNotDependOnTheVertexNumbering): a mirrored element lists its
+// vertices in the other order. Before that fix the single layer was mirror-symmetric only
+// to 2e-5 relative at N_GL = 6. What remains is round-off of sums taken in another order:
+// bound 1e-10 (the acceptance). A sign error or mixed-up cells give O(1).
+constexpr int kSymmetricSingularPoints = 6; // the default N_GL
 constexpr double kSymmetryTolerance = 1e-10;
 
 // Two level-1 Skalak cells (C = 2.5, Ca = 0.3, lambda = 1, free) above the wall, RK4 steps
@@ -146,10 +143,12 @@ TEST_F(TwoCellsTest, MetricsHaveAColumnPerCellAndThePairColumns)
   EXPECT_EQ(std::count(t.columns.begin(), t.columns.end(), "cell"), 0);
   for (const char* column : {"time", "D12_0", "D12_1", "x_c_0", "x_c_1", "u_slip_1", "shape_change_rate_1",
                              "gmres_iterations", "dx_0_1", "dy_0_1", "dz_0_1", "distance_0_1", "du_0_1",
-                             "dv_0_1", "dw_0_1", "dslip_0_1", "gap_0_1"}) {
+                             "dv_0_1", "dw_0_1", "dslip_0_1", "gap_0_1", "min_angle_deg_0",
+                             "min_angle_deg_1", "max_edge_ratio_1", "min_tension_0", "wall_gap_per_h_1"}) {
     EXPECT_EQ(std::count(t.columns.begin(), t.columns.end(), column), 1) << column;
   }
-  EXPECT_EQ(t.columns.size(), 3u + 2u * 26u + 1u + 9u);
+  EXPECT_EQ(t.columns.size(), 3u + 2u * 26u + 1u + 9u + 2u * 4u);
+  EXPECT_EQ(t.columns.back(), "wall_gap_per_h_1");   // the stability diagnostics come last
   // Separation and gap at t = 0: centres 2.5 apart; the level-1 icosphere has nodes on the
   // z axis, so the gap of the discrete surfaces is exactly the spheres' 0.5.
   EXPECT_NEAR(value(t, 0, "dz_0_1"), 2.5, 1e-12);
