@@ -5,7 +5,9 @@
 #                spread from 64 to 320 elements);
 #   quadrature:  maximum tether force for N_GL = 5, 6, 8, 12 (thesis Table 3.2: 3.2525, 3.2469,
 #                3.2474, 3.2475), with and without the near-singular subdivision.
-# Usage: utils/tether2d-convergence.sh BUILD_DIR OUT_DIR [mesh|quadrature|all] [QUADRATURE_N]
+# Usage: utils/tether2d-convergence.sh BUILD_DIR OUT_DIR [mesh|quadrature|all] [QUADRATURE_N] [GAP]
+#   GAP (default: the deck's 0.005): the initial lowest-point height and the anchor height;
+#   0.1 resolves the film between the cell and the wall at N >= 128 (docs/tether2d.md).
 # Results: OUT_DIR/mesh.txt, OUT_DIR/quadrature.txt (docs/tether2d.md records them).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -13,6 +15,7 @@ build=${1:?build directory}
 out=${2:?output directory}
 which=${3:-all}
 quadN=${4:-256}
+gap=${5:-}
 app="$build/apps/tether2d/tether2d"
 deck="$here/input/tether2d/study/ab1_lambda1_ca0.25.xml"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -21,6 +24,9 @@ mkdir -p "$out"
 # Runs past the maximum (tau ~ 10) and stops: the study needs F_max only.
 common=(--set "Time integration/End time=16" --set "Output/Interval=0.25" --set "Output/Snapshot every=0"
         --set "Output/Checkpoint every=0")
+if [[ -n $gap ]]; then
+  common+=(--set "Cell/Lowest point height=$gap" --set "Tether/Anchor height=$gap")
+fi
 
 # F_max of a finished run, or why it failed (the last error line of its log).
 maxForce() {

@@ -66,7 +66,8 @@ CubicSpline fitCoordinate(const Eigen::Matrix2Xd& nodes, const ContourOptions& o
   }
   // Tethered: open at the tether node, which ends the contour again at s_max.
   values.push_back(nodes(row, 0));
-  return CubicSpline::natural(std::move(knots), values);
+  return options.tetherEnds == TetherEnds::Natural ? CubicSpline::natural(std::move(knots), values)
+                                                    : CubicSpline::notAKnot(std::move(knots), values);
 }
 
 } // namespace

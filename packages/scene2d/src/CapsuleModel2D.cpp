@@ -10,10 +10,11 @@ namespace capsula::scene2d {
 
 namespace {
 
-contour::ContourOptions optionsFor(contour::Closure closure)
+contour::ContourOptions optionsFor(contour::Closure closure, contour::TetherEnds tetherEnds)
 {
   contour::ContourOptions options;
   options.closure = closure;
+  options.tetherEnds = tetherEnds;
   return options;
 }
 
@@ -41,7 +42,8 @@ std::vector<double> CapsuleModel2D::initialState() const
 
 void CapsuleModel2D::tether(int offset)
 {
-  const contour::Contour reference(relabelNodes(referenceNodes_, offset), optionsFor(contour::Closure::Tethered));
+  const contour::Contour reference(relabelNodes(referenceNodes_, offset),
+                                   optionsFor(contour::Closure::Tethered, cell_.tetherEnds));
   membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
   tetherOffset_ = offset;
 }
@@ -52,7 +54,8 @@ contour::Contour CapsuleModel2D::contour(const std::vector<double>& state) const
                 state.size(), " entries, expected ", 2 * numberOfNodes());
   Eigen::Matrix2Xd nodes = Eigen::Map<const Eigen::Matrix2Xd>(state.data(), 2, numberOfNodes());
   return contour::Contour(std::move(nodes),
-                          optionsFor(tethered() ? contour::Closure::Tethered : contour::Closure::Periodic));
+                          optionsFor(tethered() ? contour::Closure::Tethered : contour::Closure::Periodic,
+                                     cell_.tetherEnds));
 }
 
 elasticity::MembraneState2D CapsuleModel2D::membrane(const contour::Contour& contour) const

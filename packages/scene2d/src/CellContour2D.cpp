@@ -5,6 +5,7 @@
 #include <capsula/core/ParameterDeclaration.hpp>
 
 #include <cmath>
+#include <string>
 
 namespace capsula::scene2d {
 
@@ -25,6 +26,12 @@ void declareCellParameters2D(Teuchos::ParameterList& cell)
                     "Height of the cell's lowest point above y = 0 at the start (the thesis's 0.005). "
                     "With the wall it must be > 0; without it y = 0 is only where the shear flow is "
                     "at rest (-1 centres a circle there).");
+  core::declareChoice(cell, "Tether spline ends", "Natural", {"Natural", "NotAKnot"},
+                      "End conditions of the tethered contour's position splines at the tether node. "
+                      "Natural (x'' = y'' = 0, thesis A.31-A.32) makes the tangents there, hence the "
+                      "tether force, first-order accurate; NotAKnot makes them third-order but the "
+                      "tethered run unstable at fine meshes (256 points blew up right after "
+                      "tethering). See docs/tether2d.md, mesh convergence.");
 }
 
 CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell)
@@ -33,6 +40,8 @@ CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell)
   s.aspectRatio = cell.get<double>("Aspect ratio");
   s.numberOfPoints = cell.get<int>("Number of points");
   s.lowestPointHeight = cell.get<double>("Lowest point height");
+  s.tetherEnds = cell.get<std::string>("Tether spline ends") == "Natural" ? contour::TetherEnds::Natural
+                                                                          : contour::TetherEnds::NotAKnot;
   return s;
 }
 

@@ -17,9 +17,23 @@ void declareTetherParameters2D(Teuchos::ParameterList& tether)
   core::declareReal(tether, "Anchor height", defaults.anchorHeight,
                     "y of the tether point; the thesis fixed it at (0, 0.005).", core::greaterThan(0.0));
   core::declareReal(tether, "Preparation tolerance", defaults.preparationTolerance,
-                    "The preparation stage ends when |d D12 / d tau| (tau = k t / lambda) falls below "
-                    "this: the free cell has reached its deformed shape.",
+                    "The preparation stage ends when d D12 / d tau (tau = k t / lambda), measured "
+                    "over the last Preparation window, falls below this: the free cell has reached "
+                    "its largest deformation (a shape that relaxes, rate < 0, ends it too).",
                     core::greaterThan(0.0));
+  core::declareReal(tether, "Preparation window", defaults.preparationWindow,
+                    "tau between the checks of the preparation stage; d D12 / d tau is the change of "
+                    "D12 since the last check over this window (a fixed window, not a time step, so "
+                    "that the check does not depend on the step size or the grid-scale noise). The "
+                    "stage ends where this rate falls below Preparation tolerance (interpolated "
+                    "from the last two windows when it is close).",
+                    core::greaterThan(0.0));
+  core::declareBool(tether, "Wait for a node at the bottom", defaults.waitForNodeAtBottom,
+                    "true: once the preparation's shape criterion holds, go on until a node passes "
+                    "the lowest point of the contour and tether that node (the tether is then the "
+                    "contour's lowest point; the wait is at most one node passage, up to ~0.4 tau "
+                    "at 48 points). false: tether the node nearest the bottom at once (up to half a "
+                    "segment off the lowest point). docs/tether2d.md compares the two.");
   core::declareReal(tether, "Minimum preparation time", defaults.minimumPreparationTime,
                     "tau before which the preparation stage never ends.", core::atLeast(0.0));
   core::declareReal(tether, "Maximum preparation time", defaults.maximumPreparationTime,
@@ -33,6 +47,8 @@ TetherSettings2D readTetherSettings2D(const Teuchos::ParameterList& tether)
   s.enabled = tether.get<bool>("Enabled");
   s.anchorHeight = tether.get<double>("Anchor height");
   s.preparationTolerance = tether.get<double>("Preparation tolerance");
+  s.preparationWindow = tether.get<double>("Preparation window");
+  s.waitForNodeAtBottom = tether.get<bool>("Wait for a node at the bottom");
   s.minimumPreparationTime = tether.get<double>("Minimum preparation time");
   s.maximumPreparationTime = tether.get<double>("Maximum preparation time");
   core::require<core::InputError>(s.minimumPreparationTime <= s.maximumPreparationTime,
@@ -47,7 +63,51 @@ bool preparationComplete(const TetherSettings2D& settings, double tau, double de
   if (tau >= settings.maximumPreparationTime) {
     return true;
   }
-  return tau >= settings.minimumPreparationTime && std::abs(deformationRate) < settings.preparationTolerance;
+  return tau >= settings.minimumPreparationTime && deformationRate < settings.preparationTolerance;
+}
+
+double nextPreparationCheck(const TetherSettings2D& settings, double tau)
+{
+  // The tolerance keeps a time that landed on a check (up to round-off) from being
+  // checked twice.
+  const double w = settings.preparationWindow;
+  return (std::floor(tau / w + 1e-9) + 1.0) * w;
+}
+
+double predictedPreparationEnd(const TetherSettings2D& settings, double tau, double previousRate, double rate)
+{
+  const double tolerance = settings.preparationTolerance;
+  // Only a slowing growth that is already within 10 tolerances: far from the end, a line
+  // through two window rates of an exponential approach (rate ~ e^{-tau/T}) would predict
+  // a crossing much too early (it did at lambda = 10: 0.68 instead of > 1).
+  if (!(previousRate > rate && rate > tolerance && rate < 10.0 * tolerance)) {
+    return -1.0;
+  }
+  const double w = settings.preparationWindow;
+  const double crossing = tau - 0.5 * w + w * (rate - tolerance) / (previousRate - rate);
+  return crossing <= tau + w ? crossing : -1.0;
+}
+
+LowestNodeSlope lowestNodeSlope(const contour::Contour& contour)
+{
+  const Eigen::Matrix2Xd& nodes = contour.nodes();
+  LowestNodeSlope result;
+  for (Eigen::Index i = 1; i < nodes.cols(); ++i) {
+    if (nodes(1, i) < nodes(1, result.node)) {
+      result.node = static_cast<int>(i);
+    }
+  }
+  result.slope = contour.nodePoint(result.node).tangent.y();
+  return result;
+}
+
+double predictedZeroCrossing(double tPrevious, double gPrevious, double t, double g)
+{
+  if (!(t > tPrevious) || gPrevious == g) {
+    return -1.0;
+  }
+  const double crossing = t - g * (t - tPrevious) / (g - gPrevious);
+  return crossing > t ? crossing : -1.0;
 }
 
 TetherPlacement2D tetherPlacement(const Eigen::Matrix2Xd& nodes, const Eigen::Vector2d& anchor)

@@ -58,7 +58,14 @@ struct Progress {
   long long outputIndex = 0;    // outputs written in the current stage
   long long steps = 0;          // accepted steps, both stages
   long long evaluations = 0;    // right-hand sides of finished stages
-  double previousD12 = 0.0;     // preparation: D12 after the last accepted step
+  double previousD12 = 0.0;     // preparation: D12 at the last check (a multiple of the window)
+  double preparationRate = 0.0; // preparation: d D12 / d tau over the last window
+  double preparationEnd = -1.0; // preparation: predicted tau of its end (< 0: none yet)
+  bool placing = false;         // preparation: shape settled, waiting for a node at the bottom
+  int placeNode = -1;           // placing: the lowest node after the last step
+  double placeSlope = 0.0;      // placing: its tangent's y-component then
+  double placeTime = 0.0;       // placing: k t of that sample
+  double placeTarget = -1.0;    // placing: predicted k t of the crossing (< 0: none)
   long long lastSnapshot = -1;  // output index of the last snapshot in this stage
   bool steady = false;
 };
@@ -157,6 +164,8 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
 
   TetherRunResult2D result;
   Progress progress;
+  auto stageWallStart = wallStart; // for the ETA of the tethered (or free) stage:
+  double stageTauStart = 0.0;      // wall time and tau since the stage (or the restart) began
   timeint::IntegrationState state;
   const auto tauOf = [&](double t) { return (t - progress.origin) / lambda; };
 
@@ -191,7 +200,18 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
         *log_ << (progress.stage == Stage::Preparation ? "preparation" : "tau") << " = " << tau
               << ": A/A0 = " << metrics.contourLengthRatio << ", L_cell = " << metrics.cellLength
               << ", F = " << metrics.tetherForce << ", D12 = " << metrics.D12
-              << ", area drift = " << metrics.areaDrift << "\n";
+              << ", area drift = " << metrics.areaDrift;
+        // ETA of the stage from its wall time per unit tau so far (the preparation's end
+        // depends on the shape, so it has none).
+        if (progress.stage != Stage::Preparation && tau > stageTauStart && tau < endTau) {
+          const double spent =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - stageWallStart).count();
+          const long long left = std::llround(spent / (tau - stageTauStart) * (endTau - tau));
+          *log_ << " (" << std::llround(100.0 * tau / endTau) << "% of tau = " << endTau << ", ETA "
+                << left / 3600 << ":" << (left / 600) % 6 << (left / 60) % 10 << ":" << (left % 60) / 10
+                << left % 10 << ")";
+        }
+        *log_ << "\n";
       }
     }
   };
@@ -212,6 +232,8 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   const auto startStage = [&](Stage stage) {
     progress.stage = stage;
     progress.origin = state.time;
+    stageWallStart = std::chrono::steady_clock::now();
+    stageTauStart = 0.0;
     progress.outputIndex = 0;
     progress.lastSnapshot = -1;
     if (writing) {
@@ -241,6 +263,13 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     checkpoint.integers["run tether offset"] = model_.tetherOffset();
     checkpoint.reals["run origin"] = progress.origin;
     checkpoint.reals["run previous D12"] = progress.previousD12;
+    checkpoint.reals["run preparation rate"] = progress.preparationRate;
+    checkpoint.reals["run preparation end"] = progress.preparationEnd;
+    checkpoint.integers["run placing"] = progress.placing ? 1 : 0;
+    checkpoint.integers["run place node"] = progress.placeNode;
+    checkpoint.reals["run place slope"] = progress.placeSlope;
+    checkpoint.reals["run place time"] = progress.placeTime;
+    checkpoint.reals["run place target"] = progress.placeTarget;
     checkpoint.reals["run preparation time"] = result.preparationTime;
     checkpoint.reals["run max tether force"] = result.maxTetherForce;
     checkpoint.reals["run time of max tether force"] = result.timeOfMaxTetherForce;
@@ -268,7 +297,21 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     progress.evaluations = checkpoint.integers.at("run evaluations");
     progress.lastSnapshot = checkpoint.integers.at("run last snapshot");
     progress.origin = checkpoint.reals.at("run origin");
+    stageTauStart = checkpoint.time;
     progress.previousD12 = checkpoint.reals.at("run previous D12");
+    const auto rate = checkpoint.reals.find("run preparation rate"); // absent before the windowed check
+    progress.preparationRate = rate == checkpoint.reals.end() ? 0.0 : rate->second;
+    const auto end = checkpoint.reals.find("run preparation end");
+    progress.preparationEnd = end == checkpoint.reals.end() ? -1.0 : end->second;
+    // Absent from checkpoints written before the placement phase: not placing.
+    const auto placing = checkpoint.integers.find("run placing");
+    if (placing != checkpoint.integers.end() && placing->second != 0) {
+      progress.placing = true;
+      progress.placeNode = static_cast<int>(checkpoint.integers.at("run place node"));
+      progress.placeSlope = checkpoint.reals.at("run place slope");
+      progress.placeTime = checkpoint.reals.at("run place time");
+      progress.placeTarget = checkpoint.reals.at("run place target");
+    }
     result.preparationTime = checkpoint.reals.at("run preparation time");
     result.maxTetherForce = checkpoint.reals.at("run max tether force");
     result.timeOfMaxTetherForce = checkpoint.reals.at("run time of max tether force");
@@ -311,14 +354,23 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
       nextOutputTau = stageEnd;
     }
     const double tOut = progress.origin + lambda * nextOutputTau;
-    if (!(tOut > state.time)) { // a stage of zero length
+    // The preparation stage also lands on its check times (multiples of the window).
+    const double nextCheckTau =
+      !preparing || progress.placing ? stageEnd
+      : progress.preparationEnd > 0.0 ? std::min(progress.preparationEnd, stageEnd)
+                                       : std::min(nextPreparationCheck(tether_, tauOf(state.time)), stageEnd);
+    const double tCheck = progress.origin + lambda * nextCheckTau;
+    const double tPlace =
+      preparing && progress.placing && progress.placeTarget > state.time ? progress.placeTarget : tCheck;
+    const double tTarget = preparing ? std::min({tOut, tCheck, tPlace}) : tOut;
+    if (!(tTarget > state.time)) { // a stage of zero length
       if (preparing) {
         progress.outputIndex += 1;
       } else {
         break;
       }
     } else {
-      const timeint::StepReport report = integrator.step(state, tOut);
+      const timeint::StepReport report = integrator.step(state, tTarget);
       ++progress.steps;
       const bool atOutput = state.time == tOut;
       if (atOutput) {
@@ -337,14 +389,53 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
         }
         continue;
       }
-      const double d12 = contour::taylorDeformation(model_.contour(state.y));
-      const double rate = (d12 - progress.previousD12) / (report.stepSize / lambda);
-      progress.previousD12 = d12;
       const double tau = tauOf(state.time);
-      const bool done = (!report.shortened && preparationComplete(tether_, tau, rate)) ||
-                        tau >= tether_.maximumPreparationTime * (1.0 - 1e-12);
+      bool done = tau >= tether_.maximumPreparationTime * (1.0 - 1e-12);
+      bool settled = false; // the shape criterion holds: wait for a node at the bottom
+      if (progress.placing) {
+        // A node through the lowest point of the contour (TetherProcedure2D.hpp).
+        const LowestNodeSlope lowest = lowestNodeSlope(model_.contour(state.y));
+        const bool sameNode = lowest.node == progress.placeNode;
+        if (state.time == tPlace || (sameNode && lowest.slope * progress.placeSlope <= 0.0)) {
+          done = true;
+        } else {
+          progress.placeTarget =
+            sameNode ? predictedZeroCrossing(progress.placeTime, progress.placeSlope, state.time, lowest.slope) : -1.0;
+        }
+        progress.placeNode = lowest.node;
+        progress.placeSlope = lowest.slope;
+        progress.placeTime = state.time;
+      } else if (state.time == tCheck && progress.preparationEnd > 0.0) {
+        settled = true; // landed on the predicted end (TetherProcedure2D.hpp)
+      } else if (state.time == tCheck) {
+        // d D12 / d tau over the window since the last check (TetherProcedure2D.hpp).
+        const double d12 = contour::taylorDeformation(model_.contour(state.y));
+        const double previousRate = progress.preparationRate;
+        progress.preparationRate = (d12 - progress.previousD12) / tether_.preparationWindow;
+        progress.previousD12 = d12;
+        if (tau >= tether_.minimumPreparationTime) {
+          settled = preparationComplete(tether_, tau, progress.preparationRate);
+          const double end = predictedPreparationEnd(tether_, tau, previousRate, progress.preparationRate);
+          if (!settled && end > tau) {
+            progress.preparationEnd = end;
+          } else if (!settled && end > 0.0) {
+            settled = true; // the extrapolated crossing lies inside the last window: now
+          }
+        }
+      }
+      if (settled && !done && !tether_.waitForNodeAtBottom) {
+        done = true;
+      } else if (settled && !done) {
+        const LowestNodeSlope lowest = lowestNodeSlope(model_.contour(state.y));
+        progress.placing = true;
+        progress.placeNode = lowest.node;
+        progress.placeSlope = lowest.slope;
+        progress.placeTime = state.time;
+        progress.placeTarget = -1.0;
+        done = lowest.slope == 0.0;
+      }
       if (atOutput || done) {
-        observe(report.stepSize, rate, done);
+        observe(report.stepSize, progress.preparationRate, done);
         if (!done && output_.checkpointEvery > 0 && progress.outputIndex % output_.checkpointEvery == 0) {
           writeCheckpoint();
         }

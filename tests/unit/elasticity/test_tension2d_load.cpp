@@ -255,6 +255,58 @@ TEST(Tension2DLoad, TetheredNetForceIsTheTensionJumpAtTheTether)
   EXPECT_DOUBLE_EQ(state.tension()(0), state.tensionAt(0, 0.0));
 }
 
+/// Relative error of the tether force of the slipped circle below, for each N.
+std::vector<double> tetherSlipForceErrors(const std::vector<int>& refinements, capsula::contour::TetherEnds ends)
+{
+  // Material points theta of the unit circle move to phi = theta + eps theta (2 pi - theta)
+  // on a circle of radius R, with the tether at theta = 0 = 2 pi. phi is smooth on the open
+  // contour but its slope differs at the two ends, so omega = R phi' = R (1 + eps (2 pi -
+  // 2 theta)) jumps by 4 pi eps R across the tether while the tangent (0, 1) is continuous:
+  // the exact force (eq A.56) is gamma(0+) t - gamma(2 pi-) t = E 4 pi eps R (0, 1).
+  const double radius = 1.2, eps = 0.05;
+  const Eigen::Vector2d exact(0.0, modulus * 4.0 * pi * eps * radius);
+  ContourOptions tethered = withClosure(Closure::Tethered);
+  tethered.tetherEnds = ends;
+  std::vector<double> error;
+  for (int n : refinements) {
+    const Eigen::Matrix2Xd reference = capsula::contour::circleNodes(n, 1.0);
+    Eigen::Matrix2Xd slipped(2, n);
+    for (int i = 0; i < n; ++i) {
+      const double theta = 2.0 * pi * i / n;
+      const double phi = theta + eps * theta * (2.0 * pi - theta);
+      slipped.col(i) = radius * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+    }
+    const MembraneState2D state = ElasticMembrane2D(Contour(reference, tethered), HookeanLaw2D(modulus))
+                                      .evaluate(Contour(slipped, tethered));
+    const Eigen::Vector2d force = state.netForce(8);
+    error.push_back((force - exact).norm() / exact.norm());
+    std::printf("  %s ends, N = %3d: force (%.6e, %.6e), exact (0, %.6e), relative error %.3e\n",
+                ends == capsula::contour::TetherEnds::Natural ? "natural" : "not-a-knot", n, force.x(),
+                force.y(), exact.y(), error.back());
+  }
+  return error;
+}
+
+TEST(Tension2DLoad, TetheredNetForceConvergesToTheExactTensionJump)
+{
+  // The discretisation error of the tether force itself (the flow's is not involved): the
+  // tethered splines' end conditions decide it. Natural ends (thesis A.31-A.32) impose zero
+  // curvature at the tether on a branch of curvature 1/R, which tilts the end tangents by
+  // O(h / R) and gives the force an O(h) error along x (measured: 9.6e-2 at N = 16 down to
+  // 6.0e-3 at 256, order 1.00); not-a-knot ends (tether2d's Cell/Tether spline ends) give order 2.94
+  // (1.5e-2 down to 4.4e-6). Bounds: 0.1 below the measured orders.
+  const std::vector<int> refinements{16, 32, 64, 128, 256};
+  const std::vector<double> natural = tetherSlipForceErrors(refinements, capsula::contour::TetherEnds::Natural);
+  const std::vector<double> notAKnot = tetherSlipForceErrors(refinements, capsula::contour::TetherEnds::NotAKnot);
+  const double naturalOrder = fittedOrder(refinements, natural);
+  const double notAKnotOrder = fittedOrder(refinements, notAKnot);
+  std::printf("  fitted orders: natural ends %.2f, not-a-knot ends %.2f\n", naturalOrder, notAKnotOrder);
+  EXPECT_GT(naturalOrder, 0.9);
+  EXPECT_LT(naturalOrder, 1.1); // first order: the tangent tilt, not a slower effect
+  EXPECT_GT(notAKnotOrder, 2.8);
+  EXPECT_LT(notAKnot.back(), 1e-5); // 4.4e-6 measured at N = 256
+}
+
 TEST(Tension2DLoad, RejectsMismatchedContours)
 {
   const Contour reference(testEllipse(32));

@@ -75,10 +75,41 @@ TEST(TetherProcedure2D, PreparationEndsWhenTheShapeStopsChangingOrAtTheLatest)
   s.maximumPreparationTime = 20.0;
   EXPECT_FALSE(preparationComplete(s, 0.2, 0.0));      // too early, even if steady
   EXPECT_FALSE(preparationComplete(s, 3.0, 2e-3));     // still deforming
-  EXPECT_FALSE(preparationComplete(s, 3.0, -2e-3));    // relaxing counts as changing
+  EXPECT_TRUE(preparationComplete(s, 3.0, -2e-3));     // past the maximum: relaxing
   EXPECT_TRUE(preparationComplete(s, 3.0, 5e-4));
   EXPECT_TRUE(preparationComplete(s, 3.0, -5e-4));
   EXPECT_TRUE(preparationComplete(s, 20.0, 1.0));      // the maximum time
+}
+
+TEST(TetherProcedure2D, PreparationChecksLandOnMultiplesOfTheWindow)
+{
+  TetherSettings2D s;
+  s.preparationWindow = 0.25;
+  EXPECT_DOUBLE_EQ(nextPreparationCheck(s, 0.0), 0.25);
+  EXPECT_DOUBLE_EQ(nextPreparationCheck(s, 0.3), 0.5);
+  // A time that landed on a check up to round-off is not checked again.
+  EXPECT_DOUBLE_EQ(nextPreparationCheck(s, 0.5 * (1.0 - 1e-14)), 0.75);
+  EXPECT_DOUBLE_EQ(nextPreparationCheck(s, 0.5), 0.75);
+}
+
+TEST(TetherProcedure2D, PredictedEndIsWhereTheExtrapolatedRateReachesTheTolerance)
+{
+  TetherSettings2D s;
+  s.preparationWindow = 0.25;
+  s.preparationTolerance = 1e-3;
+  // D12 = c - 0.004 (tau - 4.95)^2: the window means of the rate are exact at the window
+  // midpoints for a quadratic, so the extrapolated crossing of rate = 1e-3, at
+  // tau = 4.95 - 1e-3 / 0.008 = 4.825, is exact (to round-off, 1e-12).
+  const auto d12 = [](double tau) { return 0.7 - 0.004 * (tau - 4.95) * (tau - 4.95); };
+  const auto rate = [&](double tau) { return (d12(tau) - d12(tau - 0.25)) / 0.25; };
+  EXPECT_NEAR(predictedPreparationEnd(s, 4.75, rate(4.5), rate(4.75)), 4.825, 1e-12);
+  // At 4.5 the crossing (4.825) lies beyond the next check (4.75): not yet.
+  EXPECT_LT(predictedPreparationEnd(s, 4.5, rate(4.25), rate(4.5)), 0.0);
+  // Far from the tolerance (rate 0.5 >= 10 tolerances) nothing is extrapolated, however
+  // the rate slows; growth that speeds up, or a rate already below the tolerance, neither.
+  EXPECT_LT(predictedPreparationEnd(s, 0.5, 1.35, 0.5), 0.0);
+  EXPECT_LT(predictedPreparationEnd(s, 3.0, 0.002, 0.004), 0.0);
+  EXPECT_LT(predictedPreparationEnd(s, 3.0, 0.002, 0.0005), 0.0);
 }
 
 TEST(CellMetrics2D, ContourMaximumIsTheSplineMaximum)

@@ -15,8 +15,13 @@
 //   - Closure::Periodic: a free cell, periodic end conditions (A.33-A.34).
 //     Closure::Tethered: the cell of Chapter 4, whose spline parameter starts at the
 //     tether point (node 0), runs anticlockwise and returns to it at s_max (thesis
-//     Fig. 4.22). The spline is open there, with natural ends x'' = y'' = 0 (A.31-A.32:
-//     zero curvature at the tether), so the tangent may turn at node 0. Per-node values
+//     Fig. 4.22). The spline is open there, so the tangent may turn at node 0. Its end
+//     conditions (TetherEnds): natural, x'' = y'' = 0 (A.31-A.32: zero curvature at the
+//     tether), or not-a-knot (x''' continuous at s_1 and s_{N-1}). Natural ends put an
+//     O(h kappa) error into the tangents at the tether wherever the branches are curved
+//     there (the membrane's normal balance gives kappa = (Delta f . n) / gamma, not 0), so
+//     the tether force gamma t(0+) - gamma t(s_max-) is only first-order accurate; with
+//     not-a-knot ends it is third-order (tests/unit/elasticity, Tension2DLoad). Per-node values
 //     of node 0 are then the limits from segment 0 (s -> 0+); the other side is
 //     pointAt(numberOfSegments() - 1, 1.0).
 #include "capsula/contour/CubicSpline.hpp"
@@ -32,6 +37,9 @@ namespace capsula::contour {
 
 enum class Closure { Periodic, Tethered };
 
+/// End conditions of a tethered contour's position splines at the tether node.
+enum class TetherEnds { Natural, NotAKnot };
+
 /// The monotonic spline parameter (eq A.14 uses the node index; the cumulative chord
 /// length keeps |dx/ds| close to 1 when the markers are unevenly spaced).
 enum class Parametrisation { ChordLength, NodeIndex };
@@ -39,6 +47,8 @@ enum class Parametrisation { ChordLength, NodeIndex };
 struct ContourOptions {
   Closure closure = Closure::Periodic;
   Parametrisation parametrisation = Parametrisation::ChordLength;
+  /// Only for Closure::Tethered: natural is the thesis's A.31-A.32.
+  TetherEnds tetherEnds = TetherEnds::Natural;
   /// Gauss-Legendre points per segment for arc lengths (|dx/ds| is not a polynomial).
   int arcLengthPoints = 8;
 };

@@ -2,6 +2,8 @@
 // The initial contour of the 2D cell of Chapter 4 (thesis Fig. 4.1): an ellipse of aspect
 // ratio a/b (a along the flow, x; b across it, y) and area pi L^2 (L = sqrt(ab) = 1), its
 // lowest point a given height above the wall y = 0, node 0 at that lowest point.
+#include <capsula/contour/Contour.hpp>
+
 #include <Eigen/Core>
 #include <Teuchos_ParameterList.hpp>
 
@@ -11,9 +13,12 @@ struct CellSettings2D {
   double aspectRatio = 1.0;         ///< a/b
   int numberOfPoints = 256;         ///< marker points N_P = segments N_E (closed contour)
   double lowestPointHeight = 0.005; ///< y of the lowest point (the thesis's gap)
+  /// End conditions of the tethered splines at the tether (thesis A.31-A.32: natural).
+  contour::TetherEnds tetherEnds = contour::TetherEnds::Natural;
 };
 
-/// Declares Aspect ratio, Number of points and Lowest point height in `cell`.
+/// Declares Aspect ratio, Number of points, Lowest point height and Tether spline ends in
+/// `cell`.
 void declareCellParameters2D(Teuchos::ParameterList& cell);
 
 /// Reads a validated "Cell" sublist.
