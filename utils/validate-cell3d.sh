@@ -9,7 +9,7 @@
 #               Ca = 0.01 and 0.005 extrapolated to Ca = 0: slip velocity and rotation rate
 #   lac2004     neo-Hookean capsule at Ca = 0.3, 0.6, 0.9, 1.2, unbounded, levels 2-3
 # Usage: utils/validate-cell3d.sh [BUILD] [CASE...]   (default: build, all cases)
-# Environment: RANKS (default 2), OUT (default out/validation-cell3d).
+# Environment: RANKS (default 2), OUT (default out/validation-cell3d), FIGDIR (figures).
 # Cost on 2 cores: lac2005 ~10 min, small ~5 min, goldman ~15 min, lac2004 ~20 min.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -116,3 +116,7 @@ PY
   *) echo "unknown case '$case' (lac2005 small goldman lac2004)" >&2; exit 2 ;;
   esac
 done
+
+# Figures of the runs in $out (utils/plotting/validation_cell3d.py): into FIGDIR (default
+# $out/figures; docs/figures holds the committed ones).
+/usr/bin/python3 utils/plotting/validation_cell3d.py "$out" "${FIGDIR:-$out/figures}"
