@@ -6,33 +6,11 @@
 // The deck names the scene (packages/scene/SceneParameters.hpp, docs/twocell3d.md); the
 // run is the same as cell3d's (capsula::scene::runScene), which writes one column per cell
 // for every metric and stops cleanly when two cells come closer than 'Cells/Minimum gap'.
-#include <capsula/core/Application.hpp>
-#include <capsula/operators/KernelRegistry.hpp>
-#include <capsula/scene/SceneParameters.hpp>
-#include <capsula/scene/SceneRun.hpp>
-
-namespace {
-
-namespace core = capsula::core;
-namespace scene = capsula::scene;
-
-void run(core::RunContext& context)
-{
-  scene::SceneRunOptions options;
-  options.application = "twocell3d";
-  options.deckSource = context.deckName;
-  options.outputDirectory = context.options.outputDirectory;
-  options.restartDirectory = context.options.restartDirectory;
-  options.log = context.out;
-  const auto kernels = capsula::operators::builtInKernels();
-  scene::runScene(*context.deck, context.comm, options, kernels);
-}
-
-} // namespace
+#include <capsula/scene/SceneApplication.hpp>
 
 int main(int argc, char** argv)
 {
-  const core::AppDescription app{
+  const capsula::core::AppDescription app{
     "twocell3d",
     "two elastic capsules interacting in shear flow near a wall: separation, relative "
     "velocities, deformation and stress of each",
@@ -42,7 +20,5 @@ int main(int argc, char** argv)
      "twocell3d input/twocell3d/demo.xml --output out/demo --restart out/demo --set \"Time integration/End time=4\"",
      "twocell3d --print-defaults > my_deck.xml"},
     true};
-  return core::runApplication(
-    argc, argv, app,
-    [](const Teuchos::ParameterList& deck) { return scene::validSceneParameters(deck, "twocell3d"); }, run);
+  return capsula::scene::runSceneApplication(argc, argv, app);
 }
