@@ -5,6 +5,10 @@
 //       CELL "-": the table of several cells (one row per time, columns NAME_c), last row.
 //   check_metrics same FILE_A FILE_B RELATIVE_TOLERANCE
 //       Same columns and rows; every number within RELATIVE_TOLERANCE * max(1, |a|, |b|).
+//   check_metrics within FILE COLUMN=LOW:HIGH...
+//       Every row must have LOW <= COLUMN <= HIGH, so also be finite (NaN fails); for the
+//       bounds a run must keep all along (tests/regression/stability.cmake). Prints the
+//       extremes found.
 //
 // Prints every comparison; exits 0 if all pass, 1 otherwise, 2 on a usage error.
 #include <capsula/core/Error.hpp>
@@ -93,6 +97,45 @@ int same(char** argv)
   return pass ? 0 : 1;
 }
 
+int within(int argc, char** argv)
+{
+  const std::string file = argv[2];
+  const io::CsvTable table = io::readCsvTable(file);
+  if (table.rows.empty()) {
+    std::cerr << "no rows in " << file << "\n";
+    return 1;
+  }
+  bool ok = true;
+  for (int k = 3; k < argc; ++k) {
+    const std::string spec = argv[k];
+    const auto equals = spec.find('='), colon = spec.rfind(':');
+    if (equals == std::string::npos || colon == std::string::npos || colon < equals) {
+      std::cerr << "bad bound '" << spec << "' (COLUMN=LOW:HIGH)\n";
+      return 2;
+    }
+    const std::string name = spec.substr(0, equals);
+    const double low = std::atof(spec.substr(equals + 1, colon - equals - 1).c_str());
+    const double high = std::atof(spec.substr(colon + 1).c_str());
+    const std::size_t column = columnIndex(table, name, file);
+    double smallest = HUGE_VAL, largest = -HUGE_VAL;
+    std::size_t bad = 0;
+    for (const auto& row : table.rows) {
+      const double x = row[column];
+      smallest = std::min(smallest, x);
+      largest = std::max(largest, x);
+      bad += (x >= low && x <= high) ? 0 : 1;   // NaN fails both comparisons
+    }
+    ok = ok && bad == 0;
+    std::cout << (bad == 0 ? "ok    " : "FAIL  ") << name << " in [" << smallest << ", " << largest << "] over "
+              << table.rows.size() << " rows, allowed [" << low << ", " << high << "]";
+    if (bad > 0) {
+      std::cout << ", " << bad << " rows outside (or not finite)";
+    }
+    std::cout << "\n";
+  }
+  return ok ? 0 : 1;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -105,8 +148,12 @@ int main(int argc, char** argv)
     if (mode == "same" && argc == 5) {
       return same(argv);
     }
+    if (mode == "within" && argc >= 4) {
+      return within(argc, argv);
+    }
     std::cerr << "usage: check_metrics expect FILE CELL COLUMN=VALUE:TOLERANCE...\n"
-                 "       check_metrics same FILE_A FILE_B RELATIVE_TOLERANCE\n";
+                 "       check_metrics same FILE_A FILE_B RELATIVE_TOLERANCE\n"
+                 "       check_metrics within FILE COLUMN=LOW:HIGH...\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "check_metrics: " << e.what() << "\n";

@@ -5,9 +5,13 @@
 //       positions and fields, bit for bit (a restarted run against the uninterrupted one).
 //   check_snapshots count FILE N
 //       The file holds exactly N snapshots.
+//   check_snapshots checkpoint-time FILE T
+//       The checkpoint FILE (io/Checkpoint.hpp) holds the state at time T exactly (a run
+//       that failed kept its last good checkpoint).
 //
 // Prints what it compared; exits 0 if all agree, 1 otherwise, 2 on a usage error.
 #include <capsula/core/Error.hpp>
+#include <capsula/io/Checkpoint.hpp>
 #include <capsula/io/SnapshotFile.hpp>
 
 #include <cstdlib>
@@ -91,7 +95,14 @@ int main(int argc, char** argv)
       std::cout << (count == expected ? "ok    " : "FAIL  ") << count << " snapshots, expected " << expected << "\n";
       return count == expected ? 0 : 1;
     }
-    std::cerr << "usage: check_snapshots same FILE_A FILE_B | count FILE N\n";
+    if (mode == "checkpoint-time" && argc == 4) {
+      const double time = io::readCheckpoint(argv[2]).time;
+      const double expected = std::atof(argv[3]);
+      std::cout << (time == expected ? "ok    " : "FAIL  ") << "checkpoint at t = " << time << ", expected "
+                << expected << "\n";
+      return time == expected ? 0 : 1;
+    }
+    std::cerr << "usage: check_snapshots same FILE_A FILE_B | count FILE N | checkpoint-time FILE T\n";
     return 2;
   } catch (const capsula::core::Error& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -55,6 +55,7 @@ std::vector<CellSample> OutputMetrics::record(double t, const Scene& scene, cons
     s.rotation = rigidMotionFit(cell, velocities, s.shape.centroid).rotation;
     s.shapeChangeRate = shapeChangeRate(velocities, scene.membrane(c).nodeNormals(), s.instantVelocity);
     s.gmresIterations = fields.gmresIterations;
+    s.stability = measureStability(cell, scene.membrane(c));
 
     auto& history = centroids_[static_cast<std::size_t>(c)];
     for (int d = 0; d < 3; ++d) {

@@ -1,5 +1,8 @@
 #include "capsula/scene/PairMetrics.hpp"
 
+#include "capsula/scene/CellStability.hpp"
+
+#include <algorithm>
 #include <cmath>
 
 namespace capsula::scene {
@@ -10,6 +13,21 @@ SurfaceGap gapBetween(const Scene& scene, const std::vector<double>& positions, 
 {
   return minimumSurfaceGap(scene.cell(i), positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(i)),
                            scene.cell(j), positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(j)));
+}
+
+// The local element size of `cell` (at `x`) near `point`: that of its nearest node.
+double elementSizeNear(const mesh::SurfaceMesh& cell, const mesh::Vec3& point)
+{
+  int nearest = 0;
+  double best = HUGE_VAL;
+  for (int i = 0; i < cell.numNodes(); ++i) {
+    const double d = (cell.position(i) - point).squaredNorm();
+    if (d < best) {
+      best = d;
+      nearest = i;
+    }
+  }
+  return localElementSize(cell, nearest);
 }
 
 } // namespace
@@ -30,6 +48,10 @@ std::vector<PairSample> pairSamples(const Scene& scene, const std::vector<double
       pair.relativeVelocity = a.splineVelocity - b.splineVelocity;
       pair.relativeSlip = a.slipVelocity() - b.slipVelocity();
       pair.gap = gapBetween(scene, positions, i, j);
+      // The cells hold the positions of this output (Scene::evaluate set them).
+      const double size = std::max(elementSizeNear(scene.cell(i), pair.gap.onFirst),
+                                   elementSizeNear(scene.cell(j), pair.gap.onSecond));
+      pair.gapPerElementSize = size > 0.0 ? pair.gap.distance / size : 0.0;
       pairs.push_back(pair);
     }
   }

@@ -86,6 +86,7 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
                                     k / 3, " lies at y = ", probes[k + 1],
                                     ", not in the fluid above the wall y = 0.");
   }
+  out.minimumAngle = output.sublist("Stability").get<double>("Minimum angle");
   const auto& wallStress = output.sublist("Wall shear stress");
   WallShearStressOutput& ws = out.wallShearStress;
   ws.enabled = wallStress.get<bool>("Enabled");

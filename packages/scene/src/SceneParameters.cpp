@@ -130,6 +130,13 @@ void declareOutputParameters(Teuchos::ParameterList& output)
                          "to probes.csv at every output (empty: none).");
   declareWallShearStressParameters(
     core::declareSublist(output, "Wall shear stress", "Principal shear stress on the wall."));
+  auto& stability = core::declareSublist(
+    output, "Stability", "Bounds on the diagnostics of every output (docs/stability.md).");
+  core::declareReal(stability, "Minimum angle", 5.0,
+                    "Stop the run with an error (keeping the last good checkpoint and outputs) when "
+                    "an element's smallest corner angle falls below this many degrees at an "
+                    "output: the mesh has degraded past what its quadrature resolves (0: never).",
+                    core::atLeast(0.0), core::lessThan(60.0));
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> validSceneParameters(const Teuchos::ParameterList& deck,

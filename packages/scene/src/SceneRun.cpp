@@ -190,6 +190,22 @@ std::vector<double> cellValues(const CellSample& s)
           s.meanStressIncrease, s.maximumStressIncrease, s.shapeChangeRate};
 }
 
+// The stability diagnostics of one cell (CellStability.hpp), in the order of
+// stabilityValues. They came after the other columns, so they sit at the end of every
+// table (after the wall stress columns): older readers of the leading columns still work.
+const std::vector<std::string>& stabilityMetricNames()
+{
+  static const std::vector<std::string> names{"min_angle_deg", "max_edge_ratio", "min_tension",
+                                              "wall_gap_per_h"};
+  return names;
+}
+
+std::vector<double> stabilityValues(const CellSample& s)
+{
+  return {s.stability.minAngleDegrees, s.stability.maxEdgeRatio, s.stability.mostCompressiveTension,
+          s.stability.wallGapPerElementSize};
+}
+
 // --- the run --------------------------------------------------------------------------
 
 constexpr const char* kCheckpointFile = "checkpoint.h5";
@@ -242,6 +258,11 @@ private:
   std::string stopReason_;
   double lastTime_ = 0.0;
   double maxVolumeDrift_ = 0.0;
+  // Extremes of the stability diagnostics over the outputs of this process (summary.json).
+  double smallestAngle_ = HUGE_VAL;
+  double largestEdgeRatio_ = 1.0;
+  double mostCompressiveTension_ = HUGE_VAL;
+  double smallestWallGap_ = HUGE_VAL;
   std::optional<ElevatedStressAreas> lastWallAreas_;
   std::optional<OutsideRangeAreas> lastOutsideIsolated_;
   std::int64_t outputsWritten_ = 0;
@@ -460,9 +481,27 @@ bool Run::observe(const timeint::IntegrationState& state)
   }
 
   double shapeRate = 0.0;
-  for (const auto& s : samples) {
+  std::string degraded;   // why the mesh is past the quality bound, or ""
+  for (std::size_t c = 0; c < samples.size(); ++c) {
+    const CellSample& s = samples[c];
     shapeRate = std::max(shapeRate, s.shapeChangeRate);
     maxVolumeDrift_ = std::max(maxVolumeDrift_, std::abs(s.volumeChange));
+    smallestAngle_ = std::min(smallestAngle_, s.stability.minAngleDegrees);
+    largestEdgeRatio_ = std::max(largestEdgeRatio_, s.stability.maxEdgeRatio);
+    mostCompressiveTension_ = std::min(mostCompressiveTension_, s.stability.mostCompressiveTension);
+    smallestWallGap_ = std::min(smallestWallGap_, s.stability.wallGapPerElementSize);
+    // The angle is checked at outputs only (an observer): between outputs the integrator's
+    // own floors (non-finite state, step collapse, a node at the wall) catch a blow-up.
+    if (degraded.empty() && !(s.stability.minAngleDegrees >= description_.output.minimumAngle)) {
+      std::ostringstream reason;
+      reason << std::setprecision(6) << "At t = " << t << ", the mesh of '" << description_.cells[c].path
+             << "' degraded: its smallest element angle is " << s.stability.minAngleDegrees
+             << " degrees, below 'Output/Stability/Minimum angle' = " << description_.output.minimumAngle
+             << " (largest edge ratio " << s.stability.maxEdgeRatio << "). The metrics row of this time is "
+             << "written; the last good checkpoint and outputs are in " << directory_
+             << ". Refine the mesh, lower 'Time integration/Tolerance', or stop earlier.";
+      degraded = reason.str();
+    }
   }
   const double steadyTolerance = integrator_->settings().steadyTolerance;
   const bool steady = steadyTolerance > 0.0 && t > state.outputOrigin && shapeRate < steadyTolerance;
@@ -511,20 +550,33 @@ bool Run::observe(const timeint::IntegrationState& state)
       row.insert(row.end(), values.begin(), values.end());
     }
     row.insert(row.end(), wallValues.begin(), wallValues.end());
+    if (samples.size() == 1) {
+      const std::vector<double> values = stabilityValues(samples.front());
+      row.insert(row.end(), values.begin(), values.end());
+    } else {
+      for (std::size_t m = 0; m < stabilityMetricNames().size(); ++m) {
+        for (const auto& s : samples) {
+          row.push_back(stabilityValues(s)[m]);
+        }
+      }
+      for (const auto& pair : pairs) {
+        row.push_back(pair.gapPerElementSize);
+      }
+    }
     metricsCsv_->appendRow(row);
     if (probesCsv_) {
       std::vector<double> probeRow{t};
       probeRow.insert(probeRow.end(), probeVelocities.begin(), probeVelocities.end());
       probesCsv_->appendRow(probeRow);
     }
-    if (snapshotDue) {
+    if (snapshotDue && degraded.empty()) {
       io::Snapshot snapshot = sceneSnapshot(*scene_, fields, t, state.statistics.acceptedSteps);
       if (grid) {
         snapshot.blocks.push_back(wallSnapshotBlock(*grid, *wallStress));
       }
       snapshots_->write(snapshot);
     }
-    if (description_.output.checkpoint) {
+    if (description_.output.checkpoint && degraded.empty()) {   // keep the last good one
       io::Checkpoint checkpoint;
       checkpoint.time = t;
       checkpoint.step = state.statistics.acceptedSteps;
@@ -544,8 +596,13 @@ bool Run::observe(const timeint::IntegrationState& state)
       checkpoint.integers["scene.outputs"] = outputsWritten_;
       io::writeCheckpoint(output_->file(kCheckpointFile), checkpoint);
     }
-    writeSummary(steady ? "steady" : "running", "");
+    if (degraded.empty()) {
+      writeSummary(steady ? "steady" : "running", "");
+    }
   });
+  if (!degraded.empty()) {
+    throw core::NumericalError(degraded);   // execute() records it in summary.json
+  }
   progress(state, lastD12_);
   return steady;
 }
@@ -604,6 +661,10 @@ io::JsonValue sampleJson(const CellSample& s)
   v["mean shear stress increase"] = s.meanStressIncrease;
   v["max shear stress increase"] = s.maximumStressIncrease;
   v["shape change rate"] = s.shapeChangeRate;
+  v["minimum angle (degrees)"] = s.stability.minAngleDegrees;
+  v["maximum edge ratio"] = s.stability.maxEdgeRatio;
+  v["most compressive tension"] = s.stability.mostCompressiveTension;
+  v["wall gap per element size"] = s.stability.wallGapPerElementSize;
   return v;
 }
 
@@ -616,6 +677,7 @@ io::JsonValue pairJson(const PairSample& p)
     io::JsonValue::array({p.relativeVelocity[0], p.relativeVelocity[1], p.relativeVelocity[2]});
   v["relative u_slip"] = p.relativeSlip;
   v["gap"] = p.gap.distance;
+  v["gap per element size"] = p.gapPerElementSize;
   return v;
 }
 
@@ -644,6 +706,15 @@ void Run::writeSummary(const std::string& status, const std::string& note)
   summary["steps"]["smallest"] = stats.smallestStep;
   summary["steps"]["largest"] = stats.largestStep;
   summary["max volume drift"] = maxVolumeDrift_;
+  if (std::isfinite(smallestAngle_)) {   // extremes over the outputs of this process
+    summary["stability"]["smallest angle (degrees)"] = smallestAngle_;
+    summary["stability"]["largest edge ratio"] = largestEdgeRatio_;
+    summary["stability"]["most compressive tension"] = mostCompressiveTension_;
+    if (description_.wall) {   // without a wall the column measures from the plane y = 0
+      summary["stability"]["smallest wall gap per element size"] = smallestWallGap_;
+    }
+    summary["stability"]["minimum angle bound"] = description_.output.minimumAngle;
+  }
   for (std::size_t c = 0; c < lastSamples_.size(); ++c) {
     io::JsonValue cell = io::JsonValue::object();
     cell["name"] = description_.cells[c].path;
@@ -768,10 +839,21 @@ SceneRunResult Run::execute()
 std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange)
 {
   if (numCells <= 1) {
-    std::vector<std::string> columns = metricsColumns(wallShearStress);
+    const auto& names = cellMetricNames();
+    std::vector<std::string> columns{"time", "step", "dt"};
+    const auto split = names.begin() + static_cast<std::ptrdiff_t>(kMetricsBeforeCellColumn);
+    columns.insert(columns.end(), names.begin(), split);
+    columns.push_back("cell");
+    columns.insert(columns.end(), split, names.end());
+    columns.push_back("gmres_iterations");
+    if (wallShearStress) {
+      columns.insert(columns.end(),
+                     {"wall_stress_min", "wall_stress_max", "wall_area_upstream", "wall_area_downstream"});
+    }
     if (wallShearStress && isolatedRange) {
       columns.insert(columns.end(), {"wall_area_below_isolated", "wall_area_above_isolated"});
     }
+    columns.insert(columns.end(), stabilityMetricNames().begin(), stabilityMetricNames().end());
     return columns;
   }
   std::vector<std::string> columns{"time", "step", "dt"};
@@ -790,24 +872,20 @@ std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool
       columns.insert(columns.end(), {"wall_area_below_isolated", "wall_area_above_isolated"});
     }
   }
-  return columns;
-}
-
-std::vector<std::string> metricsColumns(bool wallShearStress)
-{
-  const auto& names = cellMetricNames();
-  std::vector<std::string> columns{"time", "step", "dt"};
-  const auto split = names.begin() + static_cast<std::ptrdiff_t>(kMetricsBeforeCellColumn);
-  columns.insert(columns.end(), names.begin(), split);
-  columns.push_back("cell");
-  columns.insert(columns.end(), split, names.end());
-  columns.push_back("gmres_iterations");
-  if (wallShearStress) {
-    columns.insert(columns.end(),
-                   {"wall_stress_min", "wall_stress_max", "wall_area_upstream", "wall_area_downstream"});
+  for (const auto& name : stabilityMetricNames()) {
+    for (int c = 0; c < numCells; ++c) {
+      columns.push_back(name + "_" + std::to_string(c));
+    }
+  }
+  for (int i = 0; i < numCells; ++i) {
+    for (int j = i + 1; j < numCells; ++j) {
+      columns.push_back("gap_per_h_" + std::to_string(i) + "_" + std::to_string(j));
+    }
   }
   return columns;
 }
+
+std::vector<std::string> metricsColumns(bool wallShearStress) { return metricsColumns(wallShearStress, 1, false); }
 
 SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck,
                         const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const SceneRunOptions& options,

@@ -147,13 +147,17 @@ TEST_F(TwoCellsTest, MetricsHaveAColumnPerCellAndThePairColumns)
                              "min_angle_deg_1", "max_edge_ratio_1", "min_tension_0", "wall_gap_per_h_1"}) {
     EXPECT_EQ(std::count(t.columns.begin(), t.columns.end(), column), 1) << column;
   }
-  EXPECT_EQ(t.columns.size(), 3u + 2u * 26u + 1u + 9u + 2u * 4u);
-  EXPECT_EQ(t.columns.back(), "wall_gap_per_h_1");   // the stability diagnostics come last
+  EXPECT_EQ(t.columns.size(), 3u + 2u * 26u + 1u + 9u + 2u * 4u + 1u);
+  EXPECT_EQ(t.columns.back(), "gap_per_h_0_1");   // the stability diagnostics come last
   // Separation and gap at t = 0: centres 2.5 apart; the level-1 icosphere has nodes on the
   // z axis, so the gap of the discrete surfaces is exactly the spheres' 0.5.
   EXPECT_NEAR(value(t, 0, "dz_0_1"), 2.5, 1e-12);
   EXPECT_NEAR(value(t, 0, "distance_0_1"), 2.5, 1e-12);
   EXPECT_NEAR(value(t, 0, "gap_0_1"), 0.5, 1e-12);
+  // The same gap over the local element size: the level-1 icosphere's vertex edges are
+  // 0.547-0.618 a long (edge ratio 1.131), so 0.5 a is 0.81-0.91 of an element.
+  EXPECT_GT(value(t, 0, "gap_per_h_0_1"), 0.5 / 0.619);
+  EXPECT_LT(value(t, 0, "gap_per_h_0_1"), 0.5 / 0.546);
   // The pair columns are the differences of the cell columns.
   const std::size_t last = t.rows.size() - 1;
   EXPECT_NEAR(value(t, last, "dz_0_1"), value(t, last, "z_c_0") - value(t, last, "z_c_1"), 1e-14);

@@ -5,6 +5,7 @@
 // (eq 3.58). The memory goes into checkpoints, so a restarted run writes the same rows.
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/scene/CellMetrics.hpp>
+#include <capsula/scene/CellStability.hpp>
 #include <capsula/scene/Scene.hpp>
 
 #include <string>
@@ -25,6 +26,7 @@ struct CellSample {
   double meanStressIncrease = 0.0;      ///< mean sigma_SS - its value at t = 0 (eq 3.58)
   double maximumStressIncrease = 0.0;
   int gmresIterations = 0;
+  CellStability stability;       ///< mesh quality, compression, wall gap (CellStability.hpp)
 
   /// u_slip = k y_c - dx_c/dt (eq 3.55, k = 1), and u_migr = dy_c/dt, from the spline.
   double slipVelocity() const { return shape.centroid[1] - splineVelocity[0]; }

@@ -25,6 +25,10 @@ struct PairSample {
   mesh::Vec3 relativeVelocity = mesh::Vec3::Zero();  ///< dx_c/dt(i) - dx_c/dt(j), cubic spline in time
   double relativeSlip = 0.0;                         ///< u_slip(i) - u_slip(j) (eq 3.55)
   SurfaceGap gap;                                    ///< between the two surfaces (SurfaceGap.hpp)
+  /// gap over the local element size at the closest points (the larger of the two cells'
+  /// CellStability localElementSize at the node nearest to its closest point): below ~1 the
+  /// film between the cells is thinner than the elements that bound it.
+  double gapPerElementSize = 0.0;
 };
 
 /// Every pair (i < j, in order (0,1), (0,2), ..., (1,2), ...) of the cells of `scene` at

@@ -40,6 +40,7 @@ struct OutputDescription {
   int progressSteps = 20;
   std::vector<mesh::Vec3> flowProbes;
   WallShearStressOutput wallShearStress;
+  double minimumAngle = 5.0;         ///< 'Output/Stability/Minimum angle', degrees (0: no bound)
 };
 
 struct SceneDescription {

@@ -6,7 +6,10 @@
 //                  with one cell its metrics (and a column "cell" = 0); with N > 1 cells
 //                  a column NAME_c for every metric and cell (x_c_0, x_c_1, ...), then
 //                  the pair metrics of every pair i < j (PairMetrics.hpp: dx_i_j, ...,
-//                  gap_i_j); rewritten atomically at every output
+//                  gap_i_j); last, the stability diagnostics of every cell (CellStability.hpp:
+//                  min_angle_deg, max_edge_ratio, min_tension, wall_gap_per_h; with N > 1
+//                  cells suffixed _c, then gap_per_h_i_j of every pair); rewritten
+//                  atomically at every output
 //   probes.csv     fluid velocity at 'Output/Flow probes', only if some are given
 //   summary.json   status, final (and steady) values per cell, the terms built, step
 //                  statistics, timings, code version and the validated deck
@@ -30,9 +33,15 @@
 // summary.json and the log, and returns with status "too close" (not an error: the cells
 // met, which is a result; the thin film between them is no longer resolved).
 //
+// Mesh degraded: at an output where some element's smallest angle is below
+// 'Output/Stability/Minimum angle', the metrics row is written (it shows the cause), the
+// checkpoint and snapshot are not (the last good ones stay), and the run fails with a
+// core::NumericalError naming the cell, the angle and the time.
+//
 // All ranks run this together; rank 0 writes the files. A failure (non-finite state, a
-// cell reaching the wall, a GMRES breakdown) is rethrown after summary.json records it;
-// the last checkpoint and outputs stay.
+// step-size collapse below 'Time integration/Minimum step', a cell reaching the wall, a
+// degraded mesh, a GMRES breakdown) is rethrown after summary.json records it; the last
+// checkpoint and outputs stay.
 #include <capsula/operators/KernelRegistry.hpp>
 
 #include <Teuchos_Comm.hpp>
@@ -62,7 +71,8 @@ struct SceneRunResult {
   std::vector<std::string> terms;   ///< physics and output terms built
 };
 
-/// The metrics.csv columns of one cell; the wall-shear-stress ones only when that output is on.
+/// The metrics.csv columns of one cell; the wall-shear-stress ones only when that output is
+/// on; the stability diagnostics last.
 std::vector<std::string> metricsColumns(bool wallShearStress);
 /// The metrics.csv columns of `numCells` cells (the one-cell layout for numCells = 1); with
 /// `isolatedRange` (and the wall stress) also wall_area_below_isolated,

@@ -1,0 +1,37 @@
+#pragma once
+// Diagnostics of the numerical health of one cell at an output time (issue 10): how far
+// its mesh has degraded, whether its membrane is in compression (the precursor of
+// buckling), and how well the gap to the wall is resolved. Observers compute them at
+// output times, never inside the right-hand side; they cost one pass over the elements.
+#include <capsula/elasticity/MembraneMechanics.hpp>
+#include <capsula/mesh/SurfaceMesh.hpp>
+
+namespace capsula::scene {
+
+struct CellStability {
+  /// The smallest corner angle of the flat vertex triangles, degrees (60 for an
+  /// equilateral element; the level-1 icosphere starts at 55.6).
+  double minAngleDegrees = 0.0;
+  /// The largest ratio longest / shortest vertex-to-vertex edge of one element (>= 1).
+  double maxEdgeRatio = 1.0;
+  /// The smallest principal tension over the nodes (eq 3.30). Negative: the membrane is
+  /// compressed there and a thin shell would buckle (thesis Section 3.7: below Ca ~ 0.3
+  /// without prestress, Lac et al. 2004); the model has no bending stiffness to stop the
+  /// wrinkles that follow.
+  double mostCompressiveTension = 0.0;
+  /// The height of the lowest node above the plane y = 0 (the wall, where there is one)
+  /// divided by the local element size: the longest vertex-to-vertex edge of the elements
+  /// around that node. Below ~1 the near-singular quadrature of the wall image has to
+  /// resolve a gap thinner than an element; <= 0 means the cell crossed the plane. Without
+  /// a wall it is still measured from y = 0 (the plane where the shear flow is at rest)
+  /// and says nothing about contact.
+  double wallGapPerElementSize = 0.0;
+};
+
+/// The diagnostics of `cell` (at its current positions) with `membrane` evaluated there.
+CellStability measureStability(const mesh::SurfaceMesh& cell, const elasticity::MembraneMechanics& membrane);
+
+/// The longest vertex-to-vertex edge over the elements that contain `node`.
+double localElementSize(const mesh::SurfaceMesh& cell, int node);
+
+} // namespace capsula::scene
