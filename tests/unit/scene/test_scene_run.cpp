@@ -1,3 +1,4 @@
+#include "SceneRunFixture.hpp"
 #include "SceneTestDecks.hpp"
 
 #include <capsula/core/Error.hpp>
@@ -24,39 +25,8 @@ namespace scene = capsula::scene;
 namespace fs = std::filesystem;
 using scene::testing::smallDeck;
 
-class SceneRunTest : public ::testing::Test {
+class SceneRunTest : public scene::testing::SceneRunFixture {
 protected:
-  void SetUp() override
-  {
-    root_ = fs::temp_directory_path() /
-            ("capsula-scene-run-" + std::to_string(::getpid()) + "-" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root_);
-    fs::create_directories(root_);
-  }
-  void TearDown() override { fs::remove_all(root_); }
-
-  scene::SceneRunResult run(const Teuchos::ParameterList& deck, const std::string& directory,
-                            const std::string& restart = "")
-  {
-    static const auto kernels = capsula::operators::builtInKernels();
-    scene::SceneRunOptions options;
-    options.application = "test";
-    options.outputDirectory = (root_ / directory).string();
-    if (!restart.empty()) {
-      options.restartDirectory = (root_ / restart).string();
-    }
-    return scene::runScene(deck, Tpetra::getDefaultComm(), options, kernels);
-  }
-
-  std::string read(const std::string& file) const
-  {
-    std::ifstream in(root_ / file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   /// The snapshot series of two run directories hold the same values, bit for bit.
   void expectSameSnapshots(const std::string& a, const std::string& b) const
   {
@@ -79,7 +49,6 @@ protected:
     EXPECT_EQ(read(a + "/snapshots.xdmf"), read(b + "/snapshots.xdmf"));
   }
 
-  fs::path root_;
 };
 
 TEST_F(SceneRunTest, WritesTheOutputContract)

@@ -2,6 +2,7 @@
 // the symmetries of the side-by-side and mirrored configurations, the far-separation limit
 // against the single cell, and the stop when two surfaces come too close. Level-1 meshes,
 // RK4 steps of fixed size, a handful of steps: each run takes about a second.
+#include "SceneRunFixture.hpp"
 #include "SceneTestDecks.hpp"
 
 #include <capsula/core/Error.hpp>
@@ -63,45 +64,12 @@ Teuchos::RCP<Teuchos::ParameterList> pairDeck(const Point& a, const Point& b, in
   });
 }
 
-class TwoCellsTest : public ::testing::Test {
+class TwoCellsTest : public scene::testing::SceneRunFixture {
 protected:
-  void SetUp() override
-  {
-    root_ = fs::temp_directory_path() /
-            ("capsula-two-cells-" + std::to_string(::getpid()) + "-" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(root_);
-    fs::create_directories(root_);
-  }
-  void TearDown() override { fs::remove_all(root_); }
-
-  scene::SceneRunResult run(const Teuchos::ParameterList& deck, const std::string& directory,
-                            const std::string& restart = "")
-  {
-    static const auto kernels = capsula::operators::builtInKernels();
-    scene::SceneRunOptions options;
-    options.application = "test";
-    options.outputDirectory = (root_ / directory).string();
-    if (!restart.empty()) {
-      options.restartDirectory = (root_ / restart).string();
-    }
-    return scene::runScene(deck, Tpetra::getDefaultComm(), options, kernels);
-  }
-
   io::CsvTable table(const std::string& directory) const
   {
     return io::readCsvTable((root_ / directory / "metrics.csv").string());
   }
-
-  std::string read(const std::string& file) const
-  {
-    std::ifstream in(root_ / file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
-  fs::path root_;
 };
 
 double value(const io::CsvTable& t, std::size_t row, const std::string& column)
