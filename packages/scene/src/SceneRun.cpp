@@ -636,7 +636,7 @@ bool Run::cellsTooClose()
   return true;
 }
 
-io::JsonValue sampleJson(const CellSample& s)
+io::JsonValue sampleJson(const CellSample& s, bool wall)
 {
   io::JsonValue v = io::JsonValue::object();
   const auto& d = s.shape.deformation;
@@ -664,7 +664,9 @@ io::JsonValue sampleJson(const CellSample& s)
   v["minimum angle (degrees)"] = s.stability.minAngleDegrees;
   v["maximum edge ratio"] = s.stability.maxEdgeRatio;
   v["most compressive tension"] = s.stability.mostCompressiveTension;
-  v["wall gap per element size"] = s.stability.wallGapPerElementSize;
+  if (wall) { // measured from the plane y = 0, meaningless without the wall
+    v["wall gap per element size"] = s.stability.wallGapPerElementSize;
+  }
   return v;
 }
 
@@ -718,9 +720,9 @@ void Run::writeSummary(const std::string& status, const std::string& note)
   for (std::size_t c = 0; c < lastSamples_.size(); ++c) {
     io::JsonValue cell = io::JsonValue::object();
     cell["name"] = description_.cells[c].path;
-    cell["final"] = sampleJson(lastSamples_[c]);
+    cell["final"] = sampleJson(lastSamples_[c], description_.wall);
     if (!steadySamples_.empty()) {
-      cell["steady"] = sampleJson(steadySamples_[c]);
+      cell["steady"] = sampleJson(steadySamples_[c], description_.wall);
     }
     summary["cells"].append(cell);
   }
