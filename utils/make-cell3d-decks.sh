@@ -82,7 +82,7 @@ DECK
 percent() { awk -v a="$1" 'BEGIN { printf "%g", 100 * a }'; }
 
 # The demo: level 2, two shear times, with the wall shear stress map: ~10 s on 2 cores.
-# (Longer runs of this capsule fold the mesh at t ~ 2.9; docs/cell3d.md, limitations.)
+# (With the virtual-work load it runs on to t = 5 and beyond; docs/cell3d.md, limitations.)
 deck "$root/demo.xml" \
   "Demo: a Skalak capsule (C = 2.5) released at h/a = 1.6 above the wall at Ca = 0.3 (thesis
      Chapter 5): it deforms, tilts, tank-treads and starts to lift off the wall." \
