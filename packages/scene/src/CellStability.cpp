@@ -25,6 +25,7 @@ CellStability measureStability(const mesh::SurfaceMesh& cell, const elasticity::
   const mesh::MeshQuality quality = mesh::meshQuality(cell);
   s.minAngleDegrees = quality.minAngle;
   s.maxEdgeRatio = quality.maxEdgeRatio;
+  s.maxDistortion = quality.maxDistortion;
   s.mostCompressiveTension = membrane.mostCompressiveTension().tension;
   int lowest = 0;
   for (int i = 1; i < cell.numNodes(); ++i) {

@@ -196,14 +196,14 @@ std::vector<double> cellValues(const CellSample& s)
 const std::vector<std::string>& stabilityMetricNames()
 {
   static const std::vector<std::string> names{"min_angle_deg", "max_edge_ratio", "min_tension",
-                                              "wall_gap_per_h"};
+                                              "wall_gap_per_h", "max_distortion"};
   return names;
 }
 
 std::vector<double> stabilityValues(const CellSample& s)
 {
   return {s.stability.minAngleDegrees, s.stability.maxEdgeRatio, s.stability.mostCompressiveTension,
-          s.stability.wallGapPerElementSize};
+          s.stability.wallGapPerElementSize, s.stability.maxDistortion};
 }
 
 // --- the run --------------------------------------------------------------------------
@@ -663,6 +663,7 @@ io::JsonValue sampleJson(const CellSample& s, bool wall)
   v["shape change rate"] = s.shapeChangeRate;
   v["minimum angle (degrees)"] = s.stability.minAngleDegrees;
   v["maximum edge ratio"] = s.stability.maxEdgeRatio;
+  v["maximum element distortion"] = s.stability.maxDistortion;
   v["most compressive tension"] = s.stability.mostCompressiveTension;
   if (wall) { // measured from the plane y = 0, meaningless without the wall
     v["wall gap per element size"] = s.stability.wallGapPerElementSize;

@@ -56,6 +56,10 @@ TEST(CellStability, MeshQualityIsTheMeshPackages)
   // values docs/stability.md quotes; 0.01 covers only the printed rounding).
   EXPECT_NEAR(s.minAngleDegrees, 55.57, 0.01);
   EXPECT_NEAR(s.maxEdgeRatio, 1.131, 0.001);
+  // Midside nodes projected onto the sphere sit exactly halfway along their edges:
+  // distortion 0 up to round-off of the parameter ratios of eq 3.17.
+  EXPECT_EQ(s.maxDistortion, q.maxDistortion);
+  EXPECT_LT(s.maxDistortion, 1e-12);
 }
 
 TEST(CellStability, TensionSignSaysStretchedOrCompressed)

@@ -112,10 +112,10 @@ TEST_F(TwoCellsTest, MetricsHaveAColumnPerCellAndThePairColumns)
   for (const char* column : {"time", "D12_0", "D12_1", "x_c_0", "x_c_1", "u_slip_1", "shape_change_rate_1",
                              "gmres_iterations", "dx_0_1", "dy_0_1", "dz_0_1", "distance_0_1", "du_0_1",
                              "dv_0_1", "dw_0_1", "dslip_0_1", "gap_0_1", "min_angle_deg_0",
-                             "min_angle_deg_1", "max_edge_ratio_1", "min_tension_0", "wall_gap_per_h_1"}) {
+                             "min_angle_deg_1", "max_edge_ratio_1", "min_tension_0", "wall_gap_per_h_1", "max_distortion_1"}) {
     EXPECT_EQ(std::count(t.columns.begin(), t.columns.end(), column), 1) << column;
   }
-  EXPECT_EQ(t.columns.size(), 3u + 2u * 26u + 1u + 9u + 2u * 4u + 1u);
+  EXPECT_EQ(t.columns.size(), 3u + 2u * 26u + 1u + 9u + 2u * 5u + 1u);
   EXPECT_EQ(t.columns.back(), "gap_per_h_0_1");   // the stability diagnostics come last
   // Separation and gap at t = 0: centres 2.5 apart; the level-1 icosphere has nodes on the
   // z axis, so the gap of the discrete surfaces is exactly the spheres' 0.5.

@@ -26,6 +26,10 @@ struct CellStability {
   /// a wall it is still measured from y = 0 (the plane where the shear flow is at rest)
   /// and says nothing about contact.
   double wallGapPerElementSize = 0.0;
+  /// The largest element distortion: how far a midside node has slid along its edge from
+  /// the middle, max |alpha - 1/2| (eq 3.17; 0 on the icosphere, 1/2 when an edge
+  /// collapses onto its midside node). Tank-treading carries midside nodes along the edges.
+  double maxDistortion = 0.0;
 };
 
 /// The diagnostics of `cell` (at its current positions) with `membrane` evaluated there.
