@@ -18,7 +18,7 @@ EXPECTED=(
   cell3d_fig5.3_reduced_volume_vs_height.png cell3d_fig5.4_reduced_volume_vs_C_and_Ca.png
   cell3d_fig5.7_footprint_vs_height.png cell3d_fig5.8_footprint_vs_C_and_Ca.png
   cell3d_fig5.10_slip_velocity_vs_height.png cell3d_fig5.11_slip_velocity_vs_C_and_Ca.png
-  cell3d_fig5.13_migration_velocity_vs_height.png
+  cell3d_fig5.13_migration_velocity_vs_height.png cell3d_fig5.14_migration_velocity_vs_C_and_Ca.png
   cell3d_fig5.15_membrane_stress_increase_vs_height.png cell3d_fig5.16_membrane_stress_increase_vs_C_and_Ca.png
   cell3d_fig5.19_wall_area_downstream_vs_height.png cell3d_fig5.20_wall_area_downstream_vs_C_and_Ca.png
   cell3d_fig5.21_wall_area_upstream_vs_height.png cell3d_fig5.22_wall_area_upstream_vs_C_and_Ca.png

@@ -16,9 +16,8 @@ Against C and Ca (centroid held at a fixed height, prestress 5%; the steady valu
 output if the run stopped before steady state): a) against C, one line per Ca; b) against
 Ca, one line per C.
   fig5.4 reduced volume, fig5.8 footprint, fig5.11 slip velocity (rigid sphere at the same
-  height dotted), fig5.16 stress increase, fig5.20 / fig5.22 wall areas. (Not fig5.14: a
-  held centroid has no migration velocity, and the rise rate the constraint removes is not
-  among cell3d's outputs.)
+  height dotted), fig5.14 migration velocity (u_lift: the rise rate the fixed-height
+  constraint removes), fig5.16 stress increase, fig5.20 / fig5.22 wall areas.
 
 Usage: cell3d_trends.py --out FIGDIR [--transient T] RUNDIR_OR_PARENT...
 """
@@ -35,9 +34,10 @@ QUANTITIES = [
     ("reduced_volume", "reduced volume nu", 3, 4, "reduced_volume", False),
     ("footprint_xz", "A_xz / pi a^2", 7, 8, "footprint", True),
     ("u_slip", "U_slip / k a", 10, 11, "slip_velocity", False),
-    # Fig. 5.14 (migration against C and Ca at a fixed height) is not drawn: holding the
-    # centroid removes the rise rate, and cell3d does not output the rate it removed.
     ("u_migr", "U_migr / k a", 13, None, "migration_velocity", False),
+    # Fig. 5.14: at a fixed height the migration velocity is the rise rate the constraint
+    # removes (u_lift); released cells are drawn by Fig. 5.13 instead.
+    ("u_lift", "U_migr / k a (removed by the fixed height)", None, 14, "migration_velocity", False),
     ("mean_shear_stress_increase", "increase of mean |sigma_SS| a / G", 15, 16, "membrane_stress_increase", False),
     ("wall_area_downstream", "wall area downstream / pi a^2", 19, 20, "wall_area_downstream", True),
     ("wall_area_upstream", "wall area upstream / pi a^2", 21, 22, "wall_area_upstream", True),
@@ -131,7 +131,8 @@ def main(argv=None):
     plt = co.use_agg()
     written = []
     for column, label, vs_height, vs_parameters, stem, per_area in QUANTITIES:
-        written.append(against_height(runs, column, label, vs_height, stem, per_area, args.transient, args.out, plt))
+        if vs_height is not None:
+            written.append(against_height(runs, column, label, vs_height, stem, per_area, args.transient, args.out, plt))
         if vs_parameters is not None:
             written.append(against_parameters(runs, column, label, vs_parameters, stem, per_area, args.out, plt))
     print(f"{sum(w is not None for w in written)} of {len(written)} figures from {len(runs)} runs")

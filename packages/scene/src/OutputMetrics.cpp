@@ -52,6 +52,8 @@ std::vector<CellSample> OutputMetrics::record(double t, const Scene& scene, cons
     s.shape = measureShape(cell);
     s.stress = membraneStress(cell, fields.elementLoads.data() + 3 * static_cast<std::size_t>(scene.elementOffset(c)));
     s.instantVelocity = centroidVelocity(cell, velocities);
+    s.unconstrainedVelocity = centroidVelocity(
+      cell, fields.solverVelocities.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(c)));
     s.rotation = rigidMotionFit(cell, velocities, s.shape.centroid).rotation;
     s.shapeChangeRate = shapeChangeRate(velocities, scene.membrane(c).nodeNormals(), s.instantVelocity);
     s.gmresIterations = fields.gmresIterations;

@@ -169,7 +169,7 @@ const std::vector<std::string>& cellMetricNames()
     "D12", "D13", "D23", "x_c", "y_c", "z_c", "u_slip", "u_migr", "volume", "area", "reduced_volume",
     "footprint_xz", "mean_shear_stress", "inclination_deg", "w_c", "u_slip_instant", "u_migr_instant",
     "omega_x", "omega_y", "omega_z", "volume_change", "area_change", "max_shear_stress",
-    "mean_shear_stress_increase", "max_shear_stress_increase", "shape_change_rate"};
+    "mean_shear_stress_increase", "max_shear_stress_increase", "shape_change_rate", "u_lift"};
   return names;
 }
 
@@ -187,7 +187,8 @@ std::vector<double> cellValues(const CellSample& s)
           s.shape.centroid[1] - s.instantVelocity[0], s.instantVelocity[1],
           s.rotation[0], s.rotation[1], s.rotation[2],
           s.volumeChange, s.areaChange, s.stress.maximum,
-          s.meanStressIncrease, s.maximumStressIncrease, s.shapeChangeRate};
+          s.meanStressIncrease, s.maximumStressIncrease, s.shapeChangeRate,
+          s.unconstrainedVelocity[1]};
 }
 
 // The stability diagnostics of one cell (CellStability.hpp), in the order of
@@ -649,6 +650,7 @@ io::JsonValue sampleJson(const CellSample& s, bool wall)
   v["u_migr"] = s.migrationVelocity();
   v["u_slip (instantaneous)"] = s.shape.centroid[1] - s.instantVelocity[0];
   v["u_migr (instantaneous)"] = s.instantVelocity[1];
+  v["u_lift (before the fixed-height constraint)"] = s.unconstrainedVelocity[1];
   v["rotation rate"] = io::JsonValue::array({s.rotation[0], s.rotation[1], s.rotation[2]});
   v["volume"] = s.shape.volume;
   v["area"] = s.shape.area;

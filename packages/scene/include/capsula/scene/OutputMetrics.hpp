@@ -19,6 +19,10 @@ struct CellSample {
   MembraneStress stress;
   mesh::Vec3 splineVelocity = mesh::Vec3::Zero();   ///< dx_c/dt from the cubic spline in time
   mesh::Vec3 instantVelocity = mesh::Vec3::Zero();  ///< dx_c/dt from the surface velocity
+  /// dx_c/dt from the boundary-integral velocity before any constraint: for a cell held at
+  /// a fixed height, its y-component is the migration velocity the constraint removes
+  /// (thesis Fig 5.14); for a free cell it equals instantVelocity.
+  mesh::Vec3 unconstrainedVelocity = mesh::Vec3::Zero();
   mesh::Vec3 rotation = mesh::Vec3::Zero();         ///< rigid-body fit Omega
   double shapeChangeRate = 0.0;  ///< RMS over nodes of (u_i - dx_c/dt) . n_i
   double volumeChange = 0.0;     ///< V / V(0) - 1
