@@ -830,6 +830,19 @@ SceneRunResult Run::execute()
   }
   log() << "Done: " << status << " at t = " << state_.time << " after " << state_.statistics.acceptedSteps
         << " steps (" << state_.statistics.rejectedSteps << " rejected); outputs in " << directory_ << "\n";
+  // The key results of the last output, and how to look at the files.
+  for (std::size_t c = 0; c < lastSamples_.size(); ++c) {
+    const CellSample& sample = lastSamples_[c];
+    log() << "  " << description_.cells[c].path << ": D12 " << sample.shape.deformation.D12 << ", centroid ("
+          << sample.shape.centroid[0] << ", " << sample.shape.centroid[1] << ", " << sample.shape.centroid[2]
+          << "), u_slip " << sample.slipVelocity() << ", u_migr " << sample.migrationVelocity()
+          << ", volume change " << sample.volumeChange << ", mean shear stress " << sample.stress.mean << "\n";
+  }
+  log() << "  metrics.csv (one row per output), summary.json (final and steady values)";
+  if (description_.output.snapshots) {
+    log() << "; ParaView: open " << directory_ << "/" << kSnapshotBase << ".xdmf";
+  }
+  log() << "\n";
   SceneRunResult result;
   result.status = status;
   result.time = state_.time;
