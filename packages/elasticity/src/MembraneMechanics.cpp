@@ -255,8 +255,8 @@ void MembraneMechanics::virtualWorkLoads(const double* positions)
   // The load density: int phi_k Delta f dS = F_k, i.e. M f = F.
   mass_->assemble(positions);
   mass_->solve(nodalForce_.front().data(), nodalLoad_.front().data());
-  // Element totals and moments of the continuous load, for the outputs and for a single
-  // layer that takes element-averaged loads.
+  // Element totals and moments of the continuous load: elementLoads() for the outputs
+  // (membrane stress metrics, snapshots) and netForce()/netTorque() for the checks.
   for (int e = 0; e < mesh.numElements(); ++e) {
     const ElementNodes x = mesh.elementNodes(e, positions);
     const ShapeParameters p = mesh::shapeParameters(x);
