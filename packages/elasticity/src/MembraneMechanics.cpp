@@ -279,6 +279,21 @@ void MembraneMechanics::virtualWorkLoads(const double* positions)
   }
 }
 
+void MembraneMechanics::writeElementNodeLoads(double* out) const
+{
+  const mesh::SurfaceMesh& mesh = *mesh_;
+  const bool continuous = discretisation_.forceMethod == MembraneForceMethod::VirtualWork;
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    double* element = out + 18 * static_cast<std::size_t>(e);
+    for (int a = 0; a < 6; ++a) {
+      const Vec3& f = continuous ? nodalLoad_[static_cast<std::size_t>(mesh.element(e)[a])] : load_[e];
+      for (int d = 0; d < 3; ++d) {
+        element[3 * a + d] = f[d];
+      }
+    }
+  }
+}
+
 MostCompressiveTension MembraneMechanics::mostCompressiveTension() const
 {
   MostCompressiveTension most{0, principal_.empty() ? 0.0 : principal_[0].minor};

@@ -180,20 +180,14 @@ void Scene::computeLoads(double t)
         "At t = ", t, ", the membrane of '", description_.cells[static_cast<std::size_t>(c)].path,
         "' failed: ", e.what()));
     }
-    // Delta f at the six nodes of each element (operators/LoadDensity.hpp).
-    const mesh::SurfaceMesh& surface = cells_[static_cast<std::size_t>(c)];
-    const bool continuous = membrane.discretisation().forceMethod == elasticity::MembraneForceMethod::VirtualWork;
+    // Delta f at the six nodes of each element (operators/LoadDensity.hpp), and its
+    // element averages for the outputs.
     const std::size_t first = static_cast<std::size_t>(elementOffset(c));
-    for (int e = 0; e < surface.numElements(); ++e) {
-      const std::size_t m = first + static_cast<std::size_t>(e);
-      for (int a = 0; a < 6; ++a) {
-        const mesh::Vec3& f = continuous ? membrane.nodalLoads()[surface.element(e)[a]] : membrane.elementLoads()[e];
-        for (int d = 0; d < 3; ++d) {
-          loadDensity_[18 * m + 3 * a + d] = f[d];
-        }
-      }
+    membrane.writeElementNodeLoads(loadDensity_.data() + 18 * first);
+    const auto& averages = membrane.elementLoads();
+    for (std::size_t e = 0; e < averages.size(); ++e) {
       for (int d = 0; d < 3; ++d) {
-        loads_[3 * m + d] = membrane.elementLoads()[e][d];
+        loads_[3 * (first + e) + static_cast<std::size_t>(d)] = averages[e][d];
       }
     }
   }

@@ -171,3 +171,27 @@ TEST(MembraneVirtualWork, AgreesWithTheContourIntegralOnASmoothDeformation)
   EXPECT_GT(observedOrder(levels, differences), 0.9);
   EXPECT_LT(differences.back(), 0.05);
 }
+
+TEST(MembraneVirtualWork, ElementNodeLayoutIsWhatTheSingleLayerIntegrates)
+{
+  // 18 numbers per element: the continuous load's nodal values (virtual work), or the
+  // element's constant load at each of its six nodes (contour integral). Copies: exact.
+  const SurfaceMesh mesh = capsula::mesh::makeSphere(1, 1.0);
+  const std::vector<double> x = mapNodes(mesh.positions(), smoothDeformation);
+  const auto law = std::make_shared<SkalakLaw>(G, C);
+  MembraneMechanics work(mesh, mesh.positions(), law, virtualWork());
+  MembraneMechanics contour(mesh, mesh.positions(), law);
+  work.evaluate(x.data());
+  contour.evaluate(x.data());
+  std::vector<double> a(18 * static_cast<std::size_t>(mesh.numElements())), b(a.size());
+  work.writeElementNodeLoads(a.data());
+  contour.writeElementNodeLoads(b.data());
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    for (int k = 0; k < 6; ++k) {
+      for (int d = 0; d < 3; ++d) {
+        EXPECT_EQ(a[18 * e + 3 * k + d], work.nodalLoads()[mesh.element(e)[k]][d]);
+        EXPECT_EQ(b[18 * e + 3 * k + d], contour.elementLoads()[e][d]);
+      }
+    }
+  }
+}

@@ -113,6 +113,10 @@ public:
   const std::vector<Vec3>& nodalLoads() const { return nodalLoad_; }
   /// VirtualWork only: F_k = dE/dx_k, the nodal forces of virtual work (sum_k F_k = 0).
   const std::vector<Vec3>& nodalForces() const { return nodalForce_; }
+  /// Writes Delta f at the six nodes of every element, 18 numbers per element (the layout
+  /// the single layer integrates, operators::LoadDensity): the nodal values of the
+  /// continuous load (VirtualWork) or the element's constant load six times (ContourIntegral).
+  void writeElementNodeLoads(double* out) const;
 
   /// sum_m A_m <Delta f>_m: zero to round-off (shared edges cancel exactly).
   Vec3 netForce() const;
