@@ -11,6 +11,7 @@
 #include <capsula/mesh/Shapes.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultSerialComm.hpp>
 #include <Tpetra_Core.hpp>
 
@@ -103,6 +104,54 @@ TEST(OperatorRanks, GmresVelocitiesMatchOneRank)
 {
   // Different rounding in the distributed dot products only; GMRES solved to 1e-12.
   compareRanks(5.0, 0.5, 1e-12);
+}
+
+} // namespace
+
+namespace {
+
+// The warm start's history (WarmStartHistory) is replicated: every rank forms the same
+// initial guess from the same global vectors. Two moves of the cells with the history on
+// 2 ranks give what they give on 1, and every rank holds the same history.
+TEST(OperatorRanks, WarmStartedVelocitiesMatchOneRank)
+{
+  const auto comm = Tpetra::getDefaultComm();
+  ASSERT_EQ(comm->getSize(), 2) << "this test is registered to run on 2 ranks";
+  const auto serial = Teuchos::rcp(new Teuchos::SerialComm<int>);
+  const KernelRegistry registry = builtInKernels();
+  SolverParameters solverParameters;
+  solverParameters.tolerance = 1e-12;
+  auto distributed = registry.create("Wall", comm, twoCells(5.0, 0.5), {}, solverParameters);
+  auto reference = registry.create("Wall", serial, twoCells(5.0, 0.5), {}, solverParameters);
+  const auto loads = loadsOf(reference->surfaces());
+  FlowConditions flow;
+  flow.capillaryNumber = 0.5;
+  WarmStartHistory history1, history2;
+  std::vector<double> x = reference->surfaces().positions();
+  double worst = 0.0;
+  int warmIterations = 0;
+  for (int step = 0; step < 3; ++step) {
+    const auto u2 = distributed->nodeVelocities(LoadDensity::constantOverElements(loads), flow, history2);
+    const auto u1 = reference->nodeVelocities(LoadDensity::constantOverElements(loads), flow, history1);
+    worst = std::max(worst, relativeDifference(u1.velocities, u2.velocities));
+    warmIterations = u2.iterations;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      x[k] += 1e-2 * u1.velocities[k];   // the same new positions on both
+    }
+    distributed->setPositions(x.data());
+    reference->setPositions(x.data());
+  }
+  // The history of rank 0 is the history of every rank (bit for bit: the same gathered numbers).
+  std::vector<double> mine = history2.solutions(), root = mine;
+  Teuchos::broadcast(*comm, 0, static_cast<int>(root.size()), root.data());
+  if (comm->getRank() == 0) {
+    std::printf("warm start: 1 vs 2 ranks, node velocities %.2e relative; last solve %d iterations\n", worst,
+                warmIterations);
+  }
+  EXPECT_TRUE(capsula::testing::allRanks(*comm, mine == root));
+  EXPECT_TRUE(capsula::testing::allRanks(*comm, history2.size() == 3));
+  // As GmresVelocitiesMatchOneRank: rounding of the distributed dot products, GMRES to 1e-12.
+  EXPECT_TRUE(capsula::testing::allRanks(*comm, worst < 1e-12)) << worst;
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "capsula/operators/SecondKindOperator.hpp"
 
 #include <capsula/core/Error.hpp>
+#include <capsula/core/Timers.hpp>
 
 #include <stdexcept>
 
@@ -14,7 +15,8 @@ SecondKindOperator::SecondKindOperator(Teuchos::RCP<const Map> map, DoubleLayerR
     gather_(Teuchos::rcp(new Tpetra::Import<>(map_, replicatedMap_))),
     doubleLayer_(std::move(doubleLayer)),
     densityScale_(std::move(densityScale)),
-    rowScale_(std::move(rowScale))
+    rowScale_(std::move(rowScale)),
+    timer_(core::timer("Double-layer application"))
 {
   core::require(3 * densityScale_.size() == map_->getGlobalNumElements(),
                 "SecondKindOperator: one density factor per node expected.");
@@ -38,7 +40,10 @@ void SecondKindOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ET
     for (std::size_t k = 0; k < density_.size(); ++k) {
       density_[k] = densityScale_[k / 3] * u[k];
     }
-    doubleLayer_(density_.data(), rows_.data());
+    {
+      Teuchos::TimeMonitor guard(*timer_);
+      doubleLayer_(density_.data(), rows_.data());
+    }
     ++applications_;
     const auto x = X.getData(v);
     auto y = Y.getDataNonConst(v);

@@ -6,10 +6,14 @@
 #include <capsula/core/Timers.hpp>
 #include <capsula/elasticity/MembraneLawFactory.hpp>
 #include <capsula/elasticity/Prestress.hpp>
+#include <capsula/mesh/Adaption.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
+#include <capsula/mesh/MeshQuality.hpp>
+#include <capsula/mesh/NodeRedistribution.hpp>
 #include <capsula/operators/CellSurfaces.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -41,10 +45,33 @@ std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMes
 
 } // namespace
 
+namespace {
+
+// The cells' surfaces as the deck describes them (the state at t = 0).
+std::vector<mesh::SurfaceMesh> initialSurfaces(const SceneDescription& description)
+{
+  std::vector<mesh::SurfaceMesh> cells;
+  cells.reserve(description.cells.size());
+  for (const auto& cell : description.cells) {
+    cells.push_back(mesh::buildCellSurface(cell.surface, cell.path));
+  }
+  return cells;
+}
+
+} // namespace
+
 Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& deck,
              const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const operators::KernelRegistry& kernels)
+    : Scene(description, deck, comm, kernels, initialSurfaces(description), {})
+{
+}
+
+Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& deck,
+             const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const operators::KernelRegistry& kernels,
+             std::vector<mesh::SurfaceMesh> cells, std::vector<std::vector<double>> references)
     : description_(description),
       comm_(comm),
+      cells_(std::move(cells)),
       membraneTimer_(core::timer("Membrane tensions and loads")),
       velocityTimer_(core::timer("Boundary-integral velocity")),
       constraintTimer_(core::timer("Fixed-height constraint"))
@@ -57,20 +84,21 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   core::require<core::InputError>(description_.viscosityRatio > 0.0 && std::isfinite(description_.viscosityRatio),
                                   "'Flow/Viscosity ratio' = ", description_.viscosityRatio,
                                   " must be a finite number > 0.");
+  core::require(cells_.size() == static_cast<std::size_t>(n), "Scene: ", cells_.size(), " surfaces for ", n,
+                " cells");
+  core::require(references.empty() || references.size() == cells_.size(), "Scene: ", references.size(),
+                " reference shapes for ", n, " cells");
 
-  // Surfaces, where they start, and nothing inside anything else.
-  cells_.reserve(static_cast<std::size_t>(n));
+  // Nothing inside anything else.
   std::vector<const mesh::SurfaceMesh*> placed;
   std::vector<std::string> paths;
-  for (const auto& cell : description_.cells) {
-    cells_.push_back(mesh::buildCellSurface(cell.surface, cell.path));
+  for (int c = 0; c < n; ++c) {
+    const auto& path = description_.cells[static_cast<std::size_t>(c)].path;
     if (description_.wall) {
-      requireAboveWall(cells_.back(), cell.path);
+      requireAboveWall(cells_[static_cast<std::size_t>(c)], path);
     }
-    paths.push_back(cell.path);
-  }
-  for (const auto& surface : cells_) {
-    placed.push_back(&surface);
+    placed.push_back(&cells_[static_cast<std::size_t>(c)]);
+    paths.push_back(path);
   }
   requireNoOverlap(placed, paths, description_.minimumGap);
 
@@ -87,9 +115,9 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     std::shared_ptr<const elasticity::MembraneLaw> law =
       elasticity::makeMembraneLaw(cell.membraneLaw, parameters);
     const mesh::SurfaceMesh& surface = cells_[static_cast<std::size_t>(c)];
-    std::vector<double> reference = cell.prestress > 0.0
-                                      ? elasticity::prestressedReference(surface, cell.prestress)
-                                      : surface.positions();
+    std::vector<double> reference = !references.empty() ? std::move(references[static_cast<std::size_t>(c)])
+                                    : cell.prestress > 0.0 ? elasticity::prestressedReference(surface, cell.prestress)
+                                                           : surface.positions();
     membraneDiscretisation.forceMethod = elasticity::membraneForceMethod(cell.membraneForces);
     membranes_.push_back(std::make_unique<elasticity::MembraneMechanics>(
       surface, std::move(reference), std::move(law), membraneDiscretisation));
@@ -101,6 +129,9 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   initialPositions_ = surfaces.positions();
   const std::string kernel = description_.wall ? "Wall" : "FreeSpace";
   solver_ = kernels.create(kernel, comm_, std::move(surfaces), discretisation, solverParameters);
+  if (solverParameters.warmStart) {
+    warmStart_.emplace();
+  }
   {
     std::ostringstream line;
     line << "kernel: " << kernel << " (" << solver_->kernelName() << "), single layer with N_Q = "
@@ -113,7 +144,8 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
       line << "viscosity ratio 1: explicit velocity (no double layer, no linear solve)";
     } else {
       line << "viscosity ratio " << description_.viscosityRatio
-           << ": double layer and Belos GMRES (tolerance " << solverParameters.tolerance << ")";
+           << ": double layer and Belos GMRES (tolerance " << solverParameters.tolerance
+           << (solverParameters.warmStart ? ", warm start" : "") << ")";
     }
     terms_.push_back(line.str());
   }
@@ -138,6 +170,22 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   }
   if (!fixed.empty()) {
     fixedHeight_.emplace(std::move(fixed), std::move(offsets));
+  }
+  if (description_.meshRegularisation.enabled) {
+    std::ostringstream line;
+    const auto& settings = description_.meshRegularisation;
+    line << "mesh regularisation: tangential node redistribution below " << settings.triggerAngle
+         << " degrees (up to " << settings.options.passes << " passes, relaxation " << settings.options.relaxation
+         << (settings.options.preserveVolume ? ", volume kept" : "") << "), reference positions carried along";
+    terms_.push_back(line.str());
+  }
+  if (description_.meshAdaption.enabled) {
+    std::ostringstream line;
+    const auto& settings = description_.meshAdaption;
+    line << "mesh adaption: refine where kappa^2 A >= " << settings.options.threshold << " (curvature by "
+         << mesh::curvatureMethodName(settings.options.curvature) << "), checked every " << settings.checkInterval
+         << " steps, at most " << settings.maxElements << " elements per cell";
+    terms_.push_back(line.str());
   }
   loads_.assign(3 * static_cast<std::size_t>(numElements()), 0.0);
   loadDensity_.assign(18 * static_cast<std::size_t>(numElements()), 0.0);
@@ -166,6 +214,79 @@ void Scene::setPositions(double t, const std::vector<double>& positions)
     surface.setPositions(x);
   }
   solver_->setPositions(positions.data());
+}
+
+std::vector<MeshRegularisation> Scene::regulariseMeshes(double t, std::vector<double>& positions)
+{
+  std::vector<MeshRegularisation> done;
+  if (!regularisesMeshes()) {
+    return done;
+  }
+  const auto& settings = description_.meshRegularisation;
+  for (int c = 0; c < numCells(); ++c) {
+    mesh::SurfaceMesh& surface = cells_[static_cast<std::size_t>(c)];
+    double* x = positions.data() + 3 * static_cast<std::size_t>(nodeOffset(c));
+    surface.setPositions(x);
+    if (mesh::meshQuality(surface).minAngle >= settings.triggerAngle) {
+      continue;
+    }
+    const auto& membrane = *membranes_[static_cast<std::size_t>(c)];
+    mesh::RedistributionOptions options = settings.options;
+    // Work on the elements near the bound only: every node moved is re-interpolated, which
+    // costs shape (O(h^3) per move); 10 degrees above the trigger gives the passes room.
+    options.improveBelow = std::min(60.0, settings.triggerAngle + 10.0);
+    const mesh::RedistributedNodes moved =
+      mesh::redistributeNodes(surface, surface.positions(), membrane.referencePositions(), options);
+    if (moved.passes == 0) {   // no pass improved the smallest angle: leave the cell as it is
+      continue;
+    }
+    std::copy(moved.positions.begin(), moved.positions.end(), x);
+    surface.setPositions(x);
+    try {
+      membranes_[static_cast<std::size_t>(c)] =
+        std::make_unique<elasticity::MembraneMechanics>(membrane.withReference(moved.reference));
+    } catch (const core::InputError& e) {
+      throw core::NumericalError(core::message("At t = ", t, ", redistributing the nodes of '",
+                                               description_.cells[static_cast<std::size_t>(c)].path,
+                                               "' left a degenerate reference shape: ", e.what()));
+    }
+    done.push_back({c, moved.minAngleBefore, moved.minAngleAfter, moved.referenceMinAngle, moved.passes,
+                    moved.maxDisplacement, moved.volumeOffset});
+  }
+  if (!done.empty()) {
+    solver_->setPositions(positions.data());
+  }
+  return done;
+}
+
+std::optional<AdaptedCells> Scene::adaptedCells(const std::vector<double>& positions) const
+{
+  if (!adaptsMeshes()) {
+    return std::nullopt;
+  }
+  const auto& settings = description_.meshAdaption;
+  AdaptedCells adapted;
+  bool any = false;
+  for (int c = 0; c < numCells(); ++c) {
+    mesh::SurfaceMesh current = cells_[static_cast<std::size_t>(c)];
+    current.setPositions(positions.data() + 3 * static_cast<std::size_t>(nodeOffset(c)));
+    mesh::AdaptedMembraneMesh refined =
+      mesh::adaptMembraneMesh(current, referencePositions(c), settings.options, settings.maxElements);
+    any = any || refined.markedElements > 0;
+    adapted.cells.push_back(std::move(refined.current));
+    adapted.references.push_back(std::move(refined.reference));
+    adapted.markedElements.push_back(refined.markedElements);
+  }
+  if (!any) {
+    return std::nullopt;
+  }
+  return adapted;
+}
+
+void Scene::setReferencePositions(int c, std::vector<double> reference)
+{
+  auto& membrane = membranes_[static_cast<std::size_t>(c)];
+  membrane = std::make_unique<elasticity::MembraneMechanics>(membrane->withReference(std::move(reference)));
 }
 
 void Scene::computeLoads(double t)
@@ -198,8 +319,17 @@ void Scene::velocity(double t, const std::vector<double>& positions, std::vector
   setPositions(t, positions);
   computeLoads(t);
   Teuchos::TimeMonitor guard(*velocityTimer_);
-  operators::VelocitySolution solution = solver_->nodeVelocities(operators::LoadDensity(loadDensity_.data()), flow_);
+  // Warm start: GMRES begins at a combination of the last solutions (O(step) away).
+  const operators::LoadDensity load(loadDensity_.data());
+  operators::VelocitySolution solution =
+    warmStart_ ? solver_->nodeVelocities(load, flow_, *warmStart_) : solver_->nodeVelocities(load, flow_);
   velocities = std::move(solution.velocities);
+}
+
+void Scene::restoreGmresWarmStart(const std::vector<double>& rightHandSides, const std::vector<double>& solutions)
+{
+  const int depth = warmStart_ ? warmStart_->depth() : operators::WarmStartHistory().depth();
+  warmStart_ = operators::WarmStartHistory::fromFlattened(depth, 3 * numNodes(), rightHandSides, solutions);
 }
 
 void Scene::constrain(const std::vector<double>& positions, std::vector<double>& velocities)

@@ -87,6 +87,13 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
                                     ", not in the fluid above the wall y = 0.");
   }
   out.minimumAngle = output.sublist("Stability").get<double>("Minimum angle");
+  scene.meshRegularisation = mesh::readRedistributionParameters(deck.sublist("Mesh regularisation"));
+  scene.meshAdaption = mesh::readAdaptionParameters(deck.sublist("Mesh adaption"));
+  core::require<core::InputError>(
+    !scene.meshRegularisation.enabled || scene.meshRegularisation.triggerAngle > out.minimumAngle,
+    "'Mesh regularisation/Minimum angle' = ", scene.meshRegularisation.triggerAngle,
+    " must be above 'Output/Stability/Minimum angle' = ", out.minimumAngle,
+    ": the run would stop before the nodes are ever redistributed.");
   const auto& wallStress = output.sublist("Wall shear stress");
   WallShearStressOutput& ws = out.wallShearStress;
   ws.enabled = wallStress.get<bool>("Enabled");

@@ -1,7 +1,9 @@
 #include "capsula/scene/SceneParameters.hpp"
 
 #include <capsula/core/ParameterDeclaration.hpp>
+#include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
+#include <capsula/mesh/RedistributionParameters.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/timeint/TimeIntegrationParameters.hpp>
 
@@ -178,8 +180,12 @@ Teuchos::RCP<const Teuchos::ParameterList> validSceneParameters(const Teuchos::P
   }
 
   timeint::declareTimeIntegrationParameters(
-    core::declareSublist(*valid, "Time integration", "Runge-Kutta time stepping (Section 3.10)."));
+    core::declareSublist(*valid, "Time integration", "Runge-Kutta time stepping (Section 3.10)."), /*stabilityLimitDefault=*/true);
   operators::declareOperatorParameters(*valid);
+  mesh::declareRedistributionParameters(core::declareSublist(
+    *valid, "Mesh regularisation", "Tangential redistribution of the nodes of a running cell (docs/stability.md)."));
+  mesh::declareAdaptionParameters(core::declareSublist(
+    *valid, "Mesh adaption", "Curvature-driven refinement of a running cell's mesh (thesis eq 4.3, docs/stability.md)."));
   declareOutputParameters(core::declareSublist(*valid, "Output", "What is written, where and when."));
   return valid;
 }

@@ -227,11 +227,15 @@ private:
   void startOutputs();
   bool observe(const timeint::IntegrationState& state);
   bool cellsTooClose();
+  void regulariseMeshes();
+  void adaptMeshes();
+  std::unique_ptr<Scene> restoredScene() const;
   void writeSummary(const std::string& status, const std::string& note);
   void progress(const timeint::IntegrationState& state, double lastD12);
 
   const Teuchos::ParameterList& deck_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  const operators::KernelRegistry& kernels_;
   SceneRunOptions options_;
   std::ostream* log_;
   Teuchos::oblackholestream quiet_;
@@ -267,6 +271,8 @@ private:
   std::optional<ElevatedStressAreas> lastWallAreas_;
   std::optional<OutsideRangeAreas> lastOutsideIsolated_;
   std::int64_t outputsWritten_ = 0;
+  std::int64_t regularisations_ = 0;   // node redistributions of a cell, over the whole run
+  std::int64_t adaptions_ = 0;         // mesh refinements of a cell, over the whole run
   std::chrono::steady_clock::time_point wallStart_;
   double simulatedStart_ = 0.0;
   double lastD12_ = 0.0;
@@ -276,6 +282,7 @@ Run::Run(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::C
          const SceneRunOptions& options, const operators::KernelRegistry& kernels)
     : deck_(deck),
       comm_(comm),
+      kernels_(kernels),
       options_(options),
       log_(options.log && comm->getRank() == 0 ? options.log : &quiet_),
       description_(describeScene(deck)),
@@ -289,7 +296,14 @@ Run::Run(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::C
   if (options_.restartDirectory) {
     restoreFromCheckpoint();
   }
-  scene_ = std::make_unique<Scene>(description_, deck_, comm_, kernels);
+  scene_ = restarted_ ? restoredScene() : std::make_unique<Scene>(description_, deck_, comm_, kernels);
+  if (restarted_) {   // GMRES's warm start (lambda != 1): the next solve starts where the interrupted run's would
+    const auto rhs = restartPoint_.arrays.find("scene.gmresWarmStart.rhs");
+    const auto solutions = restartPoint_.arrays.find("scene.gmresWarmStart.solutions");
+    if (rhs != restartPoint_.arrays.end() && solutions != restartPoint_.arrays.end()) {
+      scene_->restoreGmresWarmStart(rhs->second, solutions->second);
+    }
+  }
   terms_ = scene_->terms();
   const auto& out = description_.output;
   if (out.wallShearStress.enabled) {
@@ -314,14 +328,14 @@ Run::Run(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::C
   // Steady state is judged on the shape at output times (see SceneRun.hpp), not on the
   // raw node positions, which keep moving as the membrane tank-treads.
   settings.steadyCriterion = timeint::SteadyStateCriterion::Off;
-  Scene* scene = scene_.get();
+  // The scene is looked up at every call: a mesh adaption replaces it during the run.
   integrator_ = std::make_unique<timeint::TimeIntegrator>(
-    settings, [scene](double t, const std::vector<double>& y, std::vector<double>& dydt) {
-      scene->velocity(t, y, dydt);
+    settings, [this](double t, const std::vector<double>& y, std::vector<double>& dydt) {
+      scene_->velocity(t, y, dydt);
     });
   if (scene_->hasConstraints()) {
     integrator_->setStageConstraint(
-      [scene](double, const std::vector<double>& y, std::vector<double>& dydt) { scene->constrain(y, dydt); });
+      [this](double, const std::vector<double>& y, std::vector<double>& dydt) { scene_->constrain(y, dydt); });
   }
 }
 
@@ -356,7 +370,54 @@ void Run::restoreFromCheckpoint()
   metrics_.load(restartPoint_, path);
   const auto outputs = restartPoint_.integers.find("scene.outputs");
   outputsWritten_ = outputs == restartPoint_.integers.end() ? 0 : outputs->second;
+  const auto regularisations = restartPoint_.integers.find("scene.regularisations");
+  regularisations_ = regularisations == restartPoint_.integers.end() ? 0 : regularisations->second;
+  const auto adaptions = restartPoint_.integers.find("scene.adaptions");
+  adaptions_ = adaptions == restartPoint_.integers.end() ? 0 : adaptions->second;
   restarted_ = true;
+}
+
+// The scene a checkpoint continues: the deck's, or, where redistributions or adaptions
+// changed the cells, their meshes (connectivity from the checkpoint, positions from its
+// state) and reference shapes.
+std::unique_ptr<Scene> Run::restoredScene() const
+{
+  const auto& arrays = restartPoint_.arrays;
+  const int n = description_.numCells();
+  if (arrays.count("scene.connectivity.0") == 0) {
+    auto scene = std::make_unique<Scene>(description_, deck_, comm_, kernels_);
+    for (int c = 0; c < n; ++c) {
+      const auto reference = arrays.find("scene.reference." + std::to_string(c));
+      if (reference != arrays.end()) {
+        scene->setReferencePositions(c, reference->second);
+      }
+    }
+    return scene;
+  }
+  std::vector<mesh::SurfaceMesh> cells;
+  std::vector<std::vector<double>> references;
+  std::size_t offset = 0;
+  for (int c = 0; c < n; ++c) {
+    const std::string suffix = std::to_string(c);
+    const auto connectivity = arrays.find("scene.connectivity." + suffix);
+    const auto reference = arrays.find("scene.reference." + suffix);
+    core::require<core::InputError>(connectivity != arrays.end() && reference != arrays.end(),
+                                    "The checkpoint of ", *options_.restartDirectory,
+                                    " lacks the adapted mesh of cell ", c, ": it is incomplete.");
+    std::vector<mesh::ElementConnectivity> elements(connectivity->second.size() / 6);
+    for (std::size_t k = 0; k < connectivity->second.size(); ++k) {
+      elements[k / 6][k % 6] = static_cast<int>(connectivity->second[k]);
+    }
+    const std::size_t values = reference->second.size();
+    core::require<core::InputError>(offset + values <= state_.y.size(), "The checkpoint of ",
+                                    *options_.restartDirectory, " is inconsistent: its state is too short for its meshes.");
+    std::vector<double> positions(state_.y.begin() + static_cast<std::ptrdiff_t>(offset),
+                                  state_.y.begin() + static_cast<std::ptrdiff_t>(offset + values));
+    offset += values;
+    cells.emplace_back(std::move(positions), std::move(elements));
+    references.push_back(reference->second);
+  }
+  return std::make_unique<Scene>(description_, deck_, comm_, kernels_, std::move(cells), std::move(references));
 }
 
 void Run::prepareOutputDirectory()
@@ -595,6 +656,24 @@ bool Run::observe(const timeint::IntegrationState& state)
       }
       metrics_.save(checkpoint);
       checkpoint.integers["scene.outputs"] = outputsWritten_;
+      if (const auto* warm = scene_->gmresWarmStart(); warm && !warm->empty()) {   // the next solve's start
+        checkpoint.arrays["scene.gmresWarmStart.rhs"] = warm->rightHandSides();
+        checkpoint.arrays["scene.gmresWarmStart.solutions"] = warm->solutions();
+      }
+      if (scene_->regularisesMeshes() || scene_->adaptsMeshes()) {   // the material points moved with the nodes
+        checkpoint.integers["scene.regularisations"] = regularisations_;
+        checkpoint.integers["scene.adaptions"] = adaptions_;
+        for (int c = 0; c < scene_->numCells(); ++c) {
+          checkpoint.arrays["scene.reference." + std::to_string(c)] = scene_->referencePositions(c);
+          if (scene_->adaptsMeshes()) {   // and the topology may have changed
+            std::vector<double> connectivity;
+            for (const auto& element : scene_->cell(c).elements()) {
+              connectivity.insert(connectivity.end(), element.begin(), element.end());
+            }
+            checkpoint.arrays["scene.connectivity." + std::to_string(c)] = std::move(connectivity);
+          }
+        }
+      }
       io::writeCheckpoint(output_->file(kCheckpointFile), checkpoint);
     }
     if (degraded.empty()) {
@@ -635,6 +714,72 @@ bool Run::cellsTooClose()
   onRoot(*comm_, [&] { writeSummary("too close", stopReason_); });
   log() << stopReason_ << "\n";
   return true;
+}
+
+// After every step: redistributes the nodes of the cells whose mesh has degraded below
+// 'Mesh regularisation/Minimum angle' (Scene::regulariseMeshes). The state jumps, so a
+// first-same-as-last slope no longer belongs to it.
+void Run::regulariseMeshes()
+{
+  if (!scene_->regularisesMeshes()) {
+    return;
+  }
+  std::vector<MeshRegularisation> done;
+  {
+    Teuchos::TimeMonitor guard(*core::timer("Mesh regularisation"));
+    done = scene_->regulariseMeshes(state_.time, state_.y);
+  }
+  if (done.empty()) {
+    return;
+  }
+  timeint::stateChangedOutside(state_);   // new slopes, and the stability limit again
+  for (const auto& event : done) {
+    ++regularisations_;
+    log() << std::setprecision(5) << "t = " << state_.time << ": redistributed the nodes of '"
+          << description_.cells[static_cast<std::size_t>(event.cell)].path << "' (smallest angle "
+          << event.minAngleBefore << " -> " << event.minAngleAfter << " degrees, reference "
+          << event.referenceMinAngle << ", " << event.passes
+          << " passes, largest move " << event.maxDisplacement << ", volume offset " << event.volumeOffset
+          << ")\n";
+  }
+}
+
+// Every 'Mesh adaption/Check interval' accepted steps: refines the cells whose shape curves
+// more than their elements resolve (Scene::adaptedCells) and goes on with a scene built on
+// the refined meshes (new operators and maps: the number of nodes changed).
+void Run::adaptMeshes()
+{
+  if (!scene_->adaptsMeshes() ||
+      state_.statistics.acceptedSteps % description_.meshAdaption.checkInterval != 0) {
+    return;
+  }
+  std::optional<AdaptedCells> adapted;
+  {
+    Teuchos::TimeMonitor guard(*core::timer("Mesh adaption"));
+    adapted = scene_->adaptedCells(state_.y);
+    if (!adapted) {
+      return;
+    }
+    std::vector<int> before;
+    for (int c = 0; c < scene_->numCells(); ++c) {
+      before.push_back(scene_->cell(c).numElements());
+    }
+    std::vector<int> marked = adapted->markedElements;
+    scene_ = std::make_unique<Scene>(description_, deck_, comm_, kernels_, std::move(adapted->cells),
+                                     std::move(adapted->references));
+    state_.y = scene_->initialPositions();
+    timeint::stateChangedOutside(state_);
+    for (int c = 0; c < scene_->numCells(); ++c) {
+      if (marked[static_cast<std::size_t>(c)] == 0) {
+        continue;
+      }
+      ++adaptions_;
+      log() << "t = " << state_.time << ": refined the mesh of '" << description_.cells[static_cast<std::size_t>(c)].path
+            << "' (" << marked[static_cast<std::size_t>(c)] << " elements over the curvature threshold; "
+            << before[static_cast<std::size_t>(c)] << " -> " << scene_->cell(c).numElements() << " elements, "
+            << scene_->cell(c).numNodes() << " nodes)\n";
+    }
+  }
 }
 
 io::JsonValue sampleJson(const CellSample& s, bool wall)
@@ -711,6 +856,15 @@ void Run::writeSummary(const std::string& status, const std::string& note)
   summary["steps"]["smallest"] = stats.smallestStep;
   summary["steps"]["largest"] = stats.largestStep;
   summary["max volume drift"] = maxVolumeDrift_;
+  if (scene_->regularisesMeshes()) {
+    summary["mesh regularisations"] = static_cast<long long>(regularisations_);
+  }
+  if (scene_->adaptsMeshes()) {
+    summary["mesh adaptions"] = static_cast<long long>(adaptions_);
+    for (int c = 0; c < scene_->numCells(); ++c) {
+      summary["elements per cell"].append(scene_->cell(c).numElements());
+    }
+  }
   if (std::isfinite(smallestAngle_)) {   // extremes over the outputs of this process
     summary["stability"]["smallest angle (degrees)"] = smallestAngle_;
     summary["stability"]["largest edge ratio"] = largestEdgeRatio_;
@@ -754,7 +908,7 @@ void Run::writeSummary(const std::string& status, const std::string& note)
   summary["timings"]["wall seconds (this process)"] = wall;
   for (const char* name : {"Membrane tensions and loads", "Boundary-integral velocity", "Single layer",
                            "Viscosity-ratio GMRES solve", "Fixed-height constraint", "Flow velocity at points",
-                           "Cell gap", "Outputs", "Output files"}) {
+                           "Cell gap", "Mesh regularisation", "Mesh adaption", "Outputs", "Output files"}) {
     summary["timings"][name] = core::timer(name)->totalElapsedTime();
   }
   summary["deck"] = core::deckToXml(deck_, false);
@@ -796,6 +950,8 @@ SceneRunResult Run::execute()
       const double tOut = integrator_->outputTime(state_.outputOrigin, state_.nextOutput, schedule);
       while (state_.time < tOut) {
         integrator_->step(state_, tOut);
+        regulariseMeshes();
+        adaptMeshes();
         tooClose = cellsTooClose();
         if (tooClose) {
           break;

@@ -4,7 +4,10 @@
 
 #include <capsula/contour/ContourMetrics.hpp>
 #include <capsula/core/Error.hpp>
+#include <capsula/core/Timers.hpp>
 #include <capsula/elasticity/HookeanLaw2D.hpp>
+
+#include <optional>
 
 namespace capsula::scene2d {
 
@@ -77,9 +80,25 @@ operators::VelocitySolution2D CapsuleModel2D::velocities(const contour::Contour&
 
 void CapsuleModel2D::rightHandSide(const std::vector<double>& state, std::vector<double>& derivative)
 {
-  const contour::Contour current = contour(state);
-  const elasticity::MembraneState2D load = membrane(current);
-  derivative = velocities(current, load).velocities;
+  // The cost of one evaluation, broken down (the app prints the timers at the end;
+  // the single layer's own parts are timed in operators/LayerPotentials2D.hpp).
+  static const Teuchos::RCP<Teuchos::Time> total = core::timer("2D right-hand side");
+  static const Teuchos::RCP<Teuchos::Time> splines = core::timer("2D right-hand side: contour splines");
+  static const Teuchos::RCP<Teuchos::Time> loads = core::timer("2D right-hand side: membrane load");
+  static const Teuchos::RCP<Teuchos::Time> velocity = core::timer("2D right-hand side: boundary-integral velocity");
+  Teuchos::TimeMonitor totalGuard(*total);
+  std::optional<contour::Contour> current;
+  {
+    Teuchos::TimeMonitor guard(*splines);
+    current.emplace(contour(state));
+  }
+  std::optional<elasticity::MembraneState2D> load;
+  {
+    Teuchos::TimeMonitor guard(*loads);
+    load.emplace(membrane(*current));
+  }
+  Teuchos::TimeMonitor guard(*velocity);
+  derivative = velocities(*current, *load).velocities;
 }
 
 } // namespace capsula::scene2d

@@ -1,5 +1,7 @@
 #include "capsula/scene2d/TetherRun2D.hpp"
 
+#include "capsula/scene2d/StepInFluid2D.hpp"
+
 #include <capsula/contour/ContourMetrics.hpp>
 #include <capsula/core/Deck.hpp>
 #include <capsula/core/Error.hpp>
@@ -149,7 +151,14 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
 
   timeint::TimeIntegrationSettings settings = timeint::timeIntegrationSettings(deck_.sublist("Time integration"));
   const double endTau = settings.endTime; // the tethered (or free) stage's duration in tau
-  timeint::TimeIntegrator integrator(settings, [this](double, const std::vector<double>& y, std::vector<double>& dydt) {
+  // With the wall, a stage state with a node on or below it is a rejected attempt
+  // (StepInFluid2D.hpp), not a failure of the run.
+  const bool wall = model_.flow().wall;
+  timeint::TimeIntegrator integrator(settings, [this, wall](double, const std::vector<double>& y,
+                                                            std::vector<double>& dydt) {
+    if (wall) {
+      requireNodesInFluid(y);
+    }
     model_.rightHandSide(y, dydt);
   });
 
@@ -370,7 +379,8 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
         break;
       }
     } else {
-      const timeint::StepReport report = integrator.step(state, tTarget);
+      const timeint::StepReport report =
+        wall ? stepInFluid(integrator, state, tTarget) : integrator.step(state, tTarget);
       ++progress.steps;
       const bool atOutput = state.time == tOut;
       if (atOutput) {

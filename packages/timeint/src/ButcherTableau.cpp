@@ -1,5 +1,8 @@
 #include "capsula/timeint/ButcherTableau.hpp"
 
+#include <cmath>
+#include <vector>
+
 #include <algorithm>
 #include <utility>
 
@@ -82,6 +85,43 @@ ButcherTableau classicalRungeKutta4()
   t.b = {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6};
   t.order = 4;
   return t;
+}
+
+double stabilityFunction(const ButcherTableau& tableau, double z)
+{
+  // Explicit: the stage values g_i = 1 + z sum_{j<i} a_ij g_j by forward substitution.
+  std::vector<double> g(static_cast<std::size_t>(tableau.stages), 1.0);
+  double r = 1.0;
+  for (int i = 0; i < tableau.stages; ++i) {
+    double sum = 0.0;
+    for (int j = 0; j < i; ++j) {
+      sum += tableau.coefficient(i, j) * g[static_cast<std::size_t>(j)];
+    }
+    g[static_cast<std::size_t>(i)] = 1.0 + z * sum;
+    r += z * tableau.b[static_cast<std::size_t>(i)] * g[static_cast<std::size_t>(i)];
+  }
+  return r;
+}
+
+double realStabilityBoundary(const ButcherTableau& tableau)
+{
+  // Scan the negative real axis for the first |R| > 1, then bisect (R is a polynomial of
+  // degree <= stages, so a 1e-3 scan cannot step over a stable gap of any explicit method
+  // used here).
+  const auto unstable = [&](double x) { return std::abs(stabilityFunction(tableau, -x)) > 1.0 + 1e-12; };
+  double x = 0.0;
+  while (!unstable(x + 1e-3)) {
+    x += 1e-3;
+    if (x > 100.0) {
+      return x;
+    }
+  }
+  double lo = x, hi = x + 1e-3;
+  for (int i = 0; i < 50; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (unstable(mid) ? hi : lo) = mid;
+  }
+  return lo;
 }
 
 } // namespace capsula::timeint

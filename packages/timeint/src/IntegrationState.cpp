@@ -2,6 +2,8 @@
 
 #include "capsula/core/Error.hpp"
 
+#include <limits>
+
 namespace capsula::timeint {
 
 namespace {
@@ -39,6 +41,11 @@ StateRecord toRecord(const IntegrationState& state)
   if (!state.firstStageDerivative.empty()) {
     r.arrays["first stage derivative"] = state.firstStageDerivative;
   }
+  if (!state.stabilityVector.empty()) {
+    r.arrays["stability vector"] = state.stabilityVector;
+    r.reals["stability step"] = state.stabilityStep;
+    r.integers["steps since stability estimate"] = state.stepsSinceStabilityEstimate;
+  }
   return r;
 }
 
@@ -68,7 +75,19 @@ IntegrationState fromRecord(const StateRecord& record, const std::string& source
                                     s.firstStageDerivative.size(), " entries, 'state' has ",
                                     s.y.size(), ".");
   }
+  const auto stability = record.arrays.find("stability vector");
+  if (stability != record.arrays.end()) {
+    s.stabilityVector = stability->second;
+    s.stabilityStep = entry(record.reals, "stability step", source);
+    s.stepsSinceStabilityEstimate = entry(record.integers, "steps since stability estimate", source);
+  }
   return s;
+}
+
+void stateChangedOutside(IntegrationState& state)
+{
+  state.firstStageDerivative.clear();
+  state.stepsSinceStabilityEstimate = std::numeric_limits<std::int64_t>::max();
 }
 
 } // namespace capsula::timeint

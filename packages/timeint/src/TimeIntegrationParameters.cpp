@@ -6,7 +6,7 @@
 
 namespace capsula::timeint {
 
-void declareTimeIntegrationParameters(Teuchos::ParameterList& list)
+void declareTimeIntegrationParameters(Teuchos::ParameterList& list, bool stabilityLimitDefault)
 {
   using namespace capsula::core;
   declareReal(list, "End time", 10.0, "Time at which the run ends (in the deck's time unit).");
@@ -33,6 +33,17 @@ void declareTimeIntegrationParameters(Teuchos::ParameterList& list)
               greaterThan(0.0));
   declareReal(list, "Maximum step", 1.0, "Largest step the controller may take.",
               greaterThan(0.0));
+  declareBool(list, "Stability limit", stabilityLimitDefault,
+              "Adaptive methods: keep every step within the explicit method's stability limit, "
+              "0.8 r / rho, rho the fastest decay rate of the system (estimated by power "
+              "iteration, a few extra right-hand sides every 'Stability check interval' steps) "
+              "and r the method's real stability boundary (3.02 for RKF45). Without it a loose "
+              "'Tolerance' lets the error control accept steps on which an elastic membrane's "
+              "fastest mode grows, and the membrane folds.");
+  declareInt(list, "Stability check interval", 10,
+             "Accepted steps between two estimates of the fastest decay rate (the first is made "
+             "at the first step, and again after anything moves the nodes between steps).",
+             1);
   declareReal(list, "Steady tolerance", 0.0,
               "Stop when the state stops moving: the 'Steady criterion' measure of an accepted "
               "step falls below this (0: never stop early).",
@@ -55,6 +66,8 @@ TimeIntegrationSettings timeIntegrationSettings(const Teuchos::ParameterList& li
   s.initialStep = list.get<double>("Initial step");
   s.minimumStep = list.get<double>("Minimum step");
   s.maximumStep = list.get<double>("Maximum step");
+  s.stabilityLimit = list.get<bool>("Stability limit");
+  s.stabilityInterval = list.get<int>("Stability check interval");
   s.steadyTolerance = list.get<double>("Steady tolerance");
   s.steadyCriterion = s.steadyTolerance > 0.0
                         ? steadyStateCriterionFromString(list.get<std::string>("Steady criterion"))

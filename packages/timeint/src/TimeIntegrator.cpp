@@ -155,6 +155,61 @@ TimeIntegrator::TimeIntegrator(TimeIntegrationSettings settings, RightHandSide r
   }
   core::require(!settings_.adaptive || tableau_.hasErrorEstimate(), "internal: ", tableau_.name,
                 " has no error estimate");
+  stabilityBoundary_ = realStabilityBoundary(tableau_);
+  core::require<core::InputError>(settings_.stabilityInterval >= 1,
+                                  "'Time integration/Stability check interval' = ", settings_.stabilityInterval,
+                                  " must be at least 1");
+}
+
+void TimeIntegrator::estimateStabilityStep(IntegrationState& state)
+{
+  // Power iteration on J v ~ (f(y + eps v) - f(y)) / eps, f(y) = slopes_[0]. The membrane's
+  // J is a product of a symmetric positive mobility and a symmetric stiffness, so its
+  // dominant eigenvalue is real and negative and |J v| converges to rho from below.
+  const std::size_t n = state.y.size();
+  std::vector<double>& v = state.stabilityVector;
+  int iterations = 3;
+  if (v.size() != n) {   // cold start: a fixed vector with every mode in it
+    v.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      v[i] = std::sin(0.7 * static_cast<double>(i) + 0.3);
+    }
+    iterations = 12;
+  }
+  double scale = 1.0;
+  for (const double yi : state.y) {
+    scale = std::max(scale, std::abs(yi));
+  }
+  probe_.resize(n);
+  double rho = 0.0;
+  for (int k = 0; k < iterations; ++k) {
+    double norm = 0.0, largest = 0.0;
+    for (const double vi : v) {
+      norm += vi * vi;
+      largest = std::max(largest, std::abs(vi));
+    }
+    norm = std::sqrt(norm);
+    // Perturb no coordinate by more than 1e-7 of the state's size: small enough for the
+    // linearisation, large enough against round-off in f (1e-16 / 1e-7 ~ 1e-9 relative).
+    const double eps = 1e-7 * scale / (largest / norm);
+    for (std::size_t i = 0; i < n; ++i) {
+      probe_[i] = state.y[i] + eps * v[i] / norm;
+    }
+    evaluate(state.time, probe_, probeSlope_, state, state.proposedStep, 0);
+    double growth = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      v[i] = (probeSlope_[i] - slopes_[0][i]) / eps;
+      growth += v[i] * v[i];
+    }
+    rho = std::sqrt(growth);
+    if (!(rho > 0.0)) {   // f does not depend on y (or not finitely): no limit
+      v.assign(n, 0.0);
+      v[0] = 1.0;
+      break;
+    }
+  }
+  state.stabilityStep = rho > 0.0 ? 0.8 * stabilityBoundary_ / rho : std::numeric_limits<double>::infinity();
+  state.stepsSinceStabilityEstimate = 0;
 }
 
 void TimeIntegrator::setStageConstraint(StageConstraint constraint)
@@ -235,11 +290,19 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
   } else {
     evaluate(state.time, state.y, slopes_[0], state, state.proposedStep, 0);
   }
+  const bool limited = settings_.adaptive && settings_.stabilityLimit;
+  if (limited && (state.stabilityVector.size() != n ||
+                  state.stepsSinceStabilityEstimate >= settings_.stabilityInterval)) {
+    estimateStabilityStep(state);
+  }
 
   StepReport report;
   for (;;) {
-    const double proposed =
+    double proposed =
       settings_.adaptive ? std::min(state.proposedStep, settings_.maximumStep) : state.proposedStep;
+    if (limited) {
+      proposed = std::min(proposed, state.stabilityStep);
+    }
     double h = proposed;
     double tNew = state.time + h;
     if (tStop - state.time <= proposed * (1.0 + stretchFraction)) {
@@ -306,6 +369,9 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
       report.steady = report.steadyMeasure < settings_.steadyTolerance;
     }
     ++stats.acceptedSteps;
+    if (limited) {
+      ++state.stepsSinceStabilityEstimate;
+    }
     stats.smallestStep = std::min(stats.smallestStep, h);
     stats.largestStep = std::max(stats.largestStep, h);
     stats.lastStep = h;

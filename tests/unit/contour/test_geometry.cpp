@@ -70,6 +70,18 @@ TEST(ContourGeometry, CircleConventions)
   }
 }
 
+TEST(ContourGeometry, PositionAtIsThePositionOfPointAt)
+{
+  // The position-only evaluation (the 2D layer potentials' bisection tests) evaluates the
+  // same spline expressions: equal bit for bit, nodes and dyadic parameters included.
+  const Contour circle(capsula::contour::circleNodes(32, 0.8, Eigen::Vector2d(0.1, 1.0), 0.3));
+  for (int k = 0; k < circle.numberOfSegments(); ++k) {
+    for (const double t : {0.0, 0.125, 0.5, 0.7, 1.0}) {
+      EXPECT_EQ(circle.positionAt(k, t), circle.pointAt(k, t).position) << "segment " << k << ", t = " << t;
+    }
+  }
+}
+
 TEST(ContourGeometry, RejectsClockwiseDuplicateAndTooFewNodes)
 {
   using capsula::core::InputError;

@@ -435,3 +435,46 @@ TEST(Adaption, RefinedDeformedShapeKeepsItsAreaAndVolume)
   EXPECT_LT(std::abs(dV), 1e-6);
   EXPECT_LT(std::abs(dA), 1e-6);
 }
+
+// A membrane mesh refined during a run (adaptMembraneMesh): the current shape, a prolate
+// ellipsoid x = A X of the reference unit sphere, decides where (its tips); the new nodes
+// are material points: an affine deformation is carried exactly, x' = A X' to round-off,
+// because the same element maps (parametrised by the reference) place both (a node placed
+// by another rule than the reference map would miss by O(h^2)).
+TEST(Adaption, MembraneMeshNewNodesAreMaterialPoints)
+{
+  const SurfaceMesh sphere = makeIcosphere(2);
+  const std::vector<double> X = sphere.positions();
+  const Vec3 stretch(0.6, 0.6, 2.5);   // volume-preserving-ish, strongly curved tips
+  std::vector<double> x = X;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i] *= stretch[static_cast<Eigen::Index>(i % 3)];
+  }
+  SurfaceMesh current = sphere;
+  current.setPositions(x);
+  AdaptionOptions options;
+  options.threshold = 0.5;   // the tips (Q ~ 2), not the flanks (~0.2)
+  const AdaptedMembraneMesh adapted = adaptMembraneMesh(current, X, options, 100000);
+  ASSERT_GT(adapted.markedElements, 0);
+  EXPECT_GT(adapted.current.numElements(), current.numElements());
+  expectClosedAndConforming(adapted.current);
+  ASSERT_EQ(adapted.reference.size(), adapted.current.positions().size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < adapted.reference.size(); ++i) {
+    worst = std::max(worst, std::abs(adapted.current.positions()[i] -
+                                     stretch[static_cast<Eigen::Index>(i % 3)] * adapted.reference[i]));
+  }
+  EXPECT_LT(worst, 1e-14);
+  // Refined at the tips (|z| > 2 of 2.5), not on the flanks: every new node (numbered after
+  // the old ones) sits where the curvature is.
+  int atTips = 0, elsewhere = 0;
+  for (int node = current.numNodes(); node < adapted.current.numNodes(); ++node) {
+    (std::abs(adapted.current.position(node)[2]) > 1.5 ? atTips : elsewhere) += 1;
+  }
+  EXPECT_GT(atTips, 4 * elsewhere);   // measured 440 and 24
+  // The cap: no refinement that would pass maxElements.
+  const AdaptedMembraneMesh capped = adaptMembraneMesh(current, X, options, current.numElements() + 1);
+  EXPECT_EQ(capped.markedElements, 0);
+  EXPECT_EQ(capped.current.numElements(), current.numElements());
+  EXPECT_EQ(capped.reference, X);
+}

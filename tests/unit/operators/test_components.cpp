@@ -264,9 +264,18 @@ TEST(OperatorParameters, DeclaredDefaultsReadBack)
   EXPECT_EQ(d.nearSingularTolerance, dd.nearSingularTolerance);
   EXPECT_EQ(d.nearSingularDistance, dd.nearSingularDistance);
   EXPECT_EQ(d.regularNeighbourRings, dd.regularNeighbourRings);
-  EXPECT_EQ(s.tolerance, sd.tolerance);
+  // The 3D deck: its own GMRES tolerance and the warm start on.
+  EXPECT_EQ(s.tolerance, kSurfaceSolverTolerance);
+  EXPECT_TRUE(s.warmStart);
   EXPECT_EQ(s.restart, sd.restart);
   EXPECT_EQ(s.maximumIterations, sd.maximumIterations);
+  // The 2D contour's list keeps the struct defaults and has no warm start.
+  Teuchos::ParameterList contour;
+  declareSolverParameters(contour);
+  EXPECT_FALSE(contour.isParameter("Warm start"));
+  const SolverParameters c = readSolverParameters(contour);
+  EXPECT_EQ(c.tolerance, sd.tolerance);
+  EXPECT_FALSE(c.warmStart);
 }
 
 TEST(OperatorParameters, RuleWithoutTriangleRuleIsRejectedByName)

@@ -159,6 +159,85 @@ TEST(Velocity, GmresAtLambdaOneReproducesTheExplicitVelocity)
   EXPECT_LT(difference, 1e-10 * scale);
 }
 
+// A time step moves the nodes by dt u, so the previous solution is O(dt) from the next one:
+// started there (Solver/Warm start), GMRES reaches the same tolerance in fewer iterations
+// and the same solution. lambda = 5 and 0.2 (the two sides of the spectrum, 1 - lambda of
+// either sign), a sphere 0.4 from the wall in shear, the HR load.
+TEST(Velocity, WarmStartReachesTheColdSolutionInFewerIterations)
+{
+  for (const double lambda : {5.0, 0.2}) {
+    auto solver = makeSolver("Wall", sphereAbove(2), lambda);
+    const auto loads = hadamardRybczynskiLoads(solver->surfaces(), lambda);
+    FlowConditions flow; // simple shear over the wall
+    flow.capillaryNumber = 0.4;
+    const auto load = LoadDensity::constantOverElements(loads);
+    const auto previous = solver->nodeVelocities(load, flow);
+    std::vector<double> x = solver->surfaces().positions();
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      x[k] += 1e-2 * previous.velocities[k];
+    }
+    solver->setPositions(x.data());
+    const auto cold = solver->nodeVelocities(load, flow);
+    const auto warm = solver->nodeVelocities(load, flow, previous.velocities.data());
+    // Measured 12 -> 11 (lambda = 5) and 11 -> 10 (0.2) iterations at the tolerance 1e-10.
+    EXPECT_LT(warm.iterations, cold.iterations) << "lambda = " << lambda;
+    EXPECT_LE(warm.residual, SolverParameters{}.tolerance);
+    double scale = 0.0, difference = 0.0;
+    for (std::size_t k = 0; k < cold.velocities.size(); ++k) {
+      scale = std::max(scale, std::abs(cold.velocities[k]));
+      difference = std::max(difference, std::abs(warm.velocities[k] - cold.velocities[k]));
+    }
+    // Both solve to the relative residual 1e-10; the equation is well conditioned (each
+    // solution errs by at most ~4x the tolerance times max |u|, measured), so they agree
+    // to 1e-9 of the largest velocity. The two are not equal: different Krylov spaces.
+    EXPECT_LT(difference, 1e-9 * scale) << "lambda = " << lambda;
+    EXPECT_GT(difference, 0.0) << "lambda = " << lambda;
+
+    // The history (WarmStartHistory) after two more moves: its combination of the last
+    // solutions starts closer still.
+    WarmStartHistory history;
+    for (int step = 0; step < 3; ++step) {
+      const auto u = solver->nodeVelocities(load, flow, history);
+      EXPECT_EQ(history.size(), step + 1);
+      for (std::size_t k = 0; k < x.size(); ++k) {
+        x[k] += 1e-2 * u.velocities[k];
+      }
+      solver->setPositions(x.data());
+    }
+    const auto coldAgain = solver->nodeVelocities(load, flow);
+    const auto fromHistory = solver->nodeVelocities(load, flow, history);
+    // Measured 12 -> 8 (lambda = 5) and 11 -> 7 (0.2) iterations (from the last solution alone: 11, 10).
+    EXPECT_LT(fromHistory.iterations, warm.iterations) << "lambda = " << lambda;
+    EXPECT_LT(fromHistory.iterations, coldAgain.iterations) << "lambda = " << lambda;
+    double historyDifference = 0.0;
+    for (std::size_t k = 0; k < coldAgain.velocities.size(); ++k) {
+      historyDifference = std::max(historyDifference, std::abs(fromHistory.velocities[k] - coldAgain.velocities[k]));
+    }
+    EXPECT_LT(historyDifference, 1e-9 * scale) << "lambda = " << lambda;   // as above
+  }
+}
+
+// A mesh adaption changes the number of nodes: the history of the old mesh is dropped and
+// the solve starts cold (the same iterations as without a history) instead of failing.
+TEST(Velocity, WarmStartHistoryOfAnotherMeshIsDropped)
+{
+  FlowConditions flow; // simple shear over the wall
+  flow.capillaryNumber = 0.4;
+  WarmStartHistory history;
+  auto coarse = makeSolver("Wall", sphereAbove(1), 5.0);
+  const auto coarseLoads = hadamardRybczynskiLoads(coarse->surfaces(), 5.0);
+  coarse->nodeVelocities(LoadDensity::constantOverElements(coarseLoads), flow, history);
+  EXPECT_EQ(history.length(), 3u * static_cast<std::size_t>(coarse->surfaces().numNodes()));
+  auto fine = makeSolver("Wall", sphereAbove(2), 5.0);
+  const auto loads = hadamardRybczynskiLoads(fine->surfaces(), 5.0);
+  const auto cold = fine->nodeVelocities(LoadDensity::constantOverElements(loads), flow);
+  const auto dropped = fine->nodeVelocities(LoadDensity::constantOverElements(loads), flow, history);
+  EXPECT_EQ(dropped.iterations, cold.iterations);
+  EXPECT_EQ(dropped.velocities, cold.velocities);   // the same start, the same arithmetic
+  EXPECT_EQ(history.size(), 1);
+  EXPECT_EQ(history.length(), 3u * static_cast<std::size_t>(fine->surfaces().numNodes()));
+}
+
 TEST(Velocity, RigidMotionOfTheFlowIsFollowedForAnyViscosityRatio)
 {
   // No load and u_inf a rigid motion (translation + rotation, a Stokes flow): the cell moves

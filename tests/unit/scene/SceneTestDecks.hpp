@@ -1,7 +1,13 @@
 #pragma once
-// Small validated decks for the scene tests: level-0/1 spheres, short runs.
+// Small validated decks for the scene tests (level-0/1 spheres, short runs), and the
+// scene one of them describes.
 #include <capsula/core/Deck.hpp>
+#include <capsula/operators/KernelRegistry.hpp>
+#include <capsula/scene/Scene.hpp>
+#include <capsula/scene/SceneDescription.hpp>
 #include <capsula/scene/SceneParameters.hpp>
+
+#include <Tpetra_Core.hpp>
 
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
@@ -42,6 +48,14 @@ Teuchos::RCP<Teuchos::ParameterList> smallDeck(int level, double height, bool wa
 inline Teuchos::RCP<Teuchos::ParameterList> smallDeck(int level, double height, bool wall)
 {
   return smallDeck(level, height, wall, [](Teuchos::ParameterList&) {});
+}
+
+/// The scene a validated deck describes, with the built-in kernels, on the default
+/// communicator.
+inline Scene makeScene(const Teuchos::ParameterList& deck)
+{
+  static const auto kernels = operators::builtInKernels();
+  return Scene(describeScene(deck), deck, Tpetra::getDefaultComm(), kernels);
 }
 
 } // namespace capsula::scene::testing

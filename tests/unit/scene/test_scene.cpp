@@ -22,13 +22,9 @@ namespace {
 namespace core = capsula::core;
 namespace mesh = capsula::mesh;
 namespace scene = capsula::scene;
+using scene::testing::makeScene;
 using scene::testing::smallDeck;
 
-scene::Scene makeScene(const Teuchos::ParameterList& deck)
-{
-  static const auto kernels = capsula::operators::builtInKernels();
-  return scene::Scene(scene::describeScene(deck), deck, Tpetra::getDefaultComm(), kernels);
-}
 
 bool anyTermContains(const scene::Scene& s, const std::string& piece)
 {

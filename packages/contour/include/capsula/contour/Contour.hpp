@@ -101,6 +101,8 @@ public:
 
   /// Geometry on segment k at s = s_k + t (s_{k+1} - s_k), t in [0, 1].
   ContourPoint pointAt(int segment, double t) const;
+  /// Only the position of pointAt(segment, t) (the same value, without the derivatives).
+  Eigen::Vector2d positionAt(int segment, double t) const;
   /// Geometry at any parameter value (periodic contours wrap s; tethered ones clamp
   /// the segment to the end pieces).
   ContourPoint pointAtParameter(double s) const;

@@ -135,6 +135,14 @@ public:
   /// (no nodal averaging). Independent of evaluate().
   double strainEnergy(const double* positions) const;
 
+  /// The same membrane (mesh, law, discretisation) with another reference shape: what a
+  /// tangential redistribution of the nodes (mesh::redistributeNodes) leaves behind, the
+  /// nodes' new material points. Throws as the constructor does.
+  MembraneMechanics withReference(std::vector<double> referencePositions) const
+  {
+    return MembraneMechanics(*mesh_, std::move(referencePositions), law_, discretisation_);
+  }
+
   const MembraneLaw& law() const { return *law_; }
   const std::vector<double>& referencePositions() const { return reference_; }
   const std::vector<Vec3>& referenceNodeNormals() const { return referenceNormal_; }

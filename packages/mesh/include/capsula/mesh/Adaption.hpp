@@ -32,4 +32,20 @@ struct AdaptionOptions {
 RefinedMesh adaptToCurvature(const SurfaceMesh& mesh, const std::vector<std::vector<double>>& fields = {},
                              const AdaptionOptions& options = {});
 
+/// A Lagrangian membrane mesh refined where the current shape needs it.
+struct AdaptedMembraneMesh {
+  SurfaceMesh current;              ///< the refined topology at the current positions
+  std::vector<double> reference;    ///< the same nodes in the reference configuration
+  int markedElements = 0;           ///< elements with Q_e >= threshold (0: nothing refined)
+};
+
+/// adaptToCurvature for a membrane: Q_e (eq 4.3) from the CURRENT shape `current`, the
+/// refinement parametrised by `reference` (3 per node) with the current positions carried
+/// as a field, so that every new node is one material point in both configurations and
+/// sits where the membrane's own element maps (reference shape parameters) put it. Nothing
+/// is refined if no element reaches the threshold, or if the refined mesh would have more
+/// than `maxElements` elements (the growth stops there; `markedElements` is then 0).
+AdaptedMembraneMesh adaptMembraneMesh(const SurfaceMesh& current, const std::vector<double>& reference,
+                                      const AdaptionOptions& options, int maxElements);
+
 } // namespace capsula::mesh

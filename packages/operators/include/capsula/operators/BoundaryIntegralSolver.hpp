@@ -19,6 +19,7 @@
 #include <capsula/operators/DoubleLayerForm.hpp>
 #include <capsula/operators/LinearFlow.hpp>
 #include <capsula/operators/LoadDensity.hpp>
+#include <capsula/operators/WarmStartHistory.hpp>
 
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_RCP.hpp>
@@ -60,6 +61,11 @@ public:
   /// GMRES does not converge.
   virtual VelocitySolution nodeVelocities(const LoadDensity& load, const FlowConditions& flow,
                                           const double* initialGuess = nullptr) = 0;
+  /// The same, GMRES starting from history.initialGuess(b) (the warm start of a time
+  /// integration, WarmStartHistory.hpp); the solved pair (b, u) joins `history`. With every
+  /// lambda = 1 the velocity is explicit and `history` is left as it is. Collective.
+  virtual VelocitySolution nodeVelocities(const LoadDensity& load, const FlowConditions& flow,
+                                          WarmStartHistory& history) = 0;
 
   /// The fluid velocity at points off the surfaces (eq 3.59; 3 per point, the same list
   /// on every rank):

@@ -37,6 +37,8 @@ public:
   void setPositions(const double* positions) override;
   VelocitySolution nodeVelocities(const LoadDensity& load, const FlowConditions& flow,
                                   const double* initialGuess = nullptr) override;
+  VelocitySolution nodeVelocities(const LoadDensity& load, const FlowConditions& flow,
+                                  WarmStartHistory& history) override;
   std::vector<double> flowVelocity(const std::vector<double>& points, const LoadDensity& load,
                                    const double* nodeVelocities, const FlowConditions& flow) override;
 
@@ -51,6 +53,9 @@ public:
 
 private:
   double lambdaOfNode(int node) const { return surfaces_.viscosityRatio(surfaces_.cellOfNode(node)); }
+  // Both nodeVelocities: GMRES from `initialGuess`, or from `history` when that is given.
+  VelocitySolution solveNodeVelocities(const LoadDensity& load, const FlowConditions& flow,
+                                       const double* initialGuess, WarmStartHistory* history);
   void requireInFluid(const std::vector<double>& points) const;
   std::vector<double> ownedPointsShare(const std::vector<double>& points) const;
 
@@ -103,6 +108,23 @@ VelocitySolution KernelBoundaryIntegralSolver<Kernel>::nodeVelocities(const Load
                                                                       const FlowConditions& flow,
                                                                       const double* initialGuess)
 {
+  return solveNodeVelocities(load, flow, initialGuess, nullptr);
+}
+
+template <class Kernel>
+VelocitySolution KernelBoundaryIntegralSolver<Kernel>::nodeVelocities(const LoadDensity& load,
+                                                                      const FlowConditions& flow,
+                                                                      WarmStartHistory& history)
+{
+  return solveNodeVelocities(load, flow, nullptr, &history);
+}
+
+template <class Kernel>
+VelocitySolution KernelBoundaryIntegralSolver<Kernel>::solveNodeVelocities(const LoadDensity& load,
+                                                                           const FlowConditions& flow,
+                                                                           const double* initialGuess,
+                                                                           WarmStartHistory* history)
+{
   core::require<core::InputError>(flow.capillaryNumber > 0.0 && std::isfinite(flow.capillaryNumber),
                                   "The capillary number is ", flow.capillaryNumber,
                                   "; it must be a finite number > 0.");
@@ -134,6 +156,15 @@ VelocitySolution KernelBoundaryIntegralSolver<Kernel>::nodeVelocities(const Load
   }
 
   Teuchos::TimeMonitor guard(*solveTimer_);
+  std::vector<double> globalRhs, guess;
+  if (history) {   // every rank forms the same guess from the same global vectors
+    globalRhs = distribution_.gather(rhs);
+    if (!history->empty() && history->length() != globalRhs.size()) {
+      *history = WarmStartHistory(history->depth());   // another mesh: its solutions do not apply
+    }
+    guess = history->initialGuess(globalRhs);
+    initialGuess = guess.data();
+  }
   using MV = Tpetra::MultiVector<double>;
   const auto map = distribution_.map();
   auto b = Teuchos::rcp(new MV(map, 1));
@@ -177,6 +208,9 @@ VelocitySolution KernelBoundaryIntegralSolver<Kernel>::nodeVelocities(const Load
   solution.residual = result.residual;
   const auto xData = x->getData(0);
   solution.velocities = distribution_.gather(std::vector<double>(xData.begin(), xData.end()));
+  if (history) {
+    history->add(std::move(globalRhs), solution.velocities);
+  }
   return solution;
 }
 

@@ -7,6 +7,7 @@
 // for the cell of target t. apply() gathers the distributed u into a locally replicated
 // copy (every row integrates over every node) with an Import built once.
 #include <Teuchos_RCP.hpp>
+#include <Teuchos_Time.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
@@ -51,6 +52,7 @@ private:
   std::vector<double> rowScale_;
   mutable std::vector<double> density_, rows_;
   mutable int applications_ = 0;
+  Teuchos::RCP<Teuchos::Time> timer_; // "Double-layer application": its count is the GMRES work
 };
 
 } // namespace capsula::operators

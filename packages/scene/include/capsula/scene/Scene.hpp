@@ -11,13 +11,17 @@
 //
 // The state the time integrator advances is the positions of all nodes of all cells,
 // cell after cell (operators::CellSurfaces numbering), the same on every rank. The
-// right-hand side is a pure function of the positions (no warm start of GMRES), which
-// makes a restarted run repeat the uninterrupted one bit for bit.
+// right-hand side is a pure function of the positions, except that with lambda != 1 and
+// 'Solver/Warm start' GMRES starts from a combination of the last solutions
+// (gmresWarmStart(), operators/WarmStartHistory.hpp); the checkpoint carries them, so a
+// restarted run still repeats the uninterrupted one bit for bit. evaluate() (outputs)
+// always starts cold.
 #include <capsula/elasticity/MembraneMechanics.hpp>
 #include <capsula/mesh/SurfaceMesh.hpp>
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/operators/LinearFlow.hpp>
+#include <capsula/operators/WarmStartHistory.hpp>
 #include <capsula/scene/FixedHeightConstraint.hpp>
 #include <capsula/scene/SceneDescription.hpp>
 
@@ -46,6 +50,24 @@ struct SceneFields {
   int gmresIterations = 0;                ///< 0: explicit velocity (lambda = 1)
 };
 
+/// Refined meshes for a scene (Scene::adaptedCells): one per cell, with its reference shape.
+struct AdaptedCells {
+  std::vector<mesh::SurfaceMesh> cells;
+  std::vector<std::vector<double>> references;
+  std::vector<int> markedElements;   ///< per cell, the elements with Q_e >= threshold (0: kept)
+};
+
+/// What one tangential redistribution of a cell's nodes did (Scene::regulariseMeshes).
+struct MeshRegularisation {
+  int cell = 0;
+  double minAngleBefore = 0.0;    ///< degrees
+  double minAngleAfter = 0.0;     ///< degrees
+  double referenceMinAngle = 0.0; ///< degrees, of the reference elements afterwards
+  int passes = 0;
+  double maxDisplacement = 0.0;   ///< the largest node move
+  double volumeOffset = 0.0;      ///< the normal offset that restored the volume
+};
+
 class Scene {
 public:
   /// Builds the scene `description` asks for; `deck` supplies the "Discretisation" and
@@ -54,6 +76,13 @@ public:
   /// settings the deck validators cannot check.
   Scene(const SceneDescription& description, const Teuchos::ParameterList& deck,
         const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const operators::KernelRegistry& kernels);
+
+  /// The same scene on other surfaces: `cells` (one per cell of the description, their
+  /// positions the current state) with the unstressed shapes `references` (3 per node; empty:
+  /// the deck's, as above). What a mesh adaption or a restart after one builds.
+  Scene(const SceneDescription& description, const Teuchos::ParameterList& deck,
+        const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const operators::KernelRegistry& kernels,
+        std::vector<mesh::SurfaceMesh> cells, std::vector<std::vector<double>> references);
 
   const SceneDescription& description() const { return description_; }
   const Teuchos::RCP<const Teuchos::Comm<int>>& comm() const { return comm_; }
@@ -69,7 +98,8 @@ public:
   const operators::FlowConditions& flow() const { return flow_; }
   std::string kernelName() const { return solver_->kernelName(); }
 
-  /// The initial positions of all nodes (the state at t = 0).
+  /// The positions of all nodes the scene was built with (the state at t = 0, or where an
+  /// adaption or a restart rebuilt it).
   const std::vector<double>& initialPositions() const { return initialPositions_; }
 
   /// The terms built, one line each ("kernel: Wall (...)", "membrane Cells/Cell 0: ...").
@@ -89,8 +119,38 @@ public:
   /// Applies the stage constraints to velocities belonging to `positions`.
   void constrain(const std::vector<double>& positions, std::vector<double>& velocities);
 
+  /// True if the deck asks for mesh regularisation ('Mesh regularisation/Enabled').
+  bool regularisesMeshes() const { return description_.meshRegularisation.enabled; }
+  /// For every cell whose smallest element angle at `positions` is below 'Mesh
+  /// regularisation/Minimum angle': redistributes its nodes along its surface
+  /// (mesh::redistributeNodes), writes their new positions into `positions` and gives
+  /// its membrane the matching reference shape. Returns one entry per cell changed (none
+  /// if regularisation is off). Every rank does the same (same state, same arithmetic).
+  std::vector<MeshRegularisation> regulariseMeshes(double t, std::vector<double>& positions);
+  /// True if the deck asks for mesh adaption ('Mesh adaption/Enabled').
+  bool adaptsMeshes() const { return description_.meshAdaption.enabled; }
+  /// The cells' meshes at `positions`, refined where Q_e = kappa^2 A >= 'Mesh
+  /// adaption/Threshold' (mesh::adaptMembraneMesh), with their reference shapes; nothing
+  /// if no cell needs (or may get) a refinement. Build a new Scene from it to go on.
+  std::optional<AdaptedCells> adaptedCells(const std::vector<double>& positions) const;
+
+  /// The unstressed shape of cell `c` (3 per node): the initial (or prestressed) shape,
+  /// or what the redistributions made of it.
+  const std::vector<double>& referencePositions(int c) const { return membrane(c).referencePositions(); }
+  /// Replaces the reference shape of cell `c` (a restart after redistributions).
+  void setReferencePositions(int c, std::vector<double> reference);
+
   /// Positions, constrained velocities, loads and tensions at `positions`. Collective.
+  /// GMRES starts cold: an output does not change the warm start of the next stage.
   SceneFields evaluate(double t, const std::vector<double>& positions);
+
+  /// What velocity()'s next GMRES solve starts from: the last solved pairs (right-hand
+  /// side, solution), or null with 'Solver/Warm start' off (start from the right-hand side).
+  /// Empty until the first solve, and always with every lambda = 1.
+  const operators::WarmStartHistory* gmresWarmStart() const { return warmStart_ ? &*warmStart_ : nullptr; }
+  /// Restores it from a checkpoint (WarmStartHistory::rightHandSides() and solutions()).
+  /// Throws core::InputError if they do not fit this scene's nodes.
+  void restoreGmresWarmStart(const std::vector<double>& rightHandSides, const std::vector<double>& solutions);
 
   /// Element loads of the latest evaluation (3 per element, global numbering): the
   /// average of Delta f over each element.
@@ -112,6 +172,7 @@ private:
   std::vector<double> loads_;
   std::vector<double> loadDensity_;
   std::vector<std::string> terms_;
+  std::optional<operators::WarmStartHistory> warmStart_;   // with 'Solver/Warm start'
   Teuchos::RCP<Teuchos::Time> membraneTimer_, velocityTimer_, constraintTimer_;
 };
 

@@ -2,6 +2,8 @@
 // What a validated deck asks for, in plain values (SceneParameters.hpp lists the keys).
 // Reading it checks what the validators cannot see alone: cells numbered 0..N-1 without
 // gaps, flow probes given as whole points, outputs that need the wall.
+#include <capsula/mesh/AdaptionParameters.hpp>
+#include <capsula/mesh/RedistributionParameters.hpp>
 #include <capsula/mesh/Vec3.hpp>
 
 #include <Teuchos_ParameterList.hpp>
@@ -49,6 +51,8 @@ struct SceneDescription {
   bool wall = true;
   std::vector<CellDescription> cells;
   double minimumGap = 0.05;          ///< 'Cells/Minimum gap': closer surfaces stop the run
+  mesh::RedistributionSettings meshRegularisation;   ///< 'Mesh regularisation'
+  mesh::AdaptionSettings meshAdaption;               ///< 'Mesh adaption'
   OutputDescription output;
 
   int numCells() const { return static_cast<int>(cells.size()); }

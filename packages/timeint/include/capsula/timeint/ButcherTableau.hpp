@@ -31,6 +31,15 @@ struct ButcherTableau {
   int errorEstimateOrder() const;
 };
 
+/// The stability function of the solution that advances, R(z) = 1 + z b^T (I - z A)^-1 1,
+/// at a real z: a step of size h on y' = mu y multiplies y by R(h mu).
+double stabilityFunction(const ButcherTableau& tableau, double z);
+
+/// The largest r such that |R(-x)| <= 1 for every x in [0, r]: a step h is stable on a
+/// decaying mode y' = -rho y while h rho <= r (RK4: 2.785; RKF45's 4th-order solution:
+/// 3.02, its 5th: 3.68; Dormand-Prince: 3.31).
+double realStabilityBoundary(const ButcherTableau& tableau);
+
 /// Runge-Kutta-Fehlberg 4(5), thesis eqs 3.47-3.49 (= A.49-A.51) with the ERRATA fix
 /// 2197/4104 in the 4th-order weights. The 4th-order solution advances (as in the
 /// thesis); the 5th-order one only estimates the error.

@@ -34,8 +34,19 @@ struct IntegrationState {
   double outputOrigin = 0.0;
   std::int64_t nextOutput = 0;
   bool steady = false;                   ///< steady state was detected
+  /// Stability limit (TimeIntegrationSettings::stabilityLimit): the power iteration's
+  /// last vector (the direction of the dominant mode of df/dy; empty before the first
+  /// estimate), the step it allows, and the accepted steps since it was estimated.
+  std::vector<double> stabilityVector;
+  double stabilityStep = std::numeric_limits<double>::infinity();
+  std::int64_t stepsSinceStabilityEstimate = 0;
   IntegrationStatistics statistics;
 };
+
+/// After the caller changed `state.y` between steps (a mesh regularisation moved nodes):
+/// forgets what the integrator derived from the old y (the first-stage slope) and has the
+/// stability limit estimated again before the next step.
+void stateChangedOutside(IntegrationState& state);
 
 /// Named numbers and arrays, the form in which a state goes into a checkpoint file.
 struct StateRecord {

@@ -19,7 +19,9 @@
 namespace capsula::timeint {
 
 /// Declares the keys of the "Time integration" sublist in `list` (the sublist itself).
-void declareTimeIntegrationParameters(Teuchos::ParameterList& list);
+/// `stabilityLimitDefault`: the default of "Stability limit" (on for the 3D capsule apps,
+/// whose membranes make the system stiff; off where an app has not been measured with it).
+void declareTimeIntegrationParameters(Teuchos::ParameterList& list, bool stabilityLimitDefault = false);
 
 /// Settings from a validated "Time integration" sublist.
 TimeIntegrationSettings timeIntegrationSettings(const Teuchos::ParameterList& list);

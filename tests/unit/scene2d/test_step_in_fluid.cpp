@@ -1,0 +1,106 @@
+// Steps that keep the cell above the wall (StepInFluid2D.hpp): a Runge-Kutta attempt whose
+// stage state puts a node through the wall is a rejected step, not the end of the run.
+#include <capsula/core/Error.hpp>
+#include <capsula/scene2d/StepInFluid2D.hpp>
+#include <capsula/timeint/TimeIntegrator.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using namespace capsula;
+using namespace capsula::scene2d;
+
+namespace {
+
+// A node relaxing onto the film height h = 0.005 at the rate mu: y' = -mu (y - h), x' = 0.
+// mu h_step >> 1 is the stiff mode of a freshly tethered a/b = 0.25 cell (docs/tether2d.md).
+constexpr double film = 0.005;
+constexpr double rate = 5000.0;
+
+timeint::TimeIntegrator relaxingNode(bool adaptive)
+{
+  timeint::TimeIntegrationSettings settings;
+  settings.method = timeint::Method::RKF45;
+  settings.adaptive = adaptive;
+  settings.tolerance = 1e-6;
+  settings.initialStep = 2e-3; // the preparation's step that the a/b = 0.25 cells were tethered with
+  return timeint::TimeIntegrator(settings, [](double, const std::vector<double>& y, std::vector<double>& dydt) {
+    requireNodesInFluid(y);
+    dydt[0] = 0.0;
+    dydt[1] = -rate * (y[1] - film);
+  });
+}
+
+} // namespace
+
+TEST(StepInFluid2D, FindsTheFirstNodeOnOrBelowTheWall)
+{
+  EXPECT_EQ(firstNodeOutsideFluid({0.0, 1.0, 5.0, 1e-300}), -1);
+  EXPECT_EQ(firstNodeOutsideFluid({0.0, 1.0, 5.0, 0.0, 1.0, -1.0}), 1);
+  EXPECT_EQ(firstNodeOutsideFluid({0.0, std::numeric_limits<double>::quiet_NaN()}), 0);
+  EXPECT_THROW(requireNodesInFluid({0.0, 1.0, 2.0, -1e-9}), NodeOutsideFluid);
+  EXPECT_NO_THROW(requireNodesInFluid({0.0, 1.0, 2.0, 1e-9}));
+}
+
+// The bug: after tethering an a/b = 0.25 cell at its sharp end, the first RKF45 attempt with
+// the preparation's step drove node 1 through the wall in a stage state and the run stopped
+// ("the cell has touched the wall") although smaller steps stay above it.
+TEST(StepInFluid2D, TetheredAbQuarterCellStageThroughTheWallIsARejectedStepNotAFailure)
+{
+  // The plain step fails: its second stage, y0 + h/4 k1 = 0.02 - 0.0375, is below the wall.
+  {
+    timeint::TimeIntegrator integrator = relaxingNode(true);
+    timeint::IntegrationState state = integrator.start(0.0, {0.3, 0.02});
+    EXPECT_THROW(integrator.step(state, 1.0), NodeOutsideFluid);
+  }
+  timeint::TimeIntegrator integrator = relaxingNode(true);
+  timeint::IntegrationState state = integrator.start(0.0, {0.3, 0.02});
+  const timeint::StepReport first = stepInFluid(integrator, state, 1.0);
+  EXPECT_LT(first.stepSize, 2e-3);
+  EXPECT_GT(state.statistics.rejectedSteps, 0);
+  EXPECT_GT(state.y[1], 0.0);
+  const double end = 2e-3;
+  while (state.time < end) {
+    stepInFluid(integrator, state, end);
+    ASSERT_GT(state.y[1], 0.0);
+    ASSERT_EQ(state.y[0], 0.3);
+  }
+  // y(t) = h + (y0 - h) e^{-mu t}. An accepted step has |x5 - x4| <= 0.5 eps / 0.75^4
+  // = 1.6e-6 (eq A.52 and the controller's acceptance at s >= 0.75), and the stiff mode damps
+  // the earlier steps' errors, so the end is within a few of those.
+  const double exact = film + (0.02 - film) * std::exp(-rate * end);
+  EXPECT_NEAR(state.y[1], exact, 5e-6) << "error " << state.y[1] - exact;
+}
+
+TEST(StepInFluid2D, FixedStepsThroughTheWallFailWithAClearError)
+{
+  timeint::TimeIntegrator integrator = relaxingNode(false);
+  timeint::IntegrationState state = integrator.start(0.0, {0.3, 0.02});
+  try {
+    stepInFluid(integrator, state, 1.0);
+    FAIL() << "a fixed step through the wall must fail";
+  } catch (const core::NumericalError& error) {
+    EXPECT_NE(std::string(error.what()).find("reaches the wall"), std::string::npos) << error.what();
+  }
+  EXPECT_EQ(state.time, 0.0); // the last accepted state
+  EXPECT_EQ(state.y[1], 0.02);
+}
+
+TEST(StepInFluid2D, ACellDrivenIntoTheWallFailsWhenTheStepCollapses)
+{
+  timeint::TimeIntegrationSettings settings;
+  settings.method = timeint::Method::RKF45;
+  settings.minimumStep = 1e-12;
+  timeint::TimeIntegrator integrator(settings, [](double, const std::vector<double>& y, std::vector<double>& dydt) {
+    requireNodesInFluid(y);
+    dydt[0] = 0.0;
+    dydt[1] = -1.0; // towards the wall whatever the gap
+  });
+  timeint::IntegrationState state = integrator.start(0.0, {0.0, 1e-15});
+  EXPECT_THROW(stepInFluid(integrator, state, 1.0), core::NumericalError);
+  EXPECT_EQ(state.time, 0.0);
+  EXPECT_EQ(state.y[1], 1e-15);
+}
