@@ -137,7 +137,9 @@ def targets_section(path):
         data = json.load(f)
     out = ["## Performance targets (utils/bench-targets.py)", "",
            f"{data['steps']} RKF45 steps of 1e-3 per case; step cost = 6 x the time per right-hand side "
-           "(the right-hand side's Teuchos timers, setup and outputs excluded); peak memory = the largest "
+           "(the right-hand side's Teuchos timers, setup and outputs excluded; the 3D apps' stability-limit "
+           "estimates, 12 right-hand sides at the first step and 3 every 10 steps, are in the wall time per "
+           "accepted step, not in the step cost); peak memory = the largest "
            "resident set of any process of the run. Speed-up: measured/target >= 1 meets it; every other row: "
            "<= 1 meets it." + (" QUICK MODE (level 1, 64 points): the targets do not apply." if data["quick"] else ""),
            "", "| what | measured | target | measured / target | measured / thesis Table 3.4 |", "|---|---|---|---|---|"]

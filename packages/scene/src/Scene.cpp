@@ -289,13 +289,13 @@ void Scene::setReferencePositions(int c, std::vector<double> reference)
   membrane = std::make_unique<elasticity::MembraneMechanics>(membrane->withReference(std::move(reference)));
 }
 
-void Scene::computeLoads(double t)
+void Scene::computeLoads(double t, elasticity::MembraneEvaluation what)
 {
   Teuchos::TimeMonitor guard(*membraneTimer_);
   for (int c = 0; c < numCells(); ++c) {
     auto& membrane = *membranes_[static_cast<std::size_t>(c)];
     try {
-      membrane.evaluate(cells_[static_cast<std::size_t>(c)].positionData());
+      membrane.evaluate(cells_[static_cast<std::size_t>(c)].positionData(), what);
     } catch (const core::NumericalError& e) {
       throw core::NumericalError(core::message(
         "At t = ", t, ", the membrane of '", description_.cells[static_cast<std::size_t>(c)].path,
@@ -317,7 +317,7 @@ void Scene::computeLoads(double t)
 void Scene::velocity(double t, const std::vector<double>& positions, std::vector<double>& velocities)
 {
   setPositions(t, positions);
-  computeLoads(t);
+  computeLoads(t, elasticity::MembraneEvaluation::LoadOnly);   // no output reads the tensions of a stage
   Teuchos::TimeMonitor guard(*velocityTimer_);
   // Warm start: GMRES begins at a combination of the last solutions (O(step) away).
   const operators::LoadDensity load(loadDensity_.data());
@@ -345,7 +345,7 @@ SceneFields Scene::evaluate(double t, const std::vector<double>& positions)
   SceneFields fields;
   fields.positions = positions;
   setPositions(t, positions);
-  computeLoads(t);
+  computeLoads(t, elasticity::MembraneEvaluation::Everything);
   {
     Teuchos::TimeMonitor guard(*velocityTimer_);
     operators::VelocitySolution solution =

@@ -4,6 +4,7 @@
 // contour-integral load where both are accurate.
 #include "MembraneTesting.hpp"
 
+#include <capsula/core/Error.hpp>
 #include <capsula/elasticity/MembraneMechanics.hpp>
 #include <capsula/elasticity/NeoHookeanLaw.hpp>
 #include <capsula/elasticity/SkalakLaw.hpp>
@@ -193,5 +194,37 @@ TEST(MembraneVirtualWork, ElementNodeLayoutIsWhatTheSingleLayerIntegrates)
         EXPECT_EQ(b[18 * e + 3 * k + d], contour.elementLoads()[e][d]);
       }
     }
+  }
+}
+
+// A right-hand side evaluates the virtual-work membrane with LoadOnly (no nodal average of
+// the deformation gradient, no nodal tensions): the load is the full evaluation's, bit for
+// bit, the nodal tensions keep the last full evaluation's values, and a fold is still
+// caught.
+TEST(MembraneVirtualWork, LoadOnlyEvaluationGivesTheSameLoad)
+{
+  const SurfaceMesh mesh = capsula::mesh::makeSphere(2, 1.0);
+  const std::vector<double> x = mapNodes(mesh.positions(), smoothDeformation);
+  for (const auto& law : laws()) {
+    MembraneMechanics full(mesh, mesh.positions(), law, virtualWork());
+    MembraneMechanics light(mesh, mesh.positions(), law, virtualWork());
+    full.evaluate(x.data());
+    light.evaluate(mesh.positions().data());   // a full evaluation at rest: tensions ~1e-15
+    const double atRest = light.nodalPrincipalTensions()[0].major;
+    light.evaluate(x.data(), MembraneEvaluation::LoadOnly);
+    std::vector<double> a(18 * static_cast<std::size_t>(mesh.numElements())), b(a.size());
+    full.writeElementNodeLoads(a.data());
+    light.writeElementNodeLoads(b.data());
+    EXPECT_EQ(a, b) << law->name();
+    EXPECT_EQ(light.nodalPrincipalTensions()[0].major, atRest) << law->name();   // not recomputed
+    EXPECT_GT(std::abs(full.nodalPrincipalTensions()[0].major), 1e-3) << law->name();
+
+    // Turn one node's star inside out: the load-only path still stops on the fold.
+    std::vector<double> folded = x;
+    for (int d = 0; d < 3; ++d) {
+      folded[static_cast<std::size_t>(d)] *= -0.2;
+    }
+    EXPECT_THROW(light.evaluate(folded.data(), MembraneEvaluation::LoadOnly), capsula::core::NumericalError)
+      << law->name();
   }
 }

@@ -74,6 +74,14 @@ struct MembraneDiscretisation {
   MembraneForceMethod forceMethod = MembraneForceMethod::ContourIntegral;
 };
 
+/// What MembraneMechanics::evaluate computes.
+enum class MembraneEvaluation {
+  Everything, ///< loads and the nodal kinematics and tensions (outputs)
+  LoadOnly    ///< VirtualWork: the load and the fold check only; the nodal stretches and
+              ///< tensions keep the values of the last full evaluation (a right-hand side
+              ///< needs none of them). ContourIntegral needs the tensions: same as Everything.
+};
+
 /// The node where the smallest principal tension sits, and its value.
 struct MostCompressiveTension {
   int node;
@@ -90,9 +98,10 @@ public:
                     std::shared_ptr<const MembraneLaw> law,
                     const MembraneDiscretisation& discretisation = {});
 
-  /// Computes everything below for the current positions (3 * numNodes doubles).
-  /// Throws NumericalError if the membrane is folded or crushed somewhere.
-  void evaluate(const double* positions);
+  /// Computes everything below for the current positions (3 * numNodes doubles), or with
+  /// LoadOnly what the load needs. Throws NumericalError if the membrane is folded or
+  /// crushed somewhere.
+  void evaluate(const double* positions, MembraneEvaluation what = MembraneEvaluation::Everything);
 
   // --- per node (after evaluate) --------------------------------------------
   const std::vector<Mat3>& nodalTensions() const { return tension_; } ///< T, eq 3.30

@@ -159,7 +159,7 @@ public:
   operators::LoadDensity loadDensity() const { return operators::LoadDensity(loadDensity_.data()); }
 
 private:
-  void computeLoads(double t);
+  void computeLoads(double t, elasticity::MembraneEvaluation what);
 
   SceneDescription description_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
