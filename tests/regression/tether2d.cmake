@@ -68,7 +68,7 @@ set_tests_properties(regression_tether2d_ranks_agree PROPERTIES
 # the preparation's step (k dt = 2e-3) is far too large for the stiff relaxation right after
 # tethering, and the first Runge-Kutta stages drove node 1 through the wall ("the cell has
 # touched the wall", the reduced study at 64 points, Ca = 0.01, 0.025, 0.25). Such attempts
-# are now rejected steps (scene2d/StepInFluid2D.hpp). The run must finish (the preparation
+# are now rejected steps (scene2d/NodesInFluid2D.hpp, a domain check of the time integrator). The run must finish (the preparation
 # ends by its own criterion at tau = 1.12, node 63 tethered) and stay above the wall: the
 # tether holds node 0 at 0.005, so the contour's lowest point is at most that, and it must
 # not come within 1e-3 of the wall (a fifth of the anchor gap; measured: 0.005 all along).

@@ -1,6 +1,6 @@
 #include "capsula/scene2d/TetherRun2D.hpp"
 
-#include "capsula/scene2d/StepInFluid2D.hpp"
+#include "capsula/scene2d/NodesInFluid2D.hpp"
 
 #include <capsula/contour/ContourMetrics.hpp>
 #include <capsula/core/Deck.hpp>
@@ -151,16 +151,14 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
 
   timeint::TimeIntegrationSettings settings = timeint::timeIntegrationSettings(deck_.sublist("Time integration"));
   const double endTau = settings.endTime; // the tethered (or free) stage's duration in tau
-  // With the wall, a stage state with a node on or below it is a rejected attempt
-  // (StepInFluid2D.hpp), not a failure of the run.
-  const bool wall = model_.flow().wall;
-  timeint::TimeIntegrator integrator(settings, [this, wall](double, const std::vector<double>& y,
-                                                            std::vector<double>& dydt) {
-    if (wall) {
-      requireNodesInFluid(y);
-    }
+  timeint::TimeIntegrator integrator(settings, [this](double, const std::vector<double>& y, std::vector<double>& dydt) {
     model_.rightHandSide(y, dydt);
   });
+  // With the wall, a stage state or a step with a node on or below it is a rejected
+  // attempt (NodesInFluid2D.hpp), not a failure of the run.
+  if (model_.flow().wall) {
+    integrator.setDomainCheck(requireNodesInFluid);
+  }
 
   const std::vector<std::string> columns = tableColumns();
   std::optional<io::OutputDirectory> directory;
@@ -379,8 +377,7 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
         break;
       }
     } else {
-      const timeint::StepReport report =
-        wall ? stepInFluid(integrator, state, tTarget) : integrator.step(state, tTarget);
+      const timeint::StepReport report = integrator.step(state, tTarget);
       ++progress.steps;
       const bool atOutput = state.time == tOut;
       if (atOutput) {

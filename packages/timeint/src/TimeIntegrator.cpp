@@ -217,6 +217,11 @@ void TimeIntegrator::setStageConstraint(StageConstraint constraint)
   constraint_ = std::move(constraint);
 }
 
+void TimeIntegrator::setDomainCheck(DomainCheck check)
+{
+  domainCheck_ = std::move(check);
+}
+
 bool TimeIntegrator::adaptive() const
 {
   return settings_.adaptive;
@@ -311,20 +316,46 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
     }
     report.shortened = h < proposed;
 
-    for (int i = 1; i < stages; ++i) {
-      combineStages(state.y.data(), h, &tableau_.a[static_cast<std::size_t>(i * stages)], slopes_, i,
-                    stageState_.data(), n);
-      const double ci = tableau_.c[static_cast<std::size_t>(i)];
-      const double ti = ci == 1.0 ? tNew : state.time + ci * h;
-      evaluate(ti, stageState_, slopes_[static_cast<std::size_t>(i)], state, h, i);
+    std::string outside;   // why a stage state or the result left the model's domain, or ""
+    try {
+      for (int i = 1; i < stages; ++i) {
+        combineStages(state.y.data(), h, &tableau_.a[static_cast<std::size_t>(i * stages)], slopes_, i,
+                      stageState_.data(), n);
+        if (domainCheck_) {
+          domainCheck_(stageState_);
+        }
+        const double ci = tableau_.c[static_cast<std::size_t>(i)];
+        const double ti = ci == 1.0 ? tNew : state.time + ci * h;
+        evaluate(ti, stageState_, slopes_[static_cast<std::size_t>(i)], state, h, i);
+      }
+      combineStages(state.y.data(), h, tableau_.b.data(), slopes_, stages, newState_.data(), n);
+      const std::size_t bad = firstNonFinite(newState_.data(), n);
+      if (bad != n) {
+        throw core::NumericalError(core::message(
+          "Time integration failed: the new state is not finite at t = ", shown(tNew), " (entry ",
+          bad, " of ", n, "; ", tableau_.name, " step from t = ", shown(state.time), " with dt = ",
+          shown(h), "). The state at t = ", shown(state.time), " is the last accepted one."));
+      }
+      if (domainCheck_) {
+        domainCheck_(newState_);
+      }
+    } catch (const StateOutsideDomain& e) {
+      outside = e.what();
     }
-    combineStages(state.y.data(), h, tableau_.b.data(), slopes_, stages, newState_.data(), n);
-    const std::size_t bad = firstNonFinite(newState_.data(), n);
-    if (bad != n) {
-      throw core::NumericalError(core::message(
-        "Time integration failed: the new state is not finite at t = ", shown(tNew), " (entry ",
-        bad, " of ", n, "; ", tableau_.name, " step from t = ", shown(state.time), " with dt = ",
-        shown(h), "). The state at t = ", shown(state.time), " is the last accepted one."));
+    if (!outside.empty()) {
+      core::require<core::NumericalError>(
+        settings_.adaptive, "Time integration failed: ", outside, " in the fixed ", tableau_.name,
+        " step from t = ", shown(state.time), " (dt = ", shown(h),
+        "); use a smaller 'Time integration/Initial step'. The state at t = ", shown(state.time),
+        " is the last accepted one.");
+      ++report.rejectedAttempts;
+      ++stats.rejectedSteps;
+      state.proposedStep = 0.5 * h;
+      core::require<core::NumericalError>(
+        state.proposedStep >= settings_.minimumStep, "Time integration failed: ", outside, " at t = ",
+        shown(state.time), " for every step down to ", shown(h), " (below that: 'Time integration/Minimum step' = ",
+        settings_.minimumStep, "). The state at t = ", shown(state.time), " is the last accepted one.");
+      continue;
     }
 
     StepDecision decision{true, proposed};

@@ -26,6 +26,7 @@
 // Failures: a non-finite right-hand side or state, and a step size driven below
 // `minimumStep`, throw core::NumericalError naming the time and the step size. The state
 // (time, y) is then the last accepted one, untouched, so the caller can checkpoint it.
+#include "capsula/core/Error.hpp"
 #include "capsula/timeint/ButcherTableau.hpp"
 #include "capsula/timeint/IntegrationState.hpp"
 #include "capsula/timeint/SteadyState.hpp"
@@ -36,6 +37,21 @@
 #include <vector>
 
 namespace capsula::timeint {
+
+/// Thrown by a domain check (TimeIntegrator::setDomainCheck) for a state the model is not
+/// defined at, e.g. a node on or below the wall, where the wall kernel meets its own image.
+/// Inside an adaptive step it is not a failure: an explicit step evaluates stage states the
+/// error control has not judged yet, and a step too large for a fast mode can put one
+/// outside although smaller steps stay inside. The attempt is rejected and retried with
+/// half the step; the run fails (core::NumericalError) only when the step falls below the
+/// minimum, or at once with fixed steps.
+class StateOutsideDomain : public core::Error {
+public:
+  explicit StateOutsideDomain(const std::string& message) : core::Error(message) {}
+};
+
+/// Checks a state; throws StateOutsideDomain if the model is not defined there.
+using DomainCheck = std::function<void(const std::vector<double>& y)>;
 
 enum class Method { RKF45, DormandPrince45, RK4 };
 
@@ -107,6 +123,9 @@ public:
   TimeIntegrator(TimeIntegrationSettings settings, RightHandSide rhs);
 
   void setStageConstraint(StageConstraint constraint);
+  /// Every stage state and every step's result is checked before use (see
+  /// StateOutsideDomain); the start state is expected inside.
+  void setDomainCheck(DomainCheck check);
 
   const TimeIntegrationSettings& settings() const { return settings_; }
   const ButcherTableau& tableau() const { return tableau_; }
@@ -142,6 +161,7 @@ private:
   TimeIntegrationSettings settings_;
   RightHandSide rhs_;
   StageConstraint constraint_;
+  DomainCheck domainCheck_;
   ButcherTableau tableau_;
   ThesisStepController thesisController_;
   PiStepController piController_;

@@ -1,7 +1,8 @@
-// Steps that keep the cell above the wall (StepInFluid2D.hpp): a Runge-Kutta attempt whose
-// stage state puts a node through the wall is a rejected step, not the end of the run.
+// The tether run's domain check (NodesInFluid2D.hpp, TimeIntegrator::setDomainCheck): a
+// Runge-Kutta attempt whose stage state puts a node through the wall is a rejected step,
+// not the end of the run.
 #include <capsula/core/Error.hpp>
-#include <capsula/scene2d/StepInFluid2D.hpp>
+#include <capsula/scene2d/NodesInFluid2D.hpp>
 #include <capsula/timeint/TimeIntegrator.hpp>
 
 #include <gtest/gtest.h>
@@ -27,16 +28,23 @@ timeint::TimeIntegrator relaxingNode(bool adaptive)
   settings.adaptive = adaptive;
   settings.tolerance = 1e-6;
   settings.initialStep = 2e-3; // the preparation's step that the a/b = 0.25 cells were tethered with
-  return timeint::TimeIntegrator(settings, [](double, const std::vector<double>& y, std::vector<double>& dydt) {
-    requireNodesInFluid(y);
+  return timeint::TimeIntegrator(settings, [](double, const std::vector<double>&y, std::vector<double>& dydt) {
     dydt[0] = 0.0;
     dydt[1] = -rate * (y[1] - film);
   });
 }
 
+// What the tether run does: the same integrator with the wall as its domain.
+timeint::TimeIntegrator relaxingNodeAboveTheWall(bool adaptive)
+{
+  timeint::TimeIntegrator integrator = relaxingNode(adaptive);
+  integrator.setDomainCheck(requireNodesInFluid);
+  return integrator;
+}
+
 } // namespace
 
-TEST(StepInFluid2D, FindsTheFirstNodeOnOrBelowTheWall)
+TEST(NodesInFluid2D, FindsTheFirstNodeOnOrBelowTheWall)
 {
   EXPECT_EQ(firstNodeOutsideFluid({0.0, 1.0, 5.0, 1e-300}), -1);
   EXPECT_EQ(firstNodeOutsideFluid({0.0, 1.0, 5.0, 0.0, 1.0, -1.0}), 1);
@@ -48,23 +56,34 @@ TEST(StepInFluid2D, FindsTheFirstNodeOnOrBelowTheWall)
 // The bug: after tethering an a/b = 0.25 cell at its sharp end, the first RKF45 attempt with
 // the preparation's step drove node 1 through the wall in a stage state and the run stopped
 // ("the cell has touched the wall") although smaller steps stay above it.
-TEST(StepInFluid2D, TetheredAbQuarterCellStageThroughTheWallIsARejectedStepNotAFailure)
+TEST(NodesInFluid2D, TetheredAbQuarterCellStageThroughTheWallIsARejectedStepNotAFailure)
 {
-  // The plain step fails: its second stage, y0 + h/4 k1 = 0.02 - 0.0375, is below the wall.
+  // Without the domain check the first attempt's second stage, y0 + h/4 k1 = 0.02 - 0.0375,
+  // is evaluated below the wall (where the wall kernel would meet its image).
   {
-    timeint::TimeIntegrator integrator = relaxingNode(true);
-    timeint::IntegrationState state = integrator.start(0.0, {0.3, 0.02});
-    EXPECT_THROW(integrator.step(state, 1.0), NodeOutsideFluid);
+    timeint::TimeIntegrationSettings settings;
+    settings.method = timeint::Method::RKF45;
+    settings.tolerance = 1e-6;
+    settings.initialStep = 2e-3;
+    bool belowTheWall = false;
+    timeint::TimeIntegrator plain(settings, [&](double, const std::vector<double>& y, std::vector<double>& dydt) {
+      belowTheWall = belowTheWall || y[1] <= 0.0;
+      dydt[0] = 0.0;
+      dydt[1] = -rate * (y[1] - film);
+    });
+    timeint::IntegrationState state = plain.start(0.0, {0.3, 0.02});
+    plain.step(state, 1.0);
+    EXPECT_TRUE(belowTheWall);
   }
-  timeint::TimeIntegrator integrator = relaxingNode(true);
+  timeint::TimeIntegrator integrator = relaxingNodeAboveTheWall(true);
   timeint::IntegrationState state = integrator.start(0.0, {0.3, 0.02});
-  const timeint::StepReport first = stepInFluid(integrator, state, 1.0);
+  const timeint::StepReport first = integrator.step(state, 1.0);
   EXPECT_LT(first.stepSize, 2e-3);
   EXPECT_GT(state.statistics.rejectedSteps, 0);
   EXPECT_GT(state.y[1], 0.0);
   const double end = 2e-3;
   while (state.time < end) {
-    stepInFluid(integrator, state, end);
+    integrator.step(state, end);
     ASSERT_GT(state.y[1], 0.0);
     ASSERT_EQ(state.y[0], 0.3);
   }
@@ -75,32 +94,33 @@ TEST(StepInFluid2D, TetheredAbQuarterCellStageThroughTheWallIsARejectedStepNotAF
   EXPECT_NEAR(state.y[1], exact, 5e-6) << "error " << state.y[1] - exact;
 }
 
-TEST(StepInFluid2D, FixedStepsThroughTheWallFailWithAClearError)
+TEST(NodesInFluid2D, FixedStepsThroughTheWallFailWithAClearError)
 {
-  timeint::TimeIntegrator integrator = relaxingNode(false);
+  timeint::TimeIntegrator integrator = relaxingNodeAboveTheWall(false);
   timeint::IntegrationState state = integrator.start(0.0, {0.3, 0.02});
   try {
-    stepInFluid(integrator, state, 1.0);
+    integrator.step(state, 1.0);
     FAIL() << "a fixed step through the wall must fail";
   } catch (const core::NumericalError& error) {
-    EXPECT_NE(std::string(error.what()).find("reaches the wall"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("is on or below the wall"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("fixed"), std::string::npos) << error.what();
   }
   EXPECT_EQ(state.time, 0.0); // the last accepted state
   EXPECT_EQ(state.y[1], 0.02);
 }
 
-TEST(StepInFluid2D, ACellDrivenIntoTheWallFailsWhenTheStepCollapses)
+TEST(NodesInFluid2D, ACellDrivenIntoTheWallFailsWhenTheStepCollapses)
 {
   timeint::TimeIntegrationSettings settings;
   settings.method = timeint::Method::RKF45;
   settings.minimumStep = 1e-12;
-  timeint::TimeIntegrator integrator(settings, [](double, const std::vector<double>& y, std::vector<double>& dydt) {
-    requireNodesInFluid(y);
+  timeint::TimeIntegrator integrator(settings, [](double, const std::vector<double>&, std::vector<double>& dydt) {
     dydt[0] = 0.0;
     dydt[1] = -1.0; // towards the wall whatever the gap
   });
+  integrator.setDomainCheck(requireNodesInFluid);
   timeint::IntegrationState state = integrator.start(0.0, {0.0, 1e-15});
-  EXPECT_THROW(stepInFluid(integrator, state, 1.0), core::NumericalError);
+  EXPECT_THROW(integrator.step(state, 1.0), core::NumericalError);
   EXPECT_EQ(state.time, 0.0);
   EXPECT_EQ(state.y[1], 1e-15);
 }
