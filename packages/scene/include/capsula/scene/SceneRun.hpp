@@ -42,6 +42,8 @@
 // step-size collapse below 'Time integration/Minimum step', a cell reaching the wall, a
 // degraded mesh, a GMRES breakdown) is rethrown after summary.json records it; the last
 // checkpoint and outputs stay.
+#include "capsula/scene/MetricsTable.hpp"   // metricsColumns(): the layout of metrics.csv
+
 #include <capsula/operators/KernelRegistry.hpp>
 
 #include <Teuchos_Comm.hpp>
@@ -70,14 +72,6 @@ struct SceneRunResult {
   std::string outputDirectory;
   std::vector<std::string> terms;   ///< physics and output terms built
 };
-
-/// The metrics.csv columns of one cell; the wall-shear-stress ones only when that output is
-/// on; the stability diagnostics last.
-std::vector<std::string> metricsColumns(bool wallShearStress);
-/// The metrics.csv columns of `numCells` cells (the one-cell layout for numCells = 1); with
-/// `isolatedRange` (and the wall stress) also wall_area_below_isolated,
-/// wall_area_above_isolated ('Output/Wall shear stress/Isolated range').
-std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange = false);
 
 /// Runs the scene `validatedDeck` describes. Collective over `comm`.
 SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck,
