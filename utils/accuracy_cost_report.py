@@ -14,14 +14,23 @@ ROOT = os.path.dirname(HERE)
 
 TITLES = {
     "cell3d_shear": "3D: a capsule in free shear (Lac et al. 2004 neo-Hookean, Ca = 0.6), D12 at the end time",
+    "cell3d_wall": "3D: D12_max of a cell near the wall (h/a = 1.2, Ca = 0.9, Skalak C = 2.5; thesis Fig. 3.7)",
     "tether2d_fmax": "2D: maximum tether force F_max (a/b = 1, Ca = 0.25, lambda = 1; thesis Fig. 3.6, Table 3.2)",
+    "tether2d_fmax_gap0.1": "2D: F_max as above, with the cell released and tethered 0.1 above the wall",
     "gmres_lambda5": "lambda = 5: GMRES tolerance against the error and the time (D12 at the end time)",
 }
 
 
 GRIDS = {"axes": "each varied alone from the first value of the others", "product": "every combination",
          "mixed": "every combination of the first two; each further knob at every value of the first, the "
-                  "others at their first value"}
+                  "others at their first value",
+         "blocks": "the union of the products listed below, every other knob at its first value"}
+
+# The thesis's own convergence numbers (Section 3.12.1), for the comparisons below.
+THESIS_TABLE_3_2 = {"5": 3.2525, "6": 3.2469, "8": 3.2474, "12": 3.2475}  # F_max at 256 points
+THESIS_FIG_3_6 = dict(order=-1.45, spread=0.034, last_change=0.005)       # N_E 64-320, 256 -> 320
+THESIS_FIG_3_7 = dict(order=-0.75, spread=0.016)                          # D12_max against N_E
+ELEMENTS = {"0": 20, "1": 80, "2": 320, "3": 1280, "4": 5120}              # icosphere level -> N_E
 
 
 def fmt(x, digits=4):
@@ -56,18 +65,24 @@ def study_section(name, rows, meta, figdir, docdir):
     fixed = "; ".join(f"`{k}={v}`" for k, v in meta["fixed"].items() if not k.startswith("Output/"))
     knobs = "; ".join(f"`{k}` in {{{', '.join(v)}}}" for k, v in meta["knobs"])
     out += [f"Deck `{meta['deck']}` ({meta['app']}, {', '.join(map(str, meta['ranks']))} rank(s)) with {fixed}.",
-            f"Knobs ({meta['grid']}: {GRIDS[meta['grid']]}): {knobs}.",
-            f"QoI `{meta['qoi']}`; reference {fmt(meta['reference'], 7)} ({meta['reference_how']}).", ""]
+            f"Knobs ({meta['grid']}: {GRIDS[meta['grid']]}): {knobs}."]
+    for block in meta.get("blocks") or []:
+        out.append("- " + " x ".join(f"`{k.split('/')[-1]}` {{{', '.join(v)}}}" for k, v in block.items()))
+    if meta.get("blocks"):
+        out.append("")
+    out += [f"QoI `{meta['qoi']}`; reference {fmt(meta['reference'], 7)} ({meta['reference_how']}).", ""]
     keys = [k for k, _ in meta["knobs"]]
-    head = [k.split("/")[-1] for k in keys] + ["QoI", "rel. error", "knob's own change", "drift", "s / rhs",
-                                               "s / step", "steps", "rhs", "wall s", "peak MB", "load"]
+    distortion = any(math.isfinite(r.get("distortion", float("nan"))) for r in rows)
+    head = [k.split("/")[-1] for k in keys] + ["QoI", "rel. error", "knob's own change", "drift"] + \
+        (["max distortion"] if distortion else []) + ["s / rhs", "s / step", "steps", "rhs", "wall s", "peak MB", "load"]
     out.append("| " + " | ".join(head) + " |")
     out.append("|" + "---|" * len(head))
     for r in rows:
         partial = r.get("partial", {})
         own = ", ".join(f"{k.split('/')[-1]}: {fmt(v, 2)}" for k, v in partial.items() if v > 0)
         cells = [r["combo"][k] for k in keys] + [
-            fmt(r["qoi"], 6), fmt(r["rel_error"], 2), own or "-", fmt(r.get("drift"), 2), fmt(r.get("s_per_rhs"), 3),
+            fmt(r["qoi"], 6), fmt(r["rel_error"], 2), own or "-", fmt(r.get("drift"), 2)] + (
+            [fmt(r.get("distortion"), 2)] if distortion else []) + [fmt(r.get("s_per_rhs"), 3),
             fmt(r["wall_s"] / r["steps"] if r.get("steps") else float("nan"), 3), str(r.get("steps", 0)),
             str(r.get("rhs", 0)), fmt(r["wall_s"], 3), fmt(r["peak_rss_mb"], 3), f"{r['load_before']:.1f}"]
         if not str(r.get("status", "")).startswith(("finished", "steady")):
@@ -79,6 +94,13 @@ def study_section(name, rows, meta, figdir, docdir):
                 "out: for the mesh the error against h, for the other knobs the change from the knob's tightest "
                 "value against the knob's value, so a negative slope means the error falls as the knob grows): " +
                 "; ".join(f"{k.split('/')[-1]}: {v:.2f}" for k, v in orders.items()) + "."]
+    line = meta.get("refine_line") or []
+    if len(line) >= 2 and meta.get("refine"):
+        what = meta["refine"].split("/")[-1]
+        steps = ", ".join(f"{fmt(b - a, 3)}" for (_, a), (_, b) in zip(line, line[1:]))
+        out += ["", f"Along `{what}` (others at base), coarse to fine: QoI " +
+                ", ".join(fmt(q, 7) for _, q in line) + f"; successive changes {steps}."]
+    out += compare_with_thesis(name, rows, meta)
     out += [f"Sum of the runs' wall times: {sum(r['wall_s'] for r in rows):.0f} s (this invocation took "
             f"{meta.get('seconds', float('nan')):.0f} s; runs found in the runs folder are reused).", ""]
     for suffix in ("pareto", "orders"):
@@ -87,6 +109,56 @@ def study_section(name, rows, meta, figdir, docdir):
             shutil.copyfile(src, os.path.join(figdir, f"{name}_{suffix}.png"))
             out.append(f"![{name} {suffix}]({os.path.relpath(os.path.join(figdir, f'{name}_{suffix}.png'), docdir)})")
     out.append("")
+    return out
+
+
+def compare_with_thesis(name, rows, meta):
+    """The thesis's own figures for the same study (Section 3.12.1), next to this code's."""
+    ok = [r for r in rows if math.isfinite(r["qoi"]) and str(r.get("status", "")).startswith(("finished", "steady"))]
+    keys = [k for k, _ in meta["knobs"]]
+    out = []
+    if name == "tether2d_fmax":
+        points, gauss = keys[0], keys[1]
+        at256 = {r["combo"][gauss]: r["qoi"] for r in ok if r["combo"][points] == "256"}
+        if at256:
+            out += ["", "Against the thesis's Table 3.2 (F_max at 256 points):", "",
+                    "| N_GL | thesis | this code | difference |", "|---|---|---|---|"]
+            for n, value in THESIS_TABLE_3_2.items():
+                mine = at256.get(n)
+                out.append(f"| {n} | {value} | {fmt(mine, 6)} | "
+                           f"{fmt((mine - value) / value, 2) if mine is not None else '-'} |")
+        base = {r["combo"][points]: r["qoi"] for r in ok if r["combo"][gauss] == meta["knobs"][1][1][0]}
+        if all(n in base for n in ("64", "256", "320")):
+            sel = [base[n] for n in ("64", "128", "256", "320") if n in base]
+            spread = (max(sel) - min(sel)) / min(sel)
+            last = abs(base["320"] - base["256"]) / base["256"]
+            out += ["", f"Thesis Fig. 3.6: spread {THESIS_FIG_3_6['spread']:.1%} over N_E = 64-320, change "
+                    f"< {THESIS_FIG_3_6['last_change']:.1%} from 256 to 320, fitted order N_E^{THESIS_FIG_3_6['order']}; "
+                    f"this code (N_GL = {meta['knobs'][1][1][0]}): spread {spread:.2%}, change {last:.2%} from 256 to 320, "
+                    f"Richardson order {fmt(meta.get('richardson_order'), 3)} "
+                    f"({'none: ' + meta['reference_how'] if not meta.get('richardson_order') else 'N_E^-p'})."]
+    if name == "cell3d_wall":
+        line = meta.get("refine_line") or []
+        if len(line) >= 2:
+            qs = [q for _, q in line]
+            spread = (max(qs) - min(qs)) / min(qs)
+            order = meta.get("richardson_order")
+            out += ["", f"Thesis Fig. 3.7: spread {THESIS_FIG_3_7['spread']:.1%} of D12_max over its meshes, fitted "
+                    f"order N_E^{THESIS_FIG_3_7['order']}; this code: spread {spread:.2%} over N_E = "
+                    + ", ".join(f"{ELEMENTS.get(str(round(-math.log2(h))), '?')}" for h, _ in line)
+                    + (f", Richardson order {order:.2f} in h, i.e. N_E^{-order / 2:.2f} (N_E ~ h^-2)." if order else
+                       f"; {meta['reference_how']}.")]
+    if name == "cell3d_shear" and len(keys) > 1:
+        quad = keys[1]
+        for level in ("3", "2"):
+            by = {r["combo"][quad]: r["qoi"] for r in ok if r["combo"][keys[0]] == level
+                  and all(r["combo"][k] == v[0] for k, v in meta["knobs"][2:])}
+            if len(by) >= 3:
+                vals = list(by.values())
+                out += ["", f"Thesis Table 3.3 (N_Q = 6, 7, 9, 13; a prestressed Skalak capsule at Ca = 1.8): D12 "
+                        f"changes by less than 0.2%; here (level {level}, N_Q = {', '.join(by)}): "
+                        f"{(max(vals) - min(vals)) / min(vals):.3%}."]
+                break
     return out
 
 
@@ -119,11 +191,11 @@ def choose_section(results):
         rows, meta = results["gmres_lambda5"]
         for target in (0.01, 0.001):
             # The solver's error should stay a tenth of the accuracy asked for, so that the
-            # discretisation's error, not GMRES's, sets it.
-            # The loosest tolerance that does it (a tighter one only adds iterations; wall times
-            # on a loaded machine are too noisy to rank these short runs).
-            good = [x for x in rows if math.isfinite(x["rel_error"]) and x["rel_error"] <= target * 0.1]
-            r = max(good, key=lambda x: float(list(x["combo"].values())[0])) if good else None
+            # discretisation's error, not GMRES's, sets it; of those runs the cheapest (a loose
+            # tolerance is not always cheaper: a noisy right-hand side makes RKF45 reject steps).
+            good = [x for x in rows if math.isfinite(x["rel_error"]) and x["rel_error"] <= target * 0.1
+                    and str(x.get("status", "")).startswith(("finished", "steady"))]
+            r = min(good, key=lambda x: x["wall_s"]) if good else None
             if r:
                 out.append(f"| gmres_lambda5 (GMRES error 10x below the accuracy) | {target:.1%} | "
                            f"{', '.join(f'{k} {v}' for k, v in r['combo'].items())} | {r['rel_error']:.2g} | "
@@ -219,7 +291,10 @@ def write(report, results, args, seconds):
            "reused; delete it first).", "",
            "Columns: QoI and its relative error against the reference; the knob's own change (the change of the QoI "
            "from the same line's run at the knob's tightest value: the part of the error that knob controls); drift "
-           "= largest |volume (3D) or area (2D) change| / initial; s / rhs = integration time per right-hand side "
+           "= largest |volume (3D) or area (2D) change| / initial; max distortion (3D) = the largest "
+           "`max_distortion` of the output rows (docs/stability.md: how far midside nodes slid along their edges, "
+           "which grows with a mesh-scale mode such as the wrinkles of a compressed membrane); s / rhs = "
+           "integration time per right-hand side "
            "(3D: membrane loads + boundary-integral velocity; 2D: the app's own figure); s / step = wall time of the "
            "run / accepted steps (setup and outputs included); peak MB = largest resident set of any process of the "
            "run; load = 1-minute load average when the run started.", ""]

@@ -29,7 +29,8 @@ public:
   const NodeDistribution2D& distribution() const override { return distribution_; }
 
   VelocitySolution2D nodeVelocities(const contour::Contour& contour, const ContourLoad2D& load,
-                                    const FlowConditions2D& flow, const std::vector<int>& fixedNodes) override
+                                    const FlowConditions2D& flow, const std::vector<int>& fixedNodes,
+                                    WarmStartHistory* history) override
   {
     core::require<core::InputError>(flow.capillaryNumber > 0.0 && flow.viscosityRatio > 0.0,
                                     "Flow: the capillary number and the viscosity ratio must be > 0, got ",
@@ -76,13 +77,27 @@ public:
         potentials_.doubleLayerAtNodes(density, DoubleLayerForm::Subtracted, rows);
       },
       coefficient, fixed));
+    // The start: the lambda = 1 velocity, or the warm start's combination of the last
+    // solutions (every rank forms the same guess from the same global vectors).
+    std::vector<double> globalRhs, guess;
+    if (history) {
+      globalRhs = distribution_.gather(rhs);
+      if (!history->empty() && history->length() != globalRhs.size()) {
+        *history = WarmStartHistory(history->depth());   // another contour: its solutions do not apply
+      }
+      guess = history->initialGuess(globalRhs);
+    }
     auto b = Teuchos::rcp(new MV(distribution_.map(), 1));
     auto x = Teuchos::rcp(new MV(distribution_.map(), 1));
     {
       auto bData = b->getDataNonConst(0);
       auto xData = x->getDataNonConst(0);
       std::copy(rhs.begin(), rhs.end(), bData.begin());
-      std::copy(rhs.begin(), rhs.end(), xData.begin()); // start from the lambda = 1 velocity
+      if (history) {
+        std::copy(guess.begin() + 2 * first, guess.begin() + 2 * (first + owned), xData.begin());
+      } else {
+        std::copy(rhs.begin(), rhs.end(), xData.begin());
+      }
     }
     const GmresResult result = solveWithGmres(A, b, x, solver_);
     core::require<core::NumericalError>(
@@ -97,6 +112,9 @@ public:
     solution.velocities = distribution_.gather(ownedVelocity);
     solution.iterations = result.iterations;
     solution.residual = result.residual;
+    if (history) {
+      history->add(std::move(globalRhs), solution.velocities);
+    }
     return solution;
   }
 

@@ -62,7 +62,8 @@ void declareDiscretisationParameters(Teuchos::ParameterList& discretisation)
 
 namespace {
 
-void declareSolverKeys(Teuchos::ParameterList& solver, double defaultTolerance, const std::string& toleranceDoc)
+void declareSolverKeys(Teuchos::ParameterList& solver, double defaultTolerance, const std::string& toleranceDoc,
+                       const std::string& warmStartDoc)
 {
   const SolverParameters defaults;
   core::declareReal(solver, "Tolerance", defaultTolerance,
@@ -73,13 +74,23 @@ void declareSolverKeys(Teuchos::ParameterList& solver, double defaultTolerance, 
                    "Krylov vectors GMRES keeps before it restarts (Belos 'Num Blocks').", 1, 1000);
   core::declareInt(solver, "Maximum iterations", defaults.maximumIterations,
                    "GMRES iterations before the solve is declared failed.", 1, 100000);
+  core::declareBool(solver, "Warm start", true,
+                    "Start each GMRES solve of a run from the combination of the last 6 solutions "
+                    "whose right-hand sides best reproduce the new one (least squares; "
+                    "operators::WarmStartHistory) instead of from the right-hand side. RKF45's "
+                    "stages are combinations of the same slopes, so the start is close: " + warmStartDoc +
+                    " The stopping test is relative to ||b||, so its meaning does not change. The "
+                    "checkpoint carries the history: a restarted run still repeats the uninterrupted "
+                    "one bit for bit.");
 }
 
 } // namespace
 
 void declareSolverParameters(Teuchos::ParameterList& solver)
 {
-  declareSolverKeys(solver, SolverParameters{}.tolerance, "");
+  declareSolverKeys(solver, SolverParameters{}.tolerance, "",
+                    "14.4 instead of 25.4 GMRES iterations per solve (256 points, a/b = 1, lambda = 10, "
+                    "tolerance 1e-10).");
 }
 
 void declareSurfaceSolverParameters(Teuchos::ParameterList& solver)
@@ -91,16 +102,8 @@ void declareSurfaceSolverParameters(Teuchos::ParameterList& solver)
     "the default RKF45 tolerance 1e-6 leaves 2.7e-8 there (level 2, lambda = 5, h/a = 1.6). "
     "1e-9 keeps the solve ~60 times below the time integration; with a looser "
     "'Time integration/Tolerance' loosen this by the same factor (1e-3 x it). Each factor "
-    "10 costs about 1.5 GMRES iterations, each ~0.7 of a single-layer evaluation.");
-  core::declareBool(solver, "Warm start", true,
-                    "Start each GMRES solve of a run from the combination of the last 6 solutions "
-                    "whose right-hand sides best reproduce the new one (least squares; "
-                    "operators::WarmStartHistory) instead of from the right-hand side. RKF45's "
-                    "stages are combinations of the same slopes, so the start is close: 4.1 instead "
-                    "of 12.6 double-layer applications per solve (level 3, lambda = 5). The stopping "
-                    "test is relative to ||b||, so its meaning does not change. The checkpoint "
-                    "carries the history: a restarted run still repeats the uninterrupted one bit "
-                    "for bit.");
+    "10 costs about 1.5 GMRES iterations, each ~0.7 of a single-layer evaluation.",
+    "4.1 instead of 12.6 double-layer applications per solve (level 3, lambda = 5).");
 }
 
 void declareOperatorParameters(Teuchos::ParameterList& deck)

@@ -36,6 +36,18 @@ CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& com
   referenceArea_ = contour::enclosedArea(reference);
   membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
   velocity_ = operators::makeInterfaceVelocity2D(flow.wall, comm, numberOfNodes(), discretisation, solver);
+  if (solver.warmStart && flow.conditions.viscosityRatio != 1.0) {
+    warmStart_.emplace();
+  }
+}
+
+void CapsuleModel2D::restoreGmresWarmStart(const std::vector<double>& rightHandSides,
+                                           const std::vector<double>& solutions)
+{
+  core::require<core::InputError>(warmStart_.has_value(), "A checkpoint holds a GMRES warm start but this run has "
+                                  "none (lambda = 1 or 'Solver/Warm start' = false).");
+  warmStart_ = operators::WarmStartHistory::fromFlattened(warmStart_->depth(), 2 * numberOfNodes(), rightHandSides,
+                                                          solutions);
 }
 
 std::vector<double> CapsuleModel2D::initialState() const
@@ -49,6 +61,9 @@ void CapsuleModel2D::tether(int offset)
                                    optionsFor(contour::Closure::Tethered, cell_.tetherEnds));
   membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
   tetherOffset_ = offset;
+  if (warmStart_) {   // relabelled nodes and a fixed row: the old solutions do not apply
+    warmStart_.emplace(warmStart_->depth());
+  }
 }
 
 contour::Contour CapsuleModel2D::contour(const std::vector<double>& state) const
@@ -73,7 +88,8 @@ operators::VelocitySolution2D CapsuleModel2D::velocities(const contour::Contour&
     return membrane.loadAt(point, segment, t);
   };
   const std::vector<int> fixed = tethered() ? std::vector<int>{0} : std::vector<int>{};
-  operators::VelocitySolution2D solution = velocity_->nodeVelocities(contour, load, flow_.conditions, fixed);
+  operators::VelocitySolution2D solution =
+    velocity_->nodeVelocities(contour, load, flow_.conditions, fixed, warmStart_ ? &*warmStart_ : nullptr);
   lastIterations_ = solution.iterations;
   return solution;
 }

@@ -283,6 +283,10 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     checkpoint.reals["run max contour length ratio"] = result.maxContourLengthRatio;
     checkpoint.reals["run max cell length"] = result.maxCellLength;
     checkpoint.reals["run max abs area drift"] = result.maxAbsAreaDrift;
+    if (const auto* warm = model_.gmresWarmStart(); warm && !warm->empty()) {   // the next solve's start
+      checkpoint.arrays["run gmres warm start rhs"] = warm->rightHandSides();
+      checkpoint.arrays["run gmres warm start solutions"] = warm->solutions();
+    }
     io::writeCheckpoint(directory->file("checkpoint.h5"), checkpoint);
   };
 
@@ -328,6 +332,12 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     result.tethered = progress.stage == Stage::Tethered;
     if (progress.stage == Stage::Tethered) {
       model_.tether(static_cast<int>(checkpoint.integers.at("run tether offset")));
+    }
+    // After tether(), which drops the history: the next solve starts where it would have.
+    const auto warmRhs = checkpoint.arrays.find("run gmres warm start rhs");
+    const auto warmSolutions = checkpoint.arrays.find("run gmres warm start solutions");
+    if (warmRhs != checkpoint.arrays.end() && warmSolutions != checkpoint.arrays.end()) {
+      model_.restoreGmresWarmStart(warmRhs->second, warmSolutions->second);
     }
     if (writing) {
       const std::string file = progress.stage == Stage::Preparation ? "preparation.csv" : "metrics.csv";

@@ -2,6 +2,8 @@
 // deck parameters, the kernel registry, the surfaces and the Tpetra operator.
 #include "OperatorTesting.hpp"
 
+#include <algorithm>
+
 #include <capsula/core/Error.hpp>
 #include <capsula/greens/FreeSpace3D.hpp>
 #include <capsula/greens/Wall3D.hpp>
@@ -208,6 +210,20 @@ void expectContractionsMatchTensors()
       EXPECT_NEAR(single[j], expectG[j], 1e-14 * scaleG);
       EXPECT_NEAR(dbl[j], expectT[j], 1e-14 * scaleT);
     }
+    // The double-layer matrix T_ijk a_k of the special rules, entry by entry (a wrong sign
+    // or index in any one term moves an entry by O(its size)).
+    double M[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    Contracted::addDoubleLayerMatrix(x, x0, a, M);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        double expect = 0.0, scale = 0.0;
+        for (int l = 0; l < 3; ++l) {
+          expect += T[i][j][l] * a[l];
+          scale += std::abs(T[i][j][l] * a[l]);
+        }
+        EXPECT_NEAR(M[3 * i + j], expect, 1e-14 * std::max(scale, scaleT));
+      }
+    }
   }
 }
 
@@ -230,9 +246,14 @@ TEST(ContractedKernels, WallTermsVanishExactlyForAPoleOnTheWall)
   double single[3] = {0.0, 0.0, 0.0}, dbl[3] = {0.0, 0.0, 0.0};
   Wall3DKernel::addSingleLayerTerm(x, x0, f, single);
   Wall3DKernel::addDoubleLayerTerm(x, x0, f, a, dbl);
+  double M[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  Wall3DKernel::addDoubleLayerMatrix(x, x0, a, M);
   for (int j = 0; j < 3; ++j) {
     EXPECT_EQ(single[j], 0.0);
     EXPECT_EQ(dbl[j], 0.0);
+  }
+  for (const double m : M) {
+    EXPECT_EQ(m, 0.0);
   }
   EXPECT_TRUE(KernelTraits<Wall3DKernel>::vanishesAt(x0));
 }
@@ -246,6 +267,12 @@ TEST(ContractedKernels, GenericContractionIsUsedWithoutHooks)
   addSingleLayerTerm<Wall3DKernel>(x, x0, f, fast);
   for (int j = 0; j < 3; ++j) {
     EXPECT_NEAR(generic[j], fast[j], 1e-14);
+  }
+  double genericMatrix[9] = {}, fastMatrix[9] = {};
+  addDoubleLayerMatrix<greens::Wall3D>(x, x0, f, genericMatrix);
+  addDoubleLayerMatrix<Wall3DKernel>(x, x0, f, fastMatrix);
+  for (int k = 0; k < 9; ++k) {
+    EXPECT_NEAR(genericMatrix[k], fastMatrix[k], 1e-13);
   }
 }
 
@@ -269,13 +296,19 @@ TEST(OperatorParameters, DeclaredDefaultsReadBack)
   EXPECT_TRUE(s.warmStart);
   EXPECT_EQ(s.restart, sd.restart);
   EXPECT_EQ(s.maximumIterations, sd.maximumIterations);
-  // The 2D contour's list keeps the struct defaults and has no warm start.
+  // The 2D contour's list keeps the struct's tolerance and has the warm start on too.
   Teuchos::ParameterList contour;
   declareSolverParameters(contour);
-  EXPECT_FALSE(contour.isParameter("Warm start"));
+  EXPECT_TRUE(contour.isParameter("Warm start"));
   const SolverParameters c = readSolverParameters(contour);
   EXPECT_EQ(c.tolerance, sd.tolerance);
-  EXPECT_FALSE(c.warmStart);
+  EXPECT_TRUE(c.warmStart);
+  // A list without the key (a caller that never declared it) reads as no warm start.
+  Teuchos::ParameterList bare;
+  bare.set("Tolerance", 1e-8);
+  bare.set("Restart", 30);
+  bare.set("Maximum iterations", 100);
+  EXPECT_FALSE(readSolverParameters(bare).warmStart);
 }
 
 TEST(OperatorParameters, RuleWithoutTriangleRuleIsRejectedByName)

@@ -155,7 +155,8 @@ TEST(TetherRun2D, RestartReproducesTheUninterruptedRun)
   const TetherRunResult2D resumed = rest.run(first, first);
 
   // Bit for bit: the same steps from the same checkpointed state (lambda = 3: GMRES starts
-  // from the explicit velocity, a pure function of the state).
+  // from the warm start's combination of the last solutions, which the checkpoint carries;
+  // without it the resumed run differs in the last digits).
   EXPECT_EQ(resumed.final.tetherForce, expected.final.tetherForce);
   EXPECT_EQ(resumed.final.D12, expected.final.D12);
   EXPECT_EQ(resumed.steps, expected.steps);

@@ -1,11 +1,12 @@
 #pragma once
 // The built-in Green's functions with the contracted inner-loop terms of KernelTraits.hpp.
 //
-// The integral sums need G_ij f_i and T_ijk v_i a_k, not the tensors: contracting the
-// formulas by hand costs ~6x fewer operations than building G[3][3] and T[3][3][3] and
-// contracting (the compiler may not reorder floating-point sums to find this itself).
+// The integral sums need G_ij f_i and T_ijk v_i a_k, and the special rules of the double
+// layer need the matrix T_ijk a_k, not the tensors: contracting the formulas by hand costs
+// ~6x fewer operations than building G[3][3] and T[3][3][3] and contracting (the compiler
+// may not reorder floating-point sums to find this itself).
 // These policies ARE greens::FreeSpace3D and greens::Wall3D (they inherit stokeslet,
-// stresslet, pressure and name, used everywhere else) plus the two contractions written
+// stresslet, pressure and name, used everywhere else) plus the three contractions written
 // from the same formulas (thesis eqs 3.11-3.12, App. B.2 as in greens/Wall3D.hpp). The
 // unit tests pin each contraction to the greens tensors at random points to round-off.
 // If greens grows these functions, these adapters can go.
@@ -41,6 +42,20 @@ struct FreeSpace3DKernel : greens::FreeSpace3D {
                          * (d[0] * a[0] + d[1] * a[1] + d[2] * a[2]) / (r2 * r2 * std::sqrt(r2));
     for (int j = 0; j < 3; ++j) {
       u[j] += scale * d[j];
+    }
+  }
+
+  /// M[3 i + j] += T_ijk a_k = -6 xh_i xh_j (xh . a) / r^5: the double-layer matrix of one
+  /// source point, for the special rules (one 3x3 block instead of the 27 entries of T).
+  static void addDoubleLayerMatrix(const double x[3], const double x0[3], const double a[3], double M[9])
+  {
+    const double d[3] = {x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]};
+    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    const double scale = -6.0 * (d[0] * a[0] + d[1] * a[1] + d[2] * a[2]) / (r2 * r2 * std::sqrt(r2));
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        M[3 * i + j] += scale * d[i] * d[j];
+      }
     }
   }
 };
@@ -105,6 +120,38 @@ struct Wall3DKernel : greens::Wall3D {
       const double dipole = s6 * (-(va * X[j] + v[j] * Xa + a[j] * Xv) * invR5 + 5.0 * Xv * Xa * X[j] * invR7);
       const double doublet = X[n] * dipole + s6 * (va * X[j] * X[n] - (j == n ? Xv * Xa : 0.0)) * invR5;
       u[j] += free * d[j] + image * X[j] + 2.0 * h * h * dipole - 2.0 * h * doublet;
+    }
+  }
+
+  /// M[3 i + j] += T^W_ijk a_k: the derivative of addDoubleLayerTerm with respect to v_i,
+  ///   free  -6 xh_i xh_j (xh.a) / r^5,  image  6 X_i X_j (X.a) / R^5,
+  ///   D_ij  = s_j 6 (-(a_i X_j + delta_ij (X.a) + a_j X_i) / R^5 + 5 X_i X_j (X.a) / R^7),
+  ///   SD_ij = X_n D_ij + s_j 6 (a_i X_j X_n - delta_jn X_i (X.a)) / R^5.
+  static void addDoubleLayerMatrix(const double x[3], const double x0[3], const double a[3], double M[9])
+  {
+    constexpr int n = greens::wallNormalAxis;
+    const double h = x0[n];
+    const double d[3] = {x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]};
+    double X[3] = {d[0], d[1], d[2]};
+    X[n] = x[n] + x0[n];
+    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    const double R2 = X[0] * X[0] + X[1] * X[1] + X[2] * X[2];
+    const double invr5 = 1.0 / (r2 * r2 * std::sqrt(r2));
+    const double invR5 = 1.0 / (R2 * R2 * std::sqrt(R2));
+    const double invR7 = invR5 / R2;
+    const double da = d[0] * a[0] + d[1] * a[1] + d[2] * a[2];
+    const double Xa = X[0] * a[0] + X[1] * a[1] + X[2] * a[2];
+    // Same association for the free and image stresslets: exact cancellation at h = 0.
+    const double free = -6.0 * da * invr5;
+    const double image = 6.0 * Xa * invR5;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        const double s6 = 6.0 * greens::imageSign(j);
+        const double delta = i == j ? Xa : 0.0;
+        const double dipole = s6 * (-(a[i] * X[j] + delta + a[j] * X[i]) * invR5 + 5.0 * X[i] * Xa * X[j] * invR7);
+        const double doublet = X[n] * dipole + s6 * (a[i] * X[j] * X[n] - (j == n ? X[i] * Xa : 0.0)) * invR5;
+        M[3 * i + j] += free * d[i] * d[j] + image * X[i] * X[j] + 2.0 * h * h * dipole - 2.0 * h * doublet;
+      }
     }
   }
 };

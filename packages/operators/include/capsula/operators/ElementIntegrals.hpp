@@ -166,20 +166,11 @@ struct DoubleLayerIntegrand {
 
   void evaluate(const ElementSample& s, Value& value) const
   {
-    double T[3][3][3];
-    Kernel::stresslet(s.x, x0, T);
-    double Tn[3][3];
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) {
-        Tn[i][j] = T[i][j][0] * s.weightedNormal[0] + T[i][j][1] * s.weightedNormal[1]
-                   + T[i][j][2] * s.weightedNormal[2];
-      }
-    }
+    double Tn[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    addDoubleLayerMatrix<Kernel>(s.x, x0, s.weightedNormal, Tn);
     for (int a = 0; a < 6; ++a) {
-      for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-          value[9 * a + 3 * i + j] = s.phi[a] * Tn[i][j];
-        }
+      for (int k = 0; k < 9; ++k) {
+        value[9 * a + k] = s.phi[a] * Tn[k];
       }
     }
   }

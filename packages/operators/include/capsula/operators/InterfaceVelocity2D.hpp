@@ -17,6 +17,7 @@
 #include <capsula/operators/DoubleLayerForm.hpp>
 #include <capsula/operators/NodeDistribution2D.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
+#include <capsula/operators/WarmStartHistory.hpp>
 
 #include <capsula/contour/Contour.hpp>
 
@@ -70,10 +71,13 @@ public:
   virtual const NodeDistribution2D& distribution() const = 0;
 
   /// Node velocities of `contour` under `load` (collective). Throws core::InputError if a
-  /// node lies below the wall, core::NumericalError if GMRES does not converge.
+  /// node lies below the wall, core::NumericalError if GMRES does not converge. With a
+  /// `history` (lambda != 1), GMRES starts from its least-squares guess
+  /// (WarmStartHistory.hpp) instead of the lambda = 1 velocity, and the solved pair is
+  /// added to it.
   virtual VelocitySolution2D nodeVelocities(const contour::Contour& contour, const ContourLoad2D& load,
-                                            const FlowConditions2D& flow,
-                                            const std::vector<int>& fixedNodes) = 0;
+                                            const FlowConditions2D& flow, const std::vector<int>& fixedNodes,
+                                            WarmStartHistory* history = nullptr) = 0;
 
   /// The raw integrals at every node (2 per node, on every rank; collective), for checks.
   virtual std::vector<double> singleLayer(const contour::Contour& contour, const ContourLoad2D& density) = 0;

@@ -9,7 +9,11 @@
 //                                       const double f[3], double u[3]);
 //        static void addDoubleLayerTerm(const double x[3], const double x0[3],
 //                                       const double v[3], const double a[3], double u[3]);
-//    and they are used; otherwise the full tensors are contracted here.
+//    and they are used; otherwise the full tensors are contracted here. Likewise the
+//    double-layer matrix of one source point, M_ij += T_ijk(x, x0) a_k, for the special
+//    rules (ElementIntegrals.hpp):
+//        static void addDoubleLayerMatrix(const double x[3], const double x0[3],
+//                                         const double a[3], double M[9]);
 //  - images: points outside the fluid where the kernel is singular too (Blake's image
 //    of the pole below the wall); the near-singular test measures from them as well.
 //  - the fluid domain: where a pole (a target) may lie, and where the kernel vanishes
@@ -40,6 +44,14 @@ struct HasDoubleLayerTerm<Kernel, std::void_t<decltype(Kernel::addDoubleLayerTer
                                     std::declval<const double*>(), std::declval<const double*>(),
                                     std::declval<const double*>(), std::declval<const double*>(),
                                     std::declval<double*>()))>>
+  : std::true_type {};
+
+template <class Kernel, class = void>
+struct HasDoubleLayerMatrix : std::false_type {};
+template <class Kernel>
+struct HasDoubleLayerMatrix<Kernel, std::void_t<decltype(Kernel::addDoubleLayerMatrix(
+                                      std::declval<const double*>(), std::declval<const double*>(),
+                                      std::declval<const double*>(), std::declval<double*>()))>>
   : std::true_type {};
 
 } // namespace detail
@@ -75,6 +87,23 @@ inline void addDoubleLayerTerm(const double x[3], const double x0[3], const doub
         sum += v[i] * (T[i][j][0] * a[0] + T[i][j][1] * a[1] + T[i][j][2] * a[2]);
       }
       u[j] += sum;
+    }
+  }
+}
+
+/// M[3 i + j] += T_ijk(x, x0) a_k, with a = n dS the weighted normal at x.
+template <class Kernel>
+inline void addDoubleLayerMatrix(const double x[3], const double x0[3], const double a[3], double M[9])
+{
+  if constexpr (detail::HasDoubleLayerMatrix<Kernel>::value) {
+    Kernel::addDoubleLayerMatrix(x, x0, a, M);
+  } else {
+    double T[3][3][3];
+    Kernel::stresslet(x, x0, T);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        M[3 * i + j] += T[i][j][0] * a[0] + T[i][j][1] * a[1] + T[i][j][2] * a[2];
+      }
     }
   }
 }

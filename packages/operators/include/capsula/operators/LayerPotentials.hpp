@@ -19,7 +19,8 @@
 // as usual.
 // The single-layer corrections are computed with the load at each evaluation; the
 // double-layer ones are 3x3 blocks on nodes, built once per geometry and reused by every
-// application of the GMRES solve.
+// application of the GMRES solve. Which elements are near each node target is found once
+// per geometry and shared by both layers.
 //
 // Double layer on a surface (thesis eq 3.44 with the ERRATA sign): with n outward and
 // T_ijk = -6 xh_i xh_j xh_k / r^5, PV int_S T_ijk n_k dS = -4 pi delta_ij at a point of a
@@ -125,7 +126,10 @@ private:
   template <class Integrand>
   typename Integrand::Value singularCorrection(int m, int localNode, const Integrand& integrand,
                                                ParametricRule& rule) const;
-  void correctDoubleLayer(int target, TargetCorrections& out, ParametricRule& rule, std::vector<int>& near) const;
+  void correctDoubleLayer(int target, TargetCorrections& out, ParametricRule& rule) const;
+  // The near elements of every node target for the current geometry (findNearElements
+  // with the target's neighbourhood), found on first use after update().
+  void findNodeNearElements();
   void buildSingleLayerSources(const LoadDensity& load);
   void buildDoubleLayerSources(const double* density);
   SingleLayerSources singleLayerSources() const;
@@ -144,6 +148,8 @@ private:
 
   bool hasDoubleCorrections_ = false;
   std::vector<TargetCorrections> corrections_;
+  bool hasNodeNear_ = false;
+  std::vector<std::vector<int>> nodeNear_; // per node target
   long long nearCount_ = 0;
 
   // Per-evaluation source arrays (kept to avoid reallocation).
@@ -273,6 +279,7 @@ void LayerPotentials<Kernel>::update(const CellSurfaces& surfaces)
   }
   hasDoubleCorrections_ = false;
   corrections_.clear();
+  hasNodeNear_ = false;
 }
 
 template <class Kernel>
@@ -403,8 +410,24 @@ typename Integrand::Value LayerPotentials<Kernel>::singularCorrection(int m, int
 // singular and near-singular element, D_a = special - regular of int phi_a T n dS, and
 // for the own cell the subtraction's block -sum_a D_a on u(x0).
 template <class Kernel>
-void LayerPotentials<Kernel>::correctDoubleLayer(int t, TargetCorrections& out, ParametricRule& rule,
-                                                 std::vector<int>& near) const
+void LayerPotentials<Kernel>::findNodeNearElements()
+{
+  if (hasNodeNear_) {
+    return;
+  }
+  nodeNear_.resize(static_cast<std::size_t>(numTargets_));
+  const double* positions = quadrature_.nodePositions().data();
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(dynamic, 16)
+#endif
+  for (int t = 0; t < numTargets_; ++t) {
+    findNearElements(positions + 3 * (firstTarget_ + t), &neighbourhoods_[t], nodeNear_[t]);
+  }
+  hasNodeNear_ = true;
+}
+
+template <class Kernel>
+void LayerPotentials<Kernel>::correctDoubleLayer(int t, TargetCorrections& out, ParametricRule& rule) const
 {
   const double* x0 = quadrature_.nodePositions().data() + 3 * (firstTarget_ + t);
   const DoubleLayerIntegrand<Kernel> integrand{x0};
@@ -429,8 +452,7 @@ void LayerPotentials<Kernel>::correctDoubleLayer(int t, TargetCorrections& out, 
   for (const auto& [m, localNode] : neighbourhoods_[t].incident) {
     record(m, singularCorrection(m, localNode, integrand, rule));
   }
-  findNearElements(x0, &neighbourhoods_[t], near);
-  for (const int m : near) {
+  for (const int m : nodeNear_[t]) {
     record(m, nearCorrection(m, integrand));
   }
 }
@@ -441,18 +463,18 @@ void LayerPotentials<Kernel>::prepareDoubleLayerCorrections()
   if (hasDoubleCorrections_) {
     return;
   }
+  findNodeNearElements();
   corrections_.assign(numTargets_, TargetCorrections{});
 #if defined(_OPENMP)
 #pragma omp parallel
 #endif
   {
     ParametricRule rule;
-    std::vector<int> near;
 #if defined(_OPENMP)
 #pragma omp for schedule(dynamic, 16)
 #endif
     for (int t = 0; t < numTargets_; ++t) {
-      correctDoubleLayer(t, corrections_[t], rule, near);
+      correctDoubleLayer(t, corrections_[t], rule);
     }
   }
   hasDoubleCorrections_ = true;
@@ -531,6 +553,7 @@ template <class Kernel>
 void LayerPotentials<Kernel>::singleLayerAtNodes(const LoadDensity& load, double* result)
 {
   buildSingleLayerSources(load);
+  findNodeNearElements();
   const SingleLayerSources sources = singleLayerSources();
   const double* positions = quadrature_.nodePositions().data();
   const auto blocks = detail::nodeBlocks(cells_, firstTarget_, numTargets_);
@@ -551,7 +574,6 @@ void LayerPotentials<Kernel>::singleLayerAtNodes(const LoadDensity& load, double
     block.pad();
     addSingleLayerSums<Kernel>(block, sources, 0, numPoints);
     ParametricRule rule;
-    std::vector<int> near;
     for (int k = 0; k < block.size; ++k) {
       const int t = blocks[b].first + k;
       const double* x0 = positions + 3 * (firstTarget_ + t);
@@ -564,7 +586,7 @@ void LayerPotentials<Kernel>::singleLayerAtNodes(const LoadDensity& load, double
       for (const auto& [m, localNode] : neighbourhoods_[t].incident) {
         add(singularCorrection(m, localNode, LoadedSingleLayerIntegrand<Kernel>{x0, load.element(m)}, rule));
       }
-      findNearElements(x0, &neighbourhoods_[t], near);
+      const std::vector<int>& near = nodeNear_[t];
       nearCount += static_cast<long long>(near.size());
       for (const int m : near) {
         add(nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{x0, load.element(m)}));

@@ -3,7 +3,10 @@
 // A.48): contour (App. A.3) -> Hookean membrane load with E = 1 (App. A.5; loads in units
 // of E/L) -> node velocities from the boundary-integral equation (eq A.35). Free cells use
 // periodic splines; after tethering, tethered splines with node 0 at the tether, whose
-// velocity is held at zero.
+// velocity is held at zero. With lambda != 1 and 'Solver/Warm start', each GMRES solve starts
+// from the last solutions (operators/WarmStartHistory.hpp); the history is part of the run's
+// state (gmresWarmStart(), restored from checkpoints) and is dropped at tethering, when the
+// nodes are relabelled.
 #include "capsula/scene2d/CellContour2D.hpp"
 #include "capsula/scene2d/FlowModel2D.hpp"
 
@@ -67,6 +70,12 @@ public:
   /// GMRES iterations of the last velocity solve (0 when lambda = 1).
   int lastIterations() const { return lastIterations_; }
 
+  /// The warm start of the next GMRES solve (null without one: lambda = 1 or 'Solver/Warm
+  /// start' = false), and its restoration from a checkpoint (WarmStartHistory::
+  /// rightHandSides() and solutions()).
+  const operators::WarmStartHistory* gmresWarmStart() const { return warmStart_ ? &*warmStart_ : nullptr; }
+  void restoreGmresWarmStart(const std::vector<double>& rightHandSides, const std::vector<double>& solutions);
+
 private:
   CellSettings2D cell_;
   FlowSettings2D flow_;
@@ -77,6 +86,7 @@ private:
   std::optional<int> tetherOffset_;
   std::unique_ptr<elasticity::ElasticMembrane2D> membrane_;
   std::unique_ptr<operators::InterfaceVelocity2D> velocity_;
+  std::optional<operators::WarmStartHistory> warmStart_;
   int lastIterations_ = 0;
 };
 
