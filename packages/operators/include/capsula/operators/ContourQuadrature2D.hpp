@@ -51,6 +51,8 @@ public:
   ContourField2D(const contour::Contour& contour, const double* nodalValues);
 
   Eigen::Vector2d at(int segment, double t) const;
+  /// The spline of component c (0: x, 1: y) in the contour's parameter.
+  const contour::CubicSpline& component(int c) const { return c == 0 ? x_ : y_; }
 
 private:
   std::vector<double> knots_;

@@ -41,6 +41,7 @@
 #include <capsula/operators/ContourQuadrature2D.hpp>
 #include <capsula/operators/DoubleLayerForm.hpp>
 #include <capsula/operators/RegularSums2D.hpp>
+#include <capsula/operators/SplineDoubleLayer2D.hpp>
 
 #include <capsula/contour/Contour.hpp>
 #include <capsula/core/Error.hpp>
@@ -122,6 +123,16 @@ struct RegularSums2DOf<greens::Wall2D> {
   {
     wallStokesletPairs2D(x, y, fx, fy, x0, y0, count, ux, uy);
   }
+  static void doubleLayerWeight(double x, double y, double a0, double a1, double x0, double y0, double W[4])
+  {
+    wallDoubleLayerWeight2D(x, y, a0, a1, x0, y0, W);
+  }
+  static void addDoubleLayerCoefficients(const double* px, const double* py, const double* ax, const double* ay,
+                                         const double* basis, int perSegment, int segments, const double* tx,
+                                         const double* ty, const double* mask, SplineDoubleLayer2D& layer)
+  {
+    addWallDoubleLayerCoefficients2D(px, py, ax, ay, basis, perSegment, segments, tx, ty, mask, layer);
+  }
 };
 
 template <>
@@ -136,6 +147,16 @@ struct RegularSums2DOf<greens::FreeSpace2D> {
                     const double* y0, int count, double* ux, double* uy)
   {
     freeSpaceStokesletPairs2D(x, y, fx, fy, x0, y0, count, ux, uy);
+  }
+  static void doubleLayerWeight(double x, double y, double a0, double a1, double x0, double y0, double W[4])
+  {
+    freeSpaceDoubleLayerWeight2D(x, y, a0, a1, x0, y0, W);
+  }
+  static void addDoubleLayerCoefficients(const double* px, const double* py, const double* ax, const double* ay,
+                                         const double* basis, int perSegment, int segments, const double* tx,
+                                         const double* ty, const double* mask, SplineDoubleLayer2D& layer)
+  {
+    addFreeSpaceDoubleLayerCoefficients2D(px, py, ax, ay, basis, perSegment, segments, tx, ty, mask, layer);
   }
 };
 
@@ -181,8 +202,9 @@ public:
   void singleLayerAtNodesReference(const Density& density, double* result) const;
 
   /// result[2 t + j] = PV int u_i T_ijk(x, x_t) n_k dl at the target nodes, for u given at
-  /// every node (2 per node). The point weights are built on the first call after update()
-  /// and reused (the GMRES iterations apply this repeatedly on one geometry).
+  /// every node (2 per node). The map from the density's spline data to these values
+  /// (SplineDoubleLayer2D) is built on the first call after update() and reused (the GMRES
+  /// iterations apply this repeatedly on one geometry).
   void doubleLayerAtNodes(const double* nodalDensity, DoubleLayerForm form, double* result);
 
   /// The same at n points off the contour (2 per point) and for a density at any point.
@@ -195,11 +217,6 @@ public:
   long long subdividedSegments() const { return subdivided_; }
 
 private:
-  struct Extra {
-    int segment;
-    double t;
-    double W[4];
-  };
   /// A piece's ends, middle and (near-singular distance x its length)^2, for one geometry;
   /// its Gauss points (x, y, dl, f_x dl, f_y dl) in pieceGauss_ once a single layer uses it.
   struct CachedPiece {
@@ -278,8 +295,7 @@ private:
   mutable unsigned densityCall_ = 0;
 
   bool hasDoubleWeights_ = false;
-  std::vector<double> weights_;            // [(t * numPoints + p) * 4 + 2 i + j]
-  std::vector<std::vector<Extra>> extras_; // per target: subdivided pieces' points
+  SplineDoubleLayer2D doubleLayer_;
   mutable long long subdivided_ = 0;
 
   Teuchos::RCP<Teuchos::Time> geometryTimer_;
@@ -302,7 +318,7 @@ LayerPotentials2D<Kernel>::LayerPotentials2D(ContourDiscretisation2D parameters)
       loadTimer_(core::timer("2D single layer: load at the Gauss points")),
       regularTimer_(core::timer("2D single layer: regular sums")),
       specialTimer_(core::timer("2D single layer: singular and near-singular pairs")),
-      doubleWeightsTimer_(core::timer("2D double layer: point weights")),
+      doubleWeightsTimer_(core::timer("2D double layer: spline coefficients")),
       doubleApplyTimer_(core::timer("2D double layer: apply"))
 {
   validate(parameters_);
@@ -351,8 +367,6 @@ void LayerPotentials2D<Kernel>::update(const contour::Contour& contour, int firs
   firstTarget_ = firstTarget;
   numTargets_ = numTargets;
   hasDoubleWeights_ = false;
-  weights_.clear();
-  extras_.clear();
 
   // The whole segments: ends, middle and reach (the piece test of isNear()).
   pieceCache_.resize(static_cast<std::size_t>(n));
@@ -815,36 +829,40 @@ void LayerPotentials2D<Kernel>::buildDoubleLayerWeights()
   const int n = c.numberOfNodes();
   const int numPoints = quad.numberOfPoints();
   const int perSegment = quad.pointsPerSegment();
-  const double* xq = quad.positions().data();
-  const double* nq = quad.normals().data();
-  const double* wq = quad.weights().data();
+  const std::vector<double>& s = c.parameters();
+  const auto span = [&s](int k) { return s[static_cast<std::size_t>(k) + 1] - s[static_cast<std::size_t>(k)]; };
+  doubleLayer_.reset(n, c.closure() == contour::Closure::Periodic, paddedTargets_);
 
-  weights_.assign(static_cast<std::size_t>(numTargets_) * numPoints * 4, 0.0);
-  extras_.assign(static_cast<std::size_t>(numTargets_), {});
-  std::vector<SegmentPiece2D> split;
+  // The regular pairs (mask 1) at the regular points, vectorised over the targets.
+  std::vector<double> ax(static_cast<std::size_t>(numPoints)), ay(ax.size()), basis(4 * ax.size());
+  for (int p = 0; p < numPoints; ++p) {
+    ax[p] = quad.normals()[2 * p] * quad.weights()[p];
+    ay[p] = quad.normals()[2 * p + 1] * quad.weights()[p];
+    splineBasis(quad.parameterOf(p), span(quad.segmentOf(p)), &basis[4 * static_cast<std::size_t>(p)]);
+  }
+  RegularSums2DOf<Kernel>::addDoubleLayerCoefficients(pointX_.data(), pointY_.data(), ax.data(), ay.data(),
+                                                      basis.data(), perSegment, n, targetX_.data(),
+                                                      targetY_.data(), regularMask_.data(), doubleLayer_);
+
+  // The pairs treated apart (mask 0): the segments ending at the target (the kernel is
+  // bounded there, so they take the plain rule unless an image is near) and the bisected
+  // ones, with the pieces of pieces().
   long long subdivided = 0;
   for (int t = 0; t < numTargets_; ++t) {
     const int m = firstTarget_ + t;
     const double x0[2] = {nodes_[2 * m], nodes_[2 * m + 1]};
-    double* row = &weights_[static_cast<std::size_t>(t) * numPoints * 4];
-    for (int k = 0; k < n; ++k) {
-      pieces(k, x0, k == m, (k + 1) % n == m, split);
-      if (split.size() == 1) {
-        for (int p = k * perSegment; p < (k + 1) * perSegment; ++p) {
-          const double a[2] = {nq[2 * p] * wq[p], nq[2 * p + 1] * wq[p]};
-          doubleLayerWeight2D<Kernel>(xq + 2 * p, x0, a, row + 4 * p);
-        }
-        continue;
-      }
-      ++subdivided;
-      for (const SegmentPiece2D& piece : split) {
+    for (int i = specialStart_[t]; i < specialStart_[t + 1]; ++i) {
+      const int k = specialSegments_[static_cast<std::size_t>(i)];
+      pieces(k, x0, k == m, (k + 1) % n == m, split_);
+      subdivided += split_.size() > 1 ? 1 : 0;
+      for (const SegmentPiece2D& piece : split_) {
         detail2d::visitGaussPiece(c, gauss_, k, piece.ta, piece.tb,
                                   [&](const contour::ContourPoint& point, double tp, double dl) {
-                                    Extra extra{k, tp, {}};
-                                    const double x[2] = {point.position.x(), point.position.y()};
-                                    const double a[2] = {point.normal.x() * dl, point.normal.y() * dl};
-                                    doubleLayerWeight2D<Kernel>(x, x0, a, extra.W);
-                                    extras_[static_cast<std::size_t>(t)].push_back(extra);
+                                    double W[4];
+                                    RegularSums2DOf<Kernel>::doubleLayerWeight(
+                                      point.position.x(), point.position.y(), point.normal.x() * dl,
+                                      point.normal.y() * dl, x0[0], x0[1], W);
+                                    doubleLayer_.addPoint(t, k, tp, span(k), W);
                                   });
       }
     }
@@ -862,41 +880,8 @@ void LayerPotentials2D<Kernel>::doubleLayerAtNodes(const double* nodalDensity, D
     buildDoubleLayerWeights();
   }
   Teuchos::TimeMonitor guard(*doubleApplyTimer_);
-  const ContourQuadrature2D& quad = *quadrature_;
-  const int numPoints = quad.numberOfPoints();
-  const ContourField2D field(*contour_, nodalDensity);
-  std::vector<double> u(2 * static_cast<std::size_t>(numPoints));
-  for (int p = 0; p < numPoints; ++p) {
-    const Eigen::Vector2d v = field.at(quad.segmentOf(p), quad.parameterOf(p));
-    u[2 * p] = v.x();
-    u[2 * p + 1] = v.y();
-  }
-  const bool subtract = form == DoubleLayerForm::Subtracted;
-  for (int t = 0; t < numTargets_; ++t) {
-    const int m = firstTarget_ + t;
-    const double u0[2] = {subtract ? nodalDensity[2 * m] : 0.0, subtract ? nodalDensity[2 * m + 1] : 0.0};
-    const double* row = &weights_[static_cast<std::size_t>(t) * numPoints * 4];
-    double sum[2] = {0.0, 0.0};
-    for (int p = 0; p < numPoints; ++p) {
-      const double v0 = u[2 * p] - u0[0];
-      const double v1 = u[2 * p + 1] - u0[1];
-      sum[0] += v0 * row[4 * p] + v1 * row[4 * p + 2];
-      sum[1] += v0 * row[4 * p + 1] + v1 * row[4 * p + 3];
-    }
-    for (const Extra& extra : extras_[static_cast<std::size_t>(t)]) {
-      const Eigen::Vector2d v = field.at(extra.segment, extra.t);
-      const double v0 = v.x() - u0[0];
-      const double v1 = v.y() - u0[1];
-      sum[0] += v0 * extra.W[0] + v1 * extra.W[2];
-      sum[1] += v0 * extra.W[1] + v1 * extra.W[3];
-    }
-    if (subtract) {
-      sum[0] -= 2.0 * M_PI * u0[0];
-      sum[1] -= 2.0 * M_PI * u0[1];
-    }
-    result[2 * t] = sum[0];
-    result[2 * t + 1] = sum[1];
-  }
+  doubleLayer_.apply(*contour_, nodalDensity, form == DoubleLayerForm::Subtracted, firstTarget_, numTargets_,
+                     result);
 }
 
 template <class Kernel>

@@ -13,7 +13,9 @@
 // mask 0 and adds nothing here (LayerPotentials2D adds it); every other pair has mask 1.
 //
 // The pair formulas are written out for u_j += G_ij f_i (pinned against
-// greens::stokesletWall2D / stokesletFreeSpace2D by tests/unit/operators, RegularSums2D).
+// greens::stokesletWall2D / stokesletFreeSpace2D by tests/unit/operators, RegularSums2D),
+// and for the double-layer weights W_ij = T_ijk a_k of SplineDoubleLayer2D (pinned against
+// greens::stressletWall2D / stressletFreeSpace2D).
 #include <capsula/operators/RegularSums.hpp> // CAPSULA_KERNEL_CLONES
 #include <capsula/operators/VectorisableLog.hpp>
 
@@ -63,6 +65,50 @@ inline void addWallStokesletPair2D(double x, double y, double fx, double fy, dou
   ux += logRoverR * fx + xf * d0 - XfR2 * d0 - twoHy * (fx * invR2 - twoXfR4 * d0) + twoH * fy * d0 * invR2;
   uy += logRoverR * fy + xf * d1 - XfR2 * X1 + twoHy * (fy * invR2 - twoXfR4 * X1)
         + twoH * (Xf - fy * X1) * invR2;
+}
+
+/// W_ij = T^FS_ijk(x, x0) a_k = -4 xh_i xh_j (xh . a) / r^4 (eq A.9), [2 i + j]: the double-layer
+/// weight of one point with a = n dl (SplineDoubleLayer2D.hpp).
+inline void freeSpaceDoubleLayerWeight2D(double x, double y, double a0, double a1, double x0, double y0,
+                                         double W[4])
+{
+  const double d0 = x - x0, d1 = y - y0;
+  const double r2 = d0 * d0 + d1 * d1;
+  const double scale = -4.0 * (d0 * a0 + d1 * a1) / (r2 * r2);
+  W[0] = scale * d0 * d0;
+  W[1] = scale * d0 * d1;
+  W[2] = W[1];
+  W[3] = scale * d1 * d1;
+}
+
+/// W_ij = T^W_ijk(x, x0) a_k above the wall y = 0 (eqs B.5-B.6, greens/Wall2D.hpp), [2 i + j]:
+///   T^FS(xh) a - T^FS(X) a + 2 h^2 D - 2 h (X_y D + 4 s_j (a_i X_j X_y - delta_jy X_i (X.a)) / R^4),
+///   D_ij = 4 s_j (-(a_i X_j + delta_ij (X.a) + a_j X_i) / R^4 + 4 X_i X_j (X.a) / R^6),
+/// s_x = 1, s_y = -1, X = x - x0' (x0' = (x0, -h), h = y0).
+inline void wallDoubleLayerWeight2D(double x, double y, double a0, double a1, double x0, double y0, double W[4])
+{
+  const double h = y0;
+  const double d0 = x - x0, d1 = y - y0;
+  const double X1 = y + y0;
+  const double r2 = d0 * d0 + d1 * d1;
+  const double R2 = d0 * d0 + X1 * X1;
+  const double free = -4.0 * (d0 * a0 + d1 * a1) / (r2 * r2);
+  const double invR2 = 1.0 / R2;
+  const double invR4 = invR2 * invR2;
+  const double Xa = d0 * a0 + X1 * a1;
+  const double image = 4.0 * Xa * invR4;
+  const double X[2] = {d0, X1};
+  const double xh[2] = {d0, d1};
+  const double a[2] = {a0, a1};
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const double s4 = j == 1 ? -4.0 : 4.0;
+      const double dipole = s4 * (-(a[i] * X[j] + (i == j ? Xa : 0.0) + a[j] * X[i]) * invR4
+                                  + 4.0 * X[i] * X[j] * Xa * invR4 * invR2);
+      const double doublet = X1 * dipole + s4 * (a[i] * X[j] * X1 - (j == 1 ? X[i] * Xa : 0.0)) * invR4;
+      W[2 * i + j] = free * xh[i] * xh[j] + image * X[i] * X[j] + 2.0 * h * h * dipole - 2.0 * h * doublet;
+    }
+  }
 }
 
 /// The regular sums over `numSegments` segments of `pointsPerSegment` points each:
