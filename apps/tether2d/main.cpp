@@ -29,7 +29,8 @@ void run(core::RunContext& ctx)
   *ctx.out << "Finished at tau = " << result.finalTime << (result.steady ? " (equilibrium)" : "") << " after "
            << result.steps << " steps\n"
            << "  max tether force F/E     = " << result.maxTetherForce << " at tau = " << result.timeOfMaxTetherForce
-           << "\n"
+           << " (after the tethering transient: " << result.maxTetherForceAfterTransient << " at tau = "
+           << result.timeOfMaxTetherForceAfterTransient << ")\n"
            << "  max contour length A/A0  = " << result.maxContourLengthRatio << "\n"
            << "  max cell length L_cell/L = " << result.maxCellLength << "\n"
            << "  final D12                = " << result.final.D12 << "\n"

@@ -228,9 +228,15 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   const auto trackExtremes = [&]() {
     const contour::Contour current = model_.contour(state.y);
     const double force = model_.membrane(current).netForce(model_.discretisation().gaussLegendrePoints).norm();
+    const double tau = tauOf(state.time);
     if (force > result.maxTetherForce) {
       result.maxTetherForce = force;
-      result.timeOfMaxTetherForce = tauOf(state.time);
+      result.timeOfMaxTetherForce = tau;
+    }
+    // tau counts from tethering in the tethered stage (from 0 in a free run).
+    if (tau >= tether_.forceTransient && force > result.maxTetherForceAfterTransient) {
+      result.maxTetherForceAfterTransient = force;
+      result.timeOfMaxTetherForceAfterTransient = tau;
     }
     result.maxContourLengthRatio = std::max(result.maxContourLengthRatio, current.length() / model_.referenceLength());
     result.maxCellLength = std::max(result.maxCellLength, contour::cellLength(current));
@@ -280,6 +286,8 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     checkpoint.reals["run preparation time"] = result.preparationTime;
     checkpoint.reals["run max tether force"] = result.maxTetherForce;
     checkpoint.reals["run time of max tether force"] = result.timeOfMaxTetherForce;
+    checkpoint.reals["run max tether force after transient"] = result.maxTetherForceAfterTransient;
+    checkpoint.reals["run time of max tether force after transient"] = result.timeOfMaxTetherForceAfterTransient;
     checkpoint.reals["run max contour length ratio"] = result.maxContourLengthRatio;
     checkpoint.reals["run max cell length"] = result.maxCellLength;
     checkpoint.reals["run max abs area drift"] = result.maxAbsAreaDrift;
@@ -326,6 +334,11 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     result.preparationTime = checkpoint.reals.at("run preparation time");
     result.maxTetherForce = checkpoint.reals.at("run max tether force");
     result.timeOfMaxTetherForce = checkpoint.reals.at("run time of max tether force");
+    if (const auto after = checkpoint.reals.find("run max tether force after transient");
+        after != checkpoint.reals.end()) {   // absent from checkpoints written before it existed
+      result.maxTetherForceAfterTransient = after->second;
+      result.timeOfMaxTetherForceAfterTransient = checkpoint.reals.at("run time of max tether force after transient");
+    }
     result.maxContourLengthRatio = checkpoint.reals.at("run max contour length ratio");
     result.maxCellLength = checkpoint.reals.at("run max cell length");
     result.maxAbsAreaDrift = checkpoint.reals.at("run max abs area drift");
@@ -519,6 +532,8 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     }
     summary["max"]["tether_force"] = result.maxTetherForce;
     summary["max"]["time_of_max_tether_force"] = result.timeOfMaxTetherForce;
+    summary["max"]["tether_force_after_transient"] = result.maxTetherForceAfterTransient;
+    summary["max"]["time_of_max_tether_force_after_transient"] = result.timeOfMaxTetherForceAfterTransient;
     summary["max"]["contour_length_ratio"] = result.maxContourLengthRatio;
     summary["max"]["cell_length"] = result.maxCellLength;
     summary["max"]["abs_area_drift"] = result.maxAbsAreaDrift;

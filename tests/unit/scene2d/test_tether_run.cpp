@@ -85,6 +85,25 @@ TEST(TetherRun2D, TetheredCellIsHeldAtTheAnchorAndPulledDownstream)
   EXPECT_GT(result.final.tetherForceX, 10.0 * std::abs(result.final.tetherForceY));
   EXPECT_GT(result.final.contourLengthRatio, 1.0);
   EXPECT_LT(result.maxAbsAreaDrift, 1e-3); // lambda = 1 over 2 units of tau
+  // The force grows after tethering, so its largest value comes after the transient too
+  // (Tether/Force transient = 0.1), and both maxima are that value.
+  EXPECT_GE(result.timeOfMaxTetherForceAfterTransient, 0.1);
+  EXPECT_EQ(result.maxTetherForceAfterTransient, result.maxTetherForce);
+}
+
+TEST(TetherRun2D, ForceTransientIsLeftOutOfTheMaximumAfterIt)
+{
+  // A transient longer than the tethered stage: no step counts, the maximum after it stays 0
+  // while max.tether_force has every step's.
+  const auto deck = tether2dDeck({"Cell/Number of points=32", "Flow/Capillary number=0.25",
+                                  "Tether/Minimum preparation time=0.25", "Tether/Maximum preparation time=0.25",
+                                  "Time integration/End time=0.25", "Output/Interval=0.25",
+                                  "Tether/Force transient=0.5"});
+  TetherRun2D run(serial(), deck, nullptr);
+  const TetherRunResult2D result = run.run("", std::nullopt);
+  ASSERT_TRUE(result.tethered);
+  EXPECT_GT(result.maxTetherForce, 0.0);
+  EXPECT_EQ(result.maxTetherForceAfterTransient, 0.0);
 }
 
 TEST(TetherRun2D, PreparationEndsAtTheLargestDeformationWithANodeAtTheBottom)
@@ -158,6 +177,8 @@ TEST(TetherRun2D, RestartReproducesTheUninterruptedRun)
   // from the warm start's combination of the last solutions, which the checkpoint carries;
   // without it the resumed run differs in the last digits).
   EXPECT_EQ(resumed.final.tetherForce, expected.final.tetherForce);
+  EXPECT_EQ(resumed.maxTetherForce, expected.maxTetherForce);
+  EXPECT_EQ(resumed.maxTetherForceAfterTransient, expected.maxTetherForceAfterTransient);
   EXPECT_EQ(resumed.final.D12, expected.final.D12);
   EXPECT_EQ(resumed.steps, expected.steps);
   const io::CsvTable a = io::readCsvTable(whole + "/metrics.csv");

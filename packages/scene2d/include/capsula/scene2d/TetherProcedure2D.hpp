@@ -50,10 +50,14 @@ struct TetherSettings2D {
   bool waitForNodeAtBottom = false;      ///< then tether when a node passes the lowest point
   double minimumPreparationTime = 0.5;   ///< tau
   double maximumPreparationTime = 20.0;  ///< tau
+  /// tau after tethering that max.tether_force_after_transient leaves out (the fast
+  /// relaxation next to the tether, ~0.01 tau, whose spike depends on the resolution).
+  double forceTransient = 0.1;
 };
 
 /// Declares Enabled, Anchor height, Preparation tolerance, Preparation window, Wait for a
-/// node at the bottom, Minimum preparation time and Maximum preparation time in `tether`.
+/// node at the bottom, Minimum preparation time, Maximum preparation time and Force
+/// transient in `tether`.
 void declareTetherParameters2D(Teuchos::ParameterList& tether);
 
 /// Reads a validated "Tether" sublist; throws core::InputError if the minimum

@@ -48,6 +48,9 @@ struct TetherRunResult2D {
   CellMetrics2D final;          ///< at the end
   double maxTetherForce = 0.0;  ///< over the accepted steps of the tethered (or free) stage
   double timeOfMaxTetherForce = 0.0;
+  /// The same from Tether/Force transient after tethering on (0 while none has come).
+  double maxTetherForceAfterTransient = 0.0;
+  double timeOfMaxTetherForceAfterTransient = 0.0;
   double maxContourLengthRatio = 0.0; ///< idem
   double maxCellLength = 0.0;         ///< idem
   double maxAbsAreaDrift = 0.0; ///< over all outputs, both stages
