@@ -242,7 +242,10 @@ def mesh_size(value, kind):
 
 def richardson(pairs):
     """pairs: (h, q) sorted coarse to fine. Returns (q_inf, observed order or None) from the three
-    finest, fitting q = q_inf + C h^p exactly (any ratios of h)."""
+    finest, fitting q = q_inf + C h^p exactly (any ratios of h). With a fourth, coarser run the
+    fit must also predict it to within half the change between the coarser two of the three:
+    three runs fit any sequence of monotone changes, a fourth tells an asymptotic range from
+    one that is not."""
     if len(pairs) < 3:
         return pairs[-1][1], None
     (h1, q1), (h2, q2), (h3, q3) = pairs[-3:]
@@ -263,7 +266,13 @@ def richardson(pairs):
         lo, hi = (mid, hi) if mismatch(mid) < 0 else (lo, mid)
     p = 0.5 * (lo + hi)
     # q = q_inf + C h^p: C = d2 / (h2^p - h3^p), q3 - q_inf = C h3^p.
-    return q3 - d2 / (h2 ** p - h3 ** p) * h3 ** p, p
+    c = d2 / (h2 ** p - h3 ** p)
+    q_inf = q3 - c * h3 ** p
+    if len(pairs) >= 4:
+        h0, q0 = pairs[-4]
+        if abs(q_inf + c * h0 ** p - q0) > 0.5 * abs(d1):
+            return q3, None
+    return q_inf, p
 
 
 def refine_line(ok, base, refine_key, refine_kind, ranks):
@@ -272,6 +281,28 @@ def refine_line(ok, base, refine_key, refine_kind, ranks):
         return []
     line = [r for r in ok if r["ranks"] == ranks and all(r["combo"][k] == base[k] for k in base if k != refine_key)]
     return sorted(((mesh_size(r["combo"][refine_key], refine_kind), r["qoi"]) for r in line), key=lambda p: -p[0])
+
+
+def line_history(out, ok, base, refine_key, refine_kind, ranks, columns, rows=13):
+    """Columns of metrics.csv at the output times of the runs along the refinement line (others
+    at base): {value of the knob: {column: [(time, value), ...]}}, every few rows so that at most
+    `rows` are kept. Where the line's runs part, and what the mesh-scale diagnostics did then."""
+    if not refine_key or not columns:
+        return {}
+    history = {}
+    for r in ok:
+        if r["ranks"] != ranks or any(r["combo"][k] != base[k] for k in base if k != refine_key):
+            continue
+        try:
+            with open(os.path.join(out, r["run"], "metrics.csv")) as f:
+                table = list(csv.DictReader(f))
+        except OSError:
+            continue
+        stride = max(1, -(-len(table) // rows))
+        kept = table[::stride]
+        history[r["combo"][refine_key]] = {
+            c: [(float(t["time"]), float(t[c])) for t in kept if t.get(c) not in (None, "")] for c in columns}
+    return dict(sorted(history.items(), key=lambda kv: -mesh_size(kv[0], refine_kind)))
 
 
 def pareto(points):
@@ -364,7 +395,9 @@ def sweep(args):
     meta = dict(name=args.name, app=os.path.basename(args.app), deck=os.path.relpath(args.deck, ROOT),
                 fixed=fixed, knobs=knobs, grid=args.grid, blocks=blocks, qoi=args.qoi, reference=reference,
                 reference_how=how, richardson_order=order, orders=orders, ranks=ranks_list,
-                refine=refine_key, refine_line=refine_line(ok, base, refine_key, refine_kind, ranks_list[0]))
+                refine=refine_key, refine_line=refine_line(ok, base, refine_key, refine_kind, ranks_list[0]),
+                history=line_history(args.out, ok, base, refine_key, refine_kind, ranks_list[0],
+                                     getattr(args, "history", None) or []))
     with open(os.path.join(args.out, args.name + ".meta.json"), "w") as f:
         json.dump(meta, f, indent=1)
     return rows, meta
@@ -491,16 +524,19 @@ def studies(build, quick):
     if quick:
         return [
             dict(name="cell3d_shear", app=cell3d, deck=lac, ranks="2", grid="blocks", qoi="metrics:D12",
+             history=["D12", "max_distortion", "min_tension"], 
                  refine=level + ":level",
                  knob=[level + "=1,0,2", quadrature + "=7,3", tolerance + "=1e-5,1e-7"],
                  block=[f"{level}=0,1;{quadrature}=7,3", f"{level}=0,1;{tolerance}=1e-5,1e-7", f"{level}=2"],
                  set=quiet3d + ["Time integration/End time=0.3", "Output/Interval=0.1",
                                 "Time integration/Steady tolerance=0"]),
             dict(name="cell3d_wall", app=cell3d, deck=wall, ranks="2", grid="axes", qoi="metrics-peak:D12",
+             history=["D12", "max_distortion", "min_tension"], 
                  refine=level + ":level", knob=[level + "=0,1"],
                  set=quiet3d + ["Time integration/End time=0.3", "Output/Interval=0.05",
                                 "Time integration/Steady tolerance=0", "Output/Wall shear stress/Enabled=false"]),
             dict(name="tether2d_fmax", app=tether, deck=t2d, ranks="1", grid="axes", qoi="summary:max.tether_force",
+             history=["tether_force", "tether_force_y"], 
                  refine="Cell/Number of points:points",
                  knob=["Cell/Number of points=24,48,96", "Discretisation/Gauss-Legendre points=6,5"],
                  set=quiet2d + ["Time integration/End time=0.5", "Tether/Minimum preparation time=0.3",
@@ -516,6 +552,7 @@ def studies(build, quick):
         # RKF45 tolerance; level 4 (10242 nodes, ~16 x level 3 per right-hand side) at the
         # defaults only, for the Richardson triple 2-3-4.
         dict(name="cell3d_shear", app=cell3d, deck=lac, ranks="2", grid="blocks", qoi="metrics:D12",
+             history=["D12", "max_distortion", "min_tension"], 
              refine=level + ":level",
              knob=[level + "=2,1,3,4", quadrature + "=7,3,6,12,13", singular + "=6,3,4,8",
                    tolerance + "=1e-6,1e-8,1e-10"],
@@ -527,6 +564,7 @@ def studies(build, quick):
         # Ca = 0.9; D12 peaks at t ~ 2.2, so t = 3 with outputs every 0.05 and the peak refined
         # between them (metrics-peak).
         dict(name="cell3d_wall", app=cell3d, deck=wall, ranks="2", grid="blocks", qoi="metrics-peak:D12",
+             history=["D12", "max_distortion", "min_tension"], 
              refine=level + ":level",
              knob=[level + "=2,1,3", quadrature + "=7,3,12", tolerance + "=1e-6,1e-8"],
              block=[f"{level}=1,2,3;{quadrature}=7,3,12", f"{level}=1,2;{tolerance}=1e-8"],
@@ -535,6 +573,7 @@ def studies(build, quick):
         # Thesis Section 3.12.1, Fig. 3.6 and Table 3.2: F_max, a/b = 1, Ca = 0.25, lambda = 1, to
         # tau = 12 (past the maximum, tau ~ 9-11), every N_E with every N_GL.
         dict(name="tether2d_fmax", app=tether, deck=t2d, ranks="1", grid="product", qoi="summary:max.tether_force",
+             history=["tether_force", "tether_force_y"], 
              refine=points + ":points",
              knob=[points + "=128,64,256,320,512", gauss + "=6,5,8,12"],
              set=quiet2d + ["Time integration/End time=12", "Output/Interval=0.25"]),
@@ -561,7 +600,7 @@ def run_all(args):
             continue
         ns = argparse.Namespace(app=st["app"], deck=st["deck"], out=os.path.join(args.runs, st["name"]),
                                 knob=st["knob"], set=st["set"], grid=st["grid"], block=st.get("block", []),
-                                ranks=st["ranks"],
+                                ranks=st["ranks"], history=st.get("history", []),
                                 qoi=st["qoi"], refine=st["refine"], exact=None, name=st["name"],
                                 timeout=args.timeout)
         t0 = time.monotonic()
@@ -577,11 +616,15 @@ def check(results, runs):
     # The extrapolation itself, on q = 1 + 3 h^2 (exact: 1, order 2) and q = 2 - h^1.5.
     for qs, exact, order in (([(h, 1 + 3 * h * h) for h in (0.4, 0.2, 0.1)], 1.0, 2.0),
                              ([(h, 2 - h ** 1.5) for h in (1.0, 0.5, 0.25)], 2.0, 1.5),
-                             ([(1 / n, 3 + 5 * n ** -1.45) for n in (256, 320, 512)], 3.0, 1.45)):
+                             ([(1 / n, 3 + 5 * n ** -1.45) for n in (128, 256, 320, 512)], 3.0, 1.45)):
         q_inf, p = richardson(qs)
         # Bisection to round-off in p: q_inf and p to ~1e-12 (the fits are exact).
         if p is None or abs(q_inf - exact) > 1e-10 or abs(p - order) > 1e-9:
             bad.append(f"Richardson extrapolation gave {q_inf} (order {p}) for {exact} (order {order})")
+    # Three runs that happen to fit, and a coarser fourth that does not: no extrapolation.
+    _, p = richardson([(1.0, 1.0), (0.5, 1.5), (0.25, 1.4), (0.125, 1.37)])
+    if p is not None:
+        bad.append(f"Richardson accepted a triple that its coarser fourth run contradicts (order {p})")
     for name, (rows, meta) in results.items():
         good = [r for r in rows if math.isfinite(r["rel_error"])]
         if len(good) < 2:

@@ -100,6 +100,7 @@ def study_section(name, rows, meta, figdir, docdir):
         steps = ", ".join(f"{fmt(b - a, 3)}" for (_, a), (_, b) in zip(line, line[1:]))
         out += ["", f"Along `{what}` (others at base), coarse to fine: QoI " +
                 ", ".join(fmt(q, 7) for _, q in line) + f"; successive changes {steps}."]
+    out += history_table(meta)
     out += compare_with_thesis(name, rows, meta)
     out += [f"Sum of the runs' wall times: {sum(r['wall_s'] for r in rows):.0f} s (this invocation took "
             f"{meta.get('seconds', float('nan')):.0f} s; runs found in the runs folder are reused).", ""]
@@ -109,6 +110,32 @@ def study_section(name, rows, meta, figdir, docdir):
             shutil.copyfile(src, os.path.join(figdir, f"{name}_{suffix}.png"))
             out.append(f"![{name} {suffix}]({os.path.relpath(os.path.join(figdir, f'{name}_{suffix}.png'), docdir)})")
     out.append("")
+    return out
+
+
+def history_table(meta):
+    """The refinement line's runs over time (metrics.csv columns at a subset of the outputs)."""
+    history = meta.get("history") or {}
+    if len(history) < 2:
+        return []
+    what = meta["refine"].split("/")[-1]
+    columns = list(next(iter(history.values())).keys())
+    values = list(history)
+    times = [t for t, _ in history[values[-1]][columns[0]]]
+    out = ["", f"The `{what}` line over time (output rows of metrics.csv, others at base): " +
+           ", ".join(f"`{c}`" for c in columns) + " per run.", "",
+           "| time | " + " | ".join(f"{what} {v}: {c}" for v in values for c in columns) + " |",
+           "|" + "---|" * (1 + len(values) * len(columns))]
+    # Output times that differ in their last digits (3.9999 and 4: a stage's own clock) match.
+    def key(t):
+        return round(t, 2)
+    for i, t in enumerate(times):
+        cells = [fmt(t, 4)]
+        for v in values:
+            for c in columns:
+                series = {key(u): x for u, x in history[v][c]}
+                cells.append(fmt(series.get(key(t)), 5))
+        out.append("| " + " | ".join(cells) + " |")
     return out
 
 

@@ -52,7 +52,9 @@ study_runs() {
         run_deck "ab1_lambda10_ca${ca}" "$(deck 1 10 $ca)" "${settings[@]}"
       done ;;
     full)
-      for ab in 0.25 0.5 1; do for lambda in 1 5 10; do for ca in 0.01 0.025 0.05 0.1 0.25; do
+      # The cheap runs first (lambda = 1, then high Ca, whose steps are longest), so that a
+      # study stopped part way has whole figures over Ca and a/b at lambda = 1.
+      for lambda in 1 10 5; do for ab in 1 0.5 0.25; do for ca in 0.25 0.1 0.05 0.025 0.01; do
         run_deck "ab${ab}_lambda${lambda}_ca${ca}" "$(deck $ab $lambda $ca)"
       done; done; done ;;
   esac
