@@ -61,6 +61,27 @@ struct FreeSpace3DKernel : greens::FreeSpace3D {
 };
 
 struct Wall3DKernel : greens::Wall3D {
+  /// What the double-layer terms share: h = the pole's height, xh = x - x0, X = x - x0'
+  /// (x0' the image of the pole below the wall) and the powers 1/r^5, 1/R^5, 1/R^7.
+  struct StressletGeometry {
+    double h, d[3], X[3], invr5, invR5, invR7;
+    StressletGeometry(const double x[3], const double x0[3])
+    {
+      constexpr int n = greens::wallNormalAxis;
+      h = x0[n];
+      for (int i = 0; i < 3; ++i) {
+        d[i] = x[i] - x0[i];
+        X[i] = d[i];
+      }
+      X[n] = x[n] + x0[n];
+      const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      const double R2 = X[0] * X[0] + X[1] * X[1] + X[2] * X[2];
+      invr5 = 1.0 / (r2 * r2 * std::sqrt(r2));
+      invR5 = 1.0 / (R2 * R2 * std::sqrt(R2));
+      invR7 = invR5 / R2;
+    }
+  };
+
   /// u_j += G^W_ij f_i with G^W = G(xh) - G(X) + 2 h^2 G^D(X) - 2 h G^SD(X) (Wall3D.hpp):
   ///   G^D_ij f_i  = s_j (f_j / R^3 - 3 X_j (X . f) / R^5) =: D_j
   ///   G^SD_ij f_i = X_n D_j + s_j (delta_jn (X . f) - f_n X_j) / R^3.
@@ -98,15 +119,10 @@ struct Wall3DKernel : greens::Wall3D {
                                  double u[3])
   {
     constexpr int n = greens::wallNormalAxis;
-    const double h = x0[n];
-    const double d[3] = {x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]};
-    double X[3] = {d[0], d[1], d[2]};
-    X[n] = x[n] + x0[n];
-    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    const double R2 = X[0] * X[0] + X[1] * X[1] + X[2] * X[2];
-    const double invr5 = 1.0 / (r2 * r2 * std::sqrt(r2));
-    const double invR5 = 1.0 / (R2 * R2 * std::sqrt(R2));
-    const double invR7 = invR5 / R2;
+    const StressletGeometry g(x, x0);
+    const double h = g.h, invr5 = g.invr5, invR5 = g.invR5, invR7 = g.invR7;
+    const double* d = g.d;
+    const double* X = g.X;
     const double dv = d[0] * v[0] + d[1] * v[1] + d[2] * v[2];
     const double da = d[0] * a[0] + d[1] * a[1] + d[2] * a[2];
     const double Xv = X[0] * v[0] + X[1] * v[1] + X[2] * v[2];
@@ -130,15 +146,10 @@ struct Wall3DKernel : greens::Wall3D {
   static void addDoubleLayerMatrix(const double x[3], const double x0[3], const double a[3], double M[9])
   {
     constexpr int n = greens::wallNormalAxis;
-    const double h = x0[n];
-    const double d[3] = {x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]};
-    double X[3] = {d[0], d[1], d[2]};
-    X[n] = x[n] + x0[n];
-    const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    const double R2 = X[0] * X[0] + X[1] * X[1] + X[2] * X[2];
-    const double invr5 = 1.0 / (r2 * r2 * std::sqrt(r2));
-    const double invR5 = 1.0 / (R2 * R2 * std::sqrt(R2));
-    const double invR7 = invR5 / R2;
+    const StressletGeometry g(x, x0);
+    const double h = g.h, invr5 = g.invr5, invR5 = g.invR5, invR7 = g.invR7;
+    const double* d = g.d;
+    const double* X = g.X;
     const double da = d[0] * a[0] + d[1] * a[1] + d[2] * a[2];
     const double Xa = X[0] * a[0] + X[1] * a[1] + X[2] * a[2];
     // Same association for the free and image stresslets: exact cancellation at h = 0.
