@@ -63,6 +63,7 @@ study_runs() {
 study_figures() {
   draw tether2d_contours.py
   draw tether2d_histories.py
+  draw tether2d_table.py   # FIGDIR/tether2d_table.md: the key numbers of every run
 }
 
 study_main "$@"
