@@ -230,4 +230,36 @@ double CubicSpline::secondDerivative(double s) const
   return piece(k).secondDerivative(ds);
 }
 
+int stationaryPoints(const CubicPiece& p, double span, double roots[2])
+{
+  const double qa = 3.0 * p.a;
+  const double qb = 2.0 * p.b;
+  const double qc = p.c;
+  double candidates[2];
+  int count = 0;
+  const double scale = std::abs(qa) * span * span + std::abs(qb) * span + std::abs(qc);
+  if (std::abs(qa) * span * span <= 1e-14 * scale) {
+    if (qb != 0.0) {
+      candidates[count++] = -qc / qb;
+    }
+  } else {
+    const double discriminant = qb * qb - 4.0 * qa * qc;
+    if (discriminant >= 0.0) {
+      // Stable form: q = -(b + sign(b) sqrt(D)) / 2, roots q/a and c/q.
+      const double q = -0.5 * (qb + std::copysign(std::sqrt(discriminant), qb));
+      candidates[count++] = q / qa;
+      if (q != 0.0) {
+        candidates[count++] = qc / q;
+      }
+    }
+  }
+  int inside = 0;
+  for (int i = 0; i < count; ++i) {
+    if (candidates[i] > 0.0 && candidates[i] < span) {
+      roots[inside++] = candidates[i];
+    }
+  }
+  return inside;
+}
+
 } // namespace capsula::contour

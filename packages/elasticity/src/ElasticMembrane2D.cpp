@@ -1,5 +1,6 @@
 #include "capsula/elasticity/ElasticMembrane2D.hpp"
 
+#include "capsula/elasticity/MaterialArcLength2D.hpp"
 #include "capsula/elasticity/MembraneLoad2D.hpp"
 
 #include <capsula/contour/CubicSpline.hpp>
@@ -34,19 +35,10 @@ MembraneState2D ElasticMembrane2D::evaluate(const Contour& current) const
   const std::vector<double>& l = current.knotArcLengths();
 
   // Stretch spline l(l0) (eq A.38); omega at the knots is its slope there.
+  const MaterialArcLength2D material(l0, l, closure_);
+  const CubicSpline& stretchSpline = material.spline();
+  const double meanStretch = material.meanStretch(); // the non-periodic part of dl/dl0 on a free cell
   std::vector<double> omega(nodes + 1);
-  double meanStretch = 0.0; // the non-periodic part of dl/dl0 on a free cell
-  const CubicSpline stretchSpline = [&] {
-    if (closure_ == Closure::Periodic) {
-      meanStretch = l.back() / l0.back();
-      std::vector<double> periodicPart(nodes);
-      for (std::size_t i = 0; i < nodes; ++i) {
-        periodicPart[i] = l[i] - meanStretch * l0[i];
-      }
-      return CubicSpline::periodic(l0, periodicPart);
-    }
-    return CubicSpline::notAKnot(l0, l);
-  }();
   for (std::size_t i = 0; i < nodes; ++i) {
     omega[i] = meanStretch + stretchSpline.piece(static_cast<int>(i)).c;
   }

@@ -66,6 +66,19 @@ void CapsuleModel2D::tether(int offset)
   }
 }
 
+void CapsuleModel2D::tether(const Eigen::Matrix2Xd& referenceNodes)
+{
+  core::require<core::InputError>(referenceNodes.cols() == numberOfNodes(), "CapsuleModel2D::tether: ",
+                                  referenceNodes.cols(), " reference nodes for a cell of ", numberOfNodes());
+  const contour::Contour reference(referenceNodes, optionsFor(contour::Closure::Tethered, cell_.tetherEnds));
+  membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
+  tetherOffset_ = 0;
+  regriddedReference_ = referenceNodes;
+  if (warmStart_) {   // new markers and a fixed row: the old solutions do not apply
+    warmStart_.emplace(warmStart_->depth());
+  }
+}
+
 contour::Contour CapsuleModel2D::contour(const std::vector<double>& state) const
 {
   core::require(state.size() == 2 * static_cast<std::size_t>(numberOfNodes()), "CapsuleModel2D: the state has ",

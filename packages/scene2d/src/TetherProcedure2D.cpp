@@ -46,6 +46,22 @@ void declareTetherParameters2D(Teuchos::ParameterList& tether)
                     "(0.63, 0.53, 0.06 at 64, 128, 256 points for a/b = 0.25, Ca = 0.025) and can be "
                     "the run's largest force on coarse contours (docs/tether2d.md).",
                     core::atLeast(0.0));
+  core::declareBool(tether, "Regrid at tethering", defaults.regrid,
+                    "true: at tethering, place the markers again at new material points whose spacing "
+                    "grows from the tether (h = H min(1, f + (1 - f) d / w), d the reference arc distance from it), "
+                    "so that the thin film between the membrane and the wall next to the tether is "
+                    "resolved; the tether is then the lowest point of the spline. false: keep the free "
+                    "cell's markers and tether the one nearest the bottom (the thesis).");
+  core::declareReal(tether, "Spacing at the tether", defaults.grading.tetherSpacing,
+                    "With Regrid at tethering: f, the marker spacing at the tether as a fraction of the far "
+                    "spacing H (1: even markers). The spacing grows linearly from f H to H over Graded length; "
+                    "H is what makes the N markers fill the contour.",
+                    core::greaterThan(0.0));
+  core::declareReal(tether, "Graded length", defaults.grading.gradedLength,
+                    "With Regrid at tethering: w, the reference arc length on each side of the tether over "
+                    "which the spacing grows from f H to H (the reference contour's length is 2 pi for the "
+                    "unit circle).",
+                    core::greaterThan(0.0));
 }
 
 TetherSettings2D readTetherSettings2D(const Teuchos::ParameterList& tether)
@@ -59,6 +75,11 @@ TetherSettings2D readTetherSettings2D(const Teuchos::ParameterList& tether)
   s.minimumPreparationTime = tether.get<double>("Minimum preparation time");
   s.maximumPreparationTime = tether.get<double>("Maximum preparation time");
   s.forceTransient = tether.get<double>("Force transient");
+  s.regrid = tether.get<bool>("Regrid at tethering");
+  s.grading.tetherSpacing = tether.get<double>("Spacing at the tether");
+  s.grading.gradedLength = tether.get<double>("Graded length");
+  core::require<core::InputError>(s.grading.tetherSpacing <= 1.0, "Tether/Spacing at the tether must be <= 1 "
+                                  "(a fraction of the far spacing), got ", s.grading.tetherSpacing);
   core::require<core::InputError>(s.minimumPreparationTime <= s.maximumPreparationTime,
                                   "Tether/Minimum preparation time (", s.minimumPreparationTime,
                                   ") exceeds Tether/Maximum preparation time (", s.maximumPreparationTime,

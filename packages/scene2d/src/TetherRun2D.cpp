@@ -274,6 +274,10 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     checkpoint.integers["run evaluations"] = progress.evaluations;
     checkpoint.integers["run last snapshot"] = progress.lastSnapshot;
     checkpoint.integers["run tether offset"] = model_.tetherOffset();
+    if (const Eigen::Matrix2Xd& regridded = model_.regriddedReference(); regridded.size() > 0) {
+      checkpoint.arrays["run regridded reference nodes"] =
+          std::vector<double>(regridded.data(), regridded.data() + regridded.size());
+    }
     checkpoint.reals["run origin"] = progress.origin;
     checkpoint.reals["run previous D12"] = progress.previousD12;
     checkpoint.reals["run preparation rate"] = progress.preparationRate;
@@ -344,7 +348,15 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     result.maxAbsAreaDrift = checkpoint.reals.at("run max abs area drift");
     result.tethered = progress.stage == Stage::Tethered;
     if (progress.stage == Stage::Tethered) {
-      model_.tether(static_cast<int>(checkpoint.integers.at("run tether offset")));
+      if (const auto regridded = checkpoint.arrays.find("run regridded reference nodes");
+          regridded != checkpoint.arrays.end()) {
+        core::require<core::InputError>(regridded->second.size() == state.y.size(), "The checkpoint ", path,
+                                        " holds ", regridded->second.size() / 2, " regridded reference nodes for ",
+                                        state.y.size() / 2, " nodes.");
+        model_.tether(Eigen::Map<const Eigen::Matrix2Xd>(regridded->second.data(), 2, model_.numberOfNodes()));
+      } else {
+        model_.tether(static_cast<int>(checkpoint.integers.at("run tether offset")));
+      }
     }
     // After tether(), which drops the history: the next solve starts where it would have.
     const auto warmRhs = checkpoint.arrays.find("run gmres warm start rhs");
@@ -476,10 +488,19 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     }
     // Tether (thesis Section 4.1): lowest node to the anchor, relabelled node 0.
     const Eigen::Map<const Eigen::Matrix2Xd> nodes(state.y.data(), 2, model_.numberOfNodes());
-    const TetherPlacement2D placement = tetherPlacement(nodes, Eigen::Vector2d(0.0, tether_.anchorHeight));
-    const Eigen::Matrix2Xd tethered = tetheredNodes(nodes, placement);
+    const Eigen::Vector2d anchor(0.0, tether_.anchorHeight);
+    const TetherPlacement2D placement = tetherPlacement(nodes, anchor);
+    Eigen::Matrix2Xd tethered;
     result.preparationTime = tauOf(state.time);
-    model_.tether(placement.lowestNode);
+    if (tether_.regrid) {   // new markers graded towards the lowest point (TetherRegrid2D.hpp)
+      const TetherRegrid2D regrid = regridAtTether(contour::Contour(model_.referenceNodes()), model_.contour(state.y),
+                                                   tether_.grading, anchor);
+      tethered = regrid.currentNodes;
+      model_.tether(regrid.referenceNodes);
+    } else {
+      tethered = tetheredNodes(nodes, placement);
+      model_.tether(placement.lowestNode);
+    }
     progress.evaluations += state.statistics.rhsEvaluations;
     const double proposed = state.proposedStep;
     const long long acceptedBefore = state.statistics.acceptedSteps;
@@ -488,9 +509,14 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     state.statistics.acceptedSteps = acceptedBefore;
     result.tethered = true;
     if (log_ != nullptr) {
-      *log_ << "Tethered at tau = " << result.preparationTime << " (node " << placement.lowestNode
-            << " of the free cell moved by (" << placement.shift.x() << ", " << placement.shift.y()
-            << ") to (0, " << tether_.anchorHeight << "))\n";
+      if (tether_.regrid) {
+        *log_ << "Tethered at tau = " << result.preparationTime << " (the lowest point of the spline, moved to (0, "
+              << tether_.anchorHeight << "), with " << model_.numberOfNodes() << " new markers graded towards it)\n";
+      } else {
+        *log_ << "Tethered at tau = " << result.preparationTime << " (node " << placement.lowestNode
+              << " of the free cell moved by (" << placement.shift.x() << ", " << placement.shift.y()
+              << ") to (0, " << tether_.anchorHeight << "))\n";
+      }
     }
     startStage(Stage::Tethered);
     observe(0.0, 0.0, true);

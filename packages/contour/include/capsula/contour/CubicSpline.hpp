@@ -33,6 +33,10 @@ struct CubicPiece {
   double secondDerivative(double ds) const { return 6.0 * a * ds + 2.0 * b; }
 };
 
+/// The roots in (0, span) of p'(ds) = 3 a ds^2 + 2 b ds + c, the stationary points of a
+/// piece inside it (0, 1 or 2, in `roots`, the count returned).
+int stationaryPoints(const CubicPiece& p, double span, double roots[2]);
+
 /// A piecewise cubic C^2 interpolant over strictly increasing knots s_0 < ... < s_n
 /// (n pieces). Periodic splines take n values (the value at s_n is the value at s_0) and
 /// repeat with period s_n - s_0; open splines take n + 1 values and extend their end

@@ -11,8 +11,8 @@
 // End conditions of these two auxiliary splines: periodic for a free cell. For a tethered
 // contour the thesis leaves them open; natural ends would force d omega/dl0 = 0 and
 // d^2 gamma/dl^2 = 0 at the tether, which nothing in the mechanics imposes, so they use
-// not-a-knot ends (exact for cubics, no end data needed). Of l(l0) on a free cell only
-// l - (L/L0) l0 is periodic, and that is what is splined.
+// not-a-knot ends (exact for cubics, no end data needed); MaterialArcLength2D.hpp builds
+// l(l0).
 #include "capsula/elasticity/HookeanLaw2D.hpp"
 #include "capsula/elasticity/MembraneState2D.hpp"
 

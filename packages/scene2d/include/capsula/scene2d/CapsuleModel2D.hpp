@@ -53,6 +53,12 @@ public:
   /// of the free labelling (the membrane's reference is relabelled the same way) and its
   /// velocity is zero from now on.
   void tether(int offset);
+  /// Switches to the tethered cell with new markers (TetherRegrid2D): node i of the state
+  /// from now on is the material point whose reference position is column i of
+  /// `referenceNodes` (node 0 the tether).
+  void tether(const Eigen::Matrix2Xd& referenceNodes);
+  /// Those reference positions after a regridding tether() (empty otherwise).
+  const Eigen::Matrix2Xd& regriddedReference() const { return regriddedReference_; }
   bool tethered() const { return tetherOffset_.has_value(); }
   int tetherOffset() const { return tetherOffset_.value_or(0); }
 
@@ -84,6 +90,7 @@ private:
   double referenceLength_ = 0.0;
   double referenceArea_ = 0.0;
   std::optional<int> tetherOffset_;
+  Eigen::Matrix2Xd regriddedReference_;
   std::unique_ptr<elasticity::ElasticMembrane2D> membrane_;
   std::unique_ptr<operators::InterfaceVelocity2D> velocity_;
   std::optional<operators::WarmStartHistory> warmStart_;

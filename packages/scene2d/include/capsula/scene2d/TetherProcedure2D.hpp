@@ -35,6 +35,8 @@
 // with the whole contour to the anchor (0, Anchor height) and relabelled node 0 (a cyclic
 // relabelling keeps the nodes counter-clockwise), the contour becomes a tethered spline,
 // the tether node's velocity is held at zero, and time restarts: tau = k (t - t0) / lambda.
+#include "capsula/scene2d/TetherRegrid2D.hpp"
+
 #include <capsula/contour/Contour.hpp>
 
 #include <Eigen/Core>
@@ -53,6 +55,9 @@ struct TetherSettings2D {
   /// tau after tethering that max.tether_force_after_transient leaves out (the fast
   /// relaxation next to the tether, ~0.01 tau, whose spike depends on the resolution).
   double forceTransient = 0.1;
+  /// New markers graded towards the tether at tethering (TetherRegrid2D.hpp).
+  bool regrid = false;
+  TetherGrading2D grading;
 };
 
 /// Declares Enabled, Anchor height, Preparation tolerance, Preparation window, Wait for a
