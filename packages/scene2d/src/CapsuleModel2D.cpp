@@ -26,7 +26,8 @@ contour::ContourOptions optionsFor(contour::Closure closure, contour::TetherEnds
 CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const CellSettings2D& cell,
                                const FlowSettings2D& flow, const operators::ContourDiscretisation2D& discretisation,
                                const operators::SolverParameters& solver)
-  : cell_(cell), flow_(flow), discretisation_(discretisation), referenceNodes_(initialCellNodes(cell))
+  : cell_(cell), flow_(flow), discretisation_(discretisation), referenceNodes_(initialCellNodes(cell)),
+    freeReference_(referenceNodes_)
 {
   core::require<core::InputError>(!flow.wall || cell.lowestPointHeight > 0.0,
                                   "Cell/Lowest point height must be > 0 above the wall, got ",
@@ -57,11 +58,25 @@ std::vector<double> CapsuleModel2D::initialState() const
 
 void CapsuleModel2D::tether(int offset)
 {
-  const contour::Contour reference(relabelNodes(referenceNodes_, offset),
+  const contour::Contour reference(relabelNodes(freeReference_, offset),
                                    optionsFor(contour::Closure::Tethered, cell_.tetherEnds));
   membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
   tetherOffset_ = offset;
   if (warmStart_) {   // relabelled nodes and a fixed row: the old solutions do not apply
+    warmStart_.emplace(warmStart_->depth());
+  }
+}
+
+void CapsuleModel2D::regridFree(const Eigen::Matrix2Xd& referenceNodes)
+{
+  core::require<core::InputError>(!tethered() && referenceNodes.cols() == numberOfNodes(),
+                                  "CapsuleModel2D::regridFree: ", referenceNodes.cols(), " reference nodes for a ",
+                                  tethered() ? "tethered" : "free", " cell of ", numberOfNodes());
+  membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(contour::Contour(referenceNodes),
+                                                              elasticity::HookeanLaw2D(1.0));
+  freeReference_ = referenceNodes;
+  freeRegridded_ = true;
+  if (warmStart_) {   // new markers: the old solutions do not apply
     warmStart_.emplace(warmStart_->depth());
   }
 }

@@ -62,6 +62,12 @@ void declareTetherParameters2D(Teuchos::ParameterList& tether)
                     "which the spacing grows from f H to H (the reference contour's length is 2 pi for the "
                     "unit circle).",
                     core::greaterThan(0.0));
+  core::declareReal(tether, "Preparation regrid interval", defaults.preparationRegridInterval,
+                    "With Regrid at tethering: also give the free cell new markers graded towards its "
+                    "lowest point every this much tau of the preparation (at the first check of the "
+                    "preparation window at or after each multiple), so that the gap under the free cell "
+                    "stays resolved while the membrane tank-treads through it. 0: only at tethering.",
+                    core::atLeast(0.0));
 }
 
 TetherSettings2D readTetherSettings2D(const Teuchos::ParameterList& tether)
@@ -78,6 +84,11 @@ TetherSettings2D readTetherSettings2D(const Teuchos::ParameterList& tether)
   s.regrid = tether.get<bool>("Regrid at tethering");
   s.grading.tetherSpacing = tether.get<double>("Spacing at the tether");
   s.grading.gradedLength = tether.get<double>("Graded length");
+  s.preparationRegridInterval = tether.get<double>("Preparation regrid interval");
+  core::require<core::InputError>(s.preparationRegridInterval == 0.0 || s.regrid,
+                                  "Tether/Preparation regrid interval = ", s.preparationRegridInterval,
+                                  " needs Tether/Regrid at tethering = true (the tether must be placed on the "
+                                  "graded markers too).");
   core::require<core::InputError>(s.grading.tetherSpacing <= 1.0, "Tether/Spacing at the tether must be <= 1 "
                                   "(a fraction of the far spacing), got ", s.grading.tetherSpacing);
   core::require<core::InputError>(s.minimumPreparationTime <= s.maximumPreparationTime,

@@ -74,13 +74,13 @@ std::vector<double> gradedArcLengths(int markers, double length, const TetherGra
   return sigma;
 }
 
-TetherRegrid2D regridAtTether(const contour::Contour& reference, const contour::Contour& current,
-                              const TetherGrading2D& grading, const Eigen::Vector2d& anchor)
+TetherRegrid2D regridTowardsLowestPoint(const contour::Contour& reference, const contour::Contour& current,
+                                        const TetherGrading2D& grading)
 {
   core::require<core::InputError>(reference.closure() == contour::Closure::Periodic &&
                                       current.closure() == contour::Closure::Periodic &&
                                       reference.numberOfNodes() == current.numberOfNodes(),
-                                  "regridAtTether: the reference and the free cell must be periodic contours "
+                                  "regridTowardsLowestPoint: the reference and the free cell must be periodic contours "
                                   "through the same markers");
   const int n = current.numberOfNodes();
   const elasticity::MaterialArcLength2D material(reference.knotArcLengths(), current.knotArcLengths(),
@@ -102,7 +102,15 @@ TetherRegrid2D regridAtTether(const contour::Contour& reference, const contour::
   }
   // Node 0 is the lowest point itself (not its round trip through l(l0) and back).
   result.currentNodes.col(0) = current.positionAt(lowest.segment, lowest.t);
-  result.currentNodes.colwise() += anchor - result.currentNodes.col(0);
+  return result;
+}
+
+TetherRegrid2D regridAtTether(const contour::Contour& reference, const contour::Contour& current,
+                              const TetherGrading2D& grading, const Eigen::Vector2d& anchor)
+{
+  TetherRegrid2D result = regridTowardsLowestPoint(reference, current, grading);
+  const Eigen::Vector2d shift = anchor - result.currentNodes.col(0);
+  result.currentNodes.colwise() += shift;
   return result;
 }
 

@@ -68,6 +68,7 @@ struct Progress {
   double placeSlope = 0.0;      // placing: its tangent's y-component then
   double placeTime = 0.0;       // placing: k t of that sample
   double placeTarget = -1.0;    // placing: predicted k t of the crossing (< 0: none)
+  double nextRegrid = 0.0;      // preparation: tau of the next regrid of the free cell
   long long lastSnapshot = -1;  // output index of the last snapshot in this stage
   bool steady = false;
 };
@@ -274,6 +275,11 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     checkpoint.integers["run evaluations"] = progress.evaluations;
     checkpoint.integers["run last snapshot"] = progress.lastSnapshot;
     checkpoint.integers["run tether offset"] = model_.tetherOffset();
+    checkpoint.reals["run next regrid"] = progress.nextRegrid;
+    if (model_.freeCellRegridded()) {
+      const Eigen::Matrix2Xd& free = model_.freeReferenceNodes();
+      checkpoint.arrays["run free reference nodes"] = std::vector<double>(free.data(), free.data() + free.size());
+    }
     if (const Eigen::Matrix2Xd& regridded = model_.regriddedReference(); regridded.size() > 0) {
       checkpoint.arrays["run regridded reference nodes"] =
           std::vector<double>(regridded.data(), regridded.data() + regridded.size());
@@ -347,6 +353,15 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     result.maxCellLength = checkpoint.reals.at("run max cell length");
     result.maxAbsAreaDrift = checkpoint.reals.at("run max abs area drift");
     result.tethered = progress.stage == Stage::Tethered;
+    if (const auto next = checkpoint.reals.find("run next regrid"); next != checkpoint.reals.end()) {
+      progress.nextRegrid = next->second;
+    }
+    if (const auto free = checkpoint.arrays.find("run free reference nodes"); free != checkpoint.arrays.end()) {
+      core::require<core::InputError>(free->second.size() == state.y.size(), "The checkpoint ", path, " holds ",
+                                      free->second.size() / 2, " free reference nodes for ", state.y.size() / 2,
+                                      " nodes.");
+      model_.regridFree(Eigen::Map<const Eigen::Matrix2Xd>(free->second.data(), 2, model_.numberOfNodes()));
+    }
     if (progress.stage == Stage::Tethered) {
       if (const auto regridded = checkpoint.arrays.find("run regridded reference nodes");
           regridded != checkpoint.arrays.end()) {
@@ -465,6 +480,22 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
           }
         }
       }
+      if (!done && !settled && state.time == tCheck && tether_.preparationRegridInterval > 0.0 &&
+          tau >= progress.nextRegrid * (1.0 - 1e-12)) {
+        // New markers graded towards the free cell's lowest point (TetherRegrid2D.hpp).
+        const TetherRegrid2D regrid = regridTowardsLowestPoint(contour::Contour(model_.freeReferenceNodes()),
+                                                               model_.contour(state.y), tether_.grading);
+        model_.regridFree(regrid.referenceNodes);
+        progress.evaluations += state.statistics.rhsEvaluations;
+        const double proposed = state.proposedStep;
+        const long long accepted = state.statistics.acceptedSteps;
+        state = integrator.start(state.time, std::vector<double>(regrid.currentNodes.data(),
+                                                                 regrid.currentNodes.data() + regrid.currentNodes.size()));
+        state.proposedStep = proposed;
+        state.statistics.acceptedSteps = accepted;
+        const double interval = tether_.preparationRegridInterval;
+        progress.nextRegrid = (std::floor(tau / interval + 1e-9) + 1.0) * interval;
+      }
       if (settled && !done && !tether_.waitForNodeAtBottom) {
         done = true;
       } else if (settled && !done) {
@@ -493,8 +524,8 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     Eigen::Matrix2Xd tethered;
     result.preparationTime = tauOf(state.time);
     if (tether_.regrid) {   // new markers graded towards the lowest point (TetherRegrid2D.hpp)
-      const TetherRegrid2D regrid = regridAtTether(contour::Contour(model_.referenceNodes()), model_.contour(state.y),
-                                                   tether_.grading, anchor);
+      const TetherRegrid2D regrid = regridAtTether(contour::Contour(model_.freeReferenceNodes()),
+                                                   model_.contour(state.y), tether_.grading, anchor);
       tethered = regrid.currentNodes;
       model_.tether(regrid.referenceNodes);
     } else {

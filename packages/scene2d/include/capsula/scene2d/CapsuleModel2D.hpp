@@ -42,6 +42,13 @@ public:
 
   /// The undeformed contour in the free (preparation) labelling.
   const Eigen::Matrix2Xd& referenceNodes() const { return referenceNodes_; }
+  /// The reference positions of the free cell's markers now: referenceNodes() until a
+  /// regridFree().
+  const Eigen::Matrix2Xd& freeReferenceNodes() const { return freeReference_; }
+  bool freeCellRegridded() const { return freeRegridded_; }
+  /// The free cell gets new markers (TetherRegrid2D): node i of the state from now on is the
+  /// material point whose reference position is column i of `referenceNodes`.
+  void regridFree(const Eigen::Matrix2Xd& referenceNodes);
   /// Its length A0 and area (the reference of A/A0 and of the area drift).
   double referenceLength() const { return referenceLength_; }
   double referenceArea() const { return referenceArea_; }
@@ -50,8 +57,8 @@ public:
   std::vector<double> initialState() const;
 
   /// Switches to the tethered cell: node 0 is the material point that was node `offset`
-  /// of the free labelling (the membrane's reference is relabelled the same way) and its
-  /// velocity is zero from now on.
+  /// of the free cell's markers (the membrane's reference, freeReferenceNodes(), is
+  /// relabelled the same way) and its velocity is zero from now on.
   void tether(int offset);
   /// Switches to the tethered cell with new markers (TetherRegrid2D): node i of the state
   /// from now on is the material point whose reference position is column i of
@@ -91,6 +98,8 @@ private:
   double referenceArea_ = 0.0;
   std::optional<int> tetherOffset_;
   Eigen::Matrix2Xd regriddedReference_;
+  Eigen::Matrix2Xd freeReference_;
+  bool freeRegridded_ = false;
   std::unique_ptr<elasticity::ElasticMembrane2D> membrane_;
   std::unique_ptr<operators::InterfaceVelocity2D> velocity_;
   std::optional<operators::WarmStartHistory> warmStart_;

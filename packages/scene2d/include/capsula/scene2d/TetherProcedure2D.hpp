@@ -58,6 +58,8 @@ struct TetherSettings2D {
   /// New markers graded towards the tether at tethering (TetherRegrid2D.hpp).
   bool regrid = false;
   TetherGrading2D grading;
+  /// With regrid: also regrid the free cell every this much tau of the preparation (0: never).
+  double preparationRegridInterval = 0.0;
 };
 
 /// Declares Enabled, Anchor height, Preparation tolerance, Preparation window, Wait for a

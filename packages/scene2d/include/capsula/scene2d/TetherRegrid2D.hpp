@@ -42,14 +42,18 @@ std::vector<double> gradedArcLengths(int markers, double length, const TetherGra
 
 struct TetherRegrid2D {
   Eigen::Matrix2Xd referenceNodes; ///< node 0 is the tether's material point; counter-clockwise
-  Eigen::Matrix2Xd currentNodes;   ///< the same material points now, node 0 at the anchor
+  Eigen::Matrix2Xd currentNodes;   ///< the same material points now (regridAtTether: node 0 at the anchor)
   double tetherArcLength = 0.0;            ///< l of the lowest point on the free contour
   double tetherReferenceArcLength = 0.0;   ///< its l0 on the reference contour
 };
 
 /// Samples the free cell `current` (periodic, same markers as the periodic `reference`) at
-/// numberOfNodes() new material points graded towards its lowest point, and shifts them so
-/// that the lowest point is at `anchor`.
+/// numberOfNodes() new material points graded towards its lowest point (node 0), where it
+/// is: the free cell's markers during the preparation (Tether/Preparation regrid interval).
+TetherRegrid2D regridTowardsLowestPoint(const contour::Contour& reference, const contour::Contour& current,
+                                        const TetherGrading2D& grading);
+
+/// The same, shifted so that the lowest point is at `anchor`: the tethered cell's markers.
 TetherRegrid2D regridAtTether(const contour::Contour& reference, const contour::Contour& current,
                               const TetherGrading2D& grading, const Eigen::Vector2d& anchor);
 
