@@ -36,7 +36,8 @@ MaterialArcLength2D::MaterialArcLength2D(const std::vector<double>& referenceArc
                                : 0.0)),
     meanStretch_(closure == contour::Closure::Periodic ? currentArcLengths.back() / referenceArcLengths.back() : 0.0),
     referenceLength_(referenceArcLengths.back()),
-    currentLength_(currentArcLengths.back())
+    currentLength_(currentArcLengths.back()),
+    periodic_(closure == contour::Closure::Periodic)
 {
 }
 
@@ -52,18 +53,31 @@ double MaterialArcLength2D::stretch(double referenceArcLength) const
 
 double MaterialArcLength2D::referenceArcLength(double currentArcLength) const
 {
-  double l0 = currentArcLength * referenceLength_ / currentLength_;
-  for (int iteration = 0; iteration < 50; ++iteration) {
+  // Newton's method safeguarded by bisection: l(l0) - l changes sign on [lo, hi] and a
+  // Newton step that leaves the bracket is replaced by its midpoint, so round-off cannot make
+  // it cycle. The bracket: [0, L0] on a tethered contour; on a free cell the root lies within
+  // L0 of l L0 / L, because l - (L / L0) l0 is periodic and between -L and L.
+  const auto residual = [&](double l0) { return this->currentArcLength(l0) - currentArcLength; };
+  const double guess = currentArcLength * referenceLength_ / currentLength_;
+  double lo = periodic_ ? guess - referenceLength_ : 0.0;
+  double hi = periodic_ ? guess + referenceLength_ : referenceLength_;
+  core::require(residual(lo) <= 0.0 && residual(hi) >= 0.0, "MaterialArcLength2D: l(l0) does not bracket l = ",
+                currentArcLength, ": the membrane is crushed (stretch <= 0) somewhere");
+  double l0 = guess; // the root for a uniform stretch
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double r = residual(l0);
+    (r < 0.0 ? lo : hi) = l0;
     const double omega = stretch(l0);
-    core::require(omega > 0.0, "MaterialArcLength2D: the stretch is ", omega, " at l0 = ", l0,
-                  ": the membrane is crushed there and l(l0) cannot be inverted");
-    const double step = (this->currentArcLength(l0) - currentArcLength) / omega;
-    l0 -= step;
-    if (std::abs(step) <= 1e-14 * referenceLength_) {
-      return l0;
+    double next = omega > 0.0 ? l0 - r / omega : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) {
+      next = 0.5 * (lo + hi);
     }
+    if (std::abs(next - l0) <= 1e-14 * referenceLength_ || hi - lo <= 1e-14 * referenceLength_) {
+      return next;
+    }
+    l0 = next;
   }
-  core::require(false, "MaterialArcLength2D: Newton's method did not find l0 for l = ", currentArcLength);
+  core::require(false, "MaterialArcLength2D: no l0 found for l = ", currentArcLength);
   return l0;
 }
 

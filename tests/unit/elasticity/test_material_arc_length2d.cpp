@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 using namespace capsula;
 
@@ -50,4 +51,24 @@ TEST(MaterialArcLength2D, NonUniformStretchRoundTrips)
     EXPECT_NEAR(map.stretch(l0), 1.0 + 0.2 * std::cos(l0), 1e-4) << l0;
     EXPECT_NEAR(map.referenceArcLength(map.currentArcLength(l0)), l0, 1e-12) << l0;
   }
+}
+
+TEST(MaterialArcLength2D, StronglyVaryingStretchOnATetheredContourInverts)
+{
+  // l(l0) = l0 + 0.9 sin(l0) on [0, 2 pi]: the stretch 1 + 0.9 cos(l0) goes from 1.9 down to
+  // 0.1, where plain Newton from l L0 / L overshoots; the safeguarded inverse must still
+  // return l0 to round-off, up to the ends of a tethered (open, not-a-knot) contour.
+  const int n = 64;
+  const double pi = std::acos(-1.0);
+  std::vector<double> l0(n + 1), l(n + 1);
+  for (int i = 0; i <= n; ++i) {
+    l0[i] = 2.0 * pi * i / n;
+    l[i] = l0[i] + 0.9 * std::sin(l0[i]);
+  }
+  const elasticity::MaterialArcLength2D map(l0, l, contour::Closure::Tethered);
+  for (const double x : {0.0, 1e-9, 0.4, 2.9, pi, 3.3, 5.0, 2.0 * pi - 1e-9, 2.0 * pi}) {
+    EXPECT_NEAR(map.referenceArcLength(map.currentArcLength(x)), x, 1e-12) << x;
+  }
+  // The spline itself follows l0 + 0.9 sin(l0) to its O(h^4) error.
+  EXPECT_NEAR(map.currentArcLength(pi + 0.05), pi + 0.05 + 0.9 * std::sin(pi + 0.05), 1e-5);
 }

@@ -30,9 +30,9 @@ public:
   double currentArcLength(double referenceArcLength) const;
   /// omega = dl/dl0 at l0.
   double stretch(double referenceArcLength) const;
-  /// The inverse, l0(l), for l in [0, L] (Newton's method from l L0 / L; l(l0) is strictly
-  /// increasing wherever the membrane is not crushed, omega > 0). Throws if it does not
-  /// converge.
+  /// The inverse, l0(l), for l in [0, L] (Newton's method from l L0 / L, safeguarded by
+  /// bisection; l(l0) is strictly increasing wherever the membrane is not crushed, omega > 0).
+  /// Throws if l(l0) - l does not change sign over the bracket.
   double referenceArcLength(double currentArcLength) const;
 
 private:
@@ -40,6 +40,7 @@ private:
   double meanStretch_ = 0.0;
   double referenceLength_ = 0.0;
   double currentLength_ = 0.0;
+  bool periodic_ = true;
 };
 
 } // namespace capsula::elasticity
