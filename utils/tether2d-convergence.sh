@@ -5,9 +5,12 @@
 #                spread from 64 to 320 elements);
 #   quadrature:  maximum tether force for N_GL = 5, 6, 8, 12 (thesis Table 3.2: 3.2525, 3.2469,
 #                3.2474, 3.2475), with and without the near-singular subdivision.
-# Usage: utils/tether2d-convergence.sh BUILD_DIR OUT_DIR [mesh|quadrature|all] [QUADRATURE_N] [GAP]
-#   GAP (default: the deck's 0.005): the initial lowest-point height and the anchor height;
-#   0.1 resolves the film between the cell and the wall at N >= 128 (docs/tether2d.md).
+# Usage: utils/tether2d-convergence.sh BUILD_DIR OUT_DIR [mesh|quadrature|all] [QUADRATURE_N] [GAP] [TETHER_TAU]
+#   GAP (default or empty: the deck's 0.005): the initial lowest-point height and the anchor
+#   height; 0.1 resolves the film between the cell and the wall at N >= 128 (docs/tether2d.md).
+#   TETHER_TAU (default: the preparation's own end): tether every run at this tau instead
+#   (Minimum = Maximum preparation time), so that the runs differ only in the knob studied:
+#   the preparation's end moves by up to 0.03 tau with N_GL at 256 points, and F_max with it.
 # Results: OUT_DIR/mesh.txt, OUT_DIR/quadrature.txt (docs/tether2d.md records them).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -16,6 +19,7 @@ out=${2:?output directory}
 which=${3:-all}
 quadN=${4:-256}
 gap=${5:-}
+tetherTau=${6:-}
 app="$build/apps/tether2d/tether2d"
 deck="$here/input/tether2d/study/ab1_lambda1_ca0.25.xml"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -26,6 +30,9 @@ common=(--set "Time integration/End time=16" --set "Output/Interval=0.25" --set 
         --set "Output/Checkpoint every=0")
 if [[ -n $gap ]]; then
   common+=(--set "Cell/Lowest point height=$gap" --set "Tether/Anchor height=$gap")
+fi
+if [[ -n $tetherTau ]]; then
+  common+=(--set "Tether/Minimum preparation time=$tetherTau" --set "Tether/Maximum preparation time=$tetherTau")
 fi
 
 # F_max of a finished run, or why it failed (the last error line of its log).
