@@ -49,8 +49,9 @@ void declareTetherParameters2D(Teuchos::ParameterList& tether)
   core::declareBool(tether, "Regrid at tethering", defaults.regrid,
                     "true: at tethering, place the markers again at new material points whose spacing "
                     "grows from the tether (h = H min(1, f + (1 - f) d / w), d the reference arc distance from it), "
-                    "so that the thin film between the membrane and the wall next to the tether is "
-                    "resolved; the tether is then the lowest point of the spline. false: keep the free "
+                    "to resolve the thin film between the membrane and the wall next to the tether (it "
+                    "narrows the spread of F_max over N but does not make it converge: docs/tether2d.md); "
+                    "the tether is then the lowest point of the spline. false: keep the free "
                     "cell's markers and tether the one nearest the bottom (the thesis).");
   core::declareReal(tether, "Spacing at the tether", defaults.grading.tetherSpacing,
                     "With Regrid at tethering: f, the marker spacing at the tether as a fraction of the far "

@@ -1,12 +1,13 @@
 #pragma once
-// New markers for the tethered cell, graded towards the tether (an option of the tether
-// procedure, Tether/Regrid at tethering; docs/tether2d.md).
+// New markers graded towards the tether (an option of the tether procedure, Tether/Regrid
+// at tethering and Preparation regrid interval; docs/tether2d.md).
 //
-// Why: at the thesis's anchor height 0.005 the membrane next to the tether runs along the
-// wall in a film 0.01-0.1 thick, 3-10 times thinner than the spacing of 256 even markers,
-// and the tether force does not converge under uniform refinement up to 1024 points.
-// The film's thickness grows about linearly with the distance from the tether (slope
-// ~0.1), so the spacing it needs does too.
+// Why: at the thesis's anchor height 0.005 the membrane next to the tether and under the
+// free cell runs within 0.005-0.1 of the wall, much closer than the spacing of 256 even
+// markers, and the tether force does not converge under uniform refinement up to 1024
+// points. Markers graded towards the tether (and the free cell's towards its lowest point)
+// put the resolution there: they cut the spread of F_max over 64-512 points from 4.5% to
+// 1.3%, but do not make it converge (docs/tether2d.md has the study).
 //
 // How: at the end of the free preparation stage the contour is sampled again at N new
 // material points. Their reference arc lengths, measured from the material point at the
@@ -16,8 +17,7 @@
 // spacing H over the reference arc length w (Graded length), and H chosen so that exactly
 // N markers fill L0. The shape of h is fixed and only H scales like 1/N, so contours of
 // different N are refinements of one grid family (a mesh-convergence study stays one).
-// Each new
-// marker's current position comes from the free cell's own splines: l(l0)
+// Each new marker's current position comes from the free cell's own splines: l(l0)
 // (MaterialArcLength2D) then the point at arc length l, so the shape, the stretch and the
 // tension are those of the free cell up to the splines' O(h^4) interpolation error; its
 // reference position is the point at arc length l0 on the reference contour. The tether is
