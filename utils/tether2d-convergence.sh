@@ -11,6 +11,12 @@
 #   TETHER_TAU (default: the preparation's own end): tether every run at this tau instead
 #   (Minimum = Maximum preparation time), so that the runs differ only in the knob studied:
 #   the preparation's end moves by up to 0.03 tau with N_GL at 256 points, and F_max with it.
+# Environment (optional):
+#   MESH_POINTS   the mesh study's N (default "64 128 192 256 320");
+#   TETHER2D_SET  further deck settings for every run, separated by ';', e.g. the converging
+#                 family of docs/tether2d.md: "Cell/Prestress=0.2;Tether/Regrid at
+#                 tethering=true;Tether/Spacing at the tether=0.1;Tether/Preparation regrid
+#                 interval=0.05" (with TETHER_TAU = 4.2).
 # Results: OUT_DIR/mesh.txt, OUT_DIR/quadrature.txt (docs/tether2d.md records them).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -31,6 +37,12 @@ common=(--set "Time integration/End time=16" --set "Output/Interval=0.25" --set 
 if [[ -n $gap ]]; then
   common+=(--set "Cell/Lowest point height=$gap" --set "Tether/Anchor height=$gap")
 fi
+if [[ -n ${TETHER2D_SET:-} ]]; then
+  IFS=';' read -r -a extra <<< "$TETHER2D_SET"
+  for assignment in "${extra[@]}"; do
+    common+=(--set "$assignment")
+  done
+fi
 if [[ -n $tetherTau ]]; then
   common+=(--set "Tether/Minimum preparation time=$tetherTau" --set "Tether/Maximum preparation time=$tetherTau")
 fi
@@ -46,24 +58,25 @@ maxForce() {
 
 if [[ $which == mesh || $which == all ]]; then
   : > "$out/mesh.txt"
-  for n in 64 128 192 256 320; do
+  for n in ${MESH_POINTS:-64 128 192 256 320}; do
     dir="$out/mesh_N$n"
     start=$(date +%s)
     "$app" "$deck" "${common[@]}" --set "Cell/Number of points=$n" --output "$dir" > "$dir.log" 2>&1 || true
     echo "$n $(maxForce "$dir") $(( $(date +%s) - start ))" | tee -a "$out/mesh.txt"
   done
   # Least-squares fit of F = F_inf + C N^alpha: linear in (F_inf, C) for each alpha on a grid.
-  awk '{ n[NR] = $1; f[NR] = $2 } END {
+  # Failed runs ("failed: ...") are left out of the fit.
+  awk '$2 ~ /^[-0-9.eE+]+$/ { ++m; n[m] = $1; f[m] = $2 } END {
     best = 1e300
     for (a = -4.0; a <= -0.2; a += 0.001) {
       sx = sy = sxx = sxy = 0
-      for (i = 1; i <= NR; ++i) { x = n[i]^a; sx += x; sy += f[i]; sxx += x*x; sxy += x*f[i] }
-      c = (NR*sxy - sx*sy) / (NR*sxx - sx*sx); finf = (sy - c*sx) / NR
-      r = 0; for (i = 1; i <= NR; ++i) { e = f[i] - finf - c*n[i]^a; r += e*e }
+      for (i = 1; i <= m; ++i) { x = n[i]^a; sx += x; sy += f[i]; sxx += x*x; sxy += x*f[i] }
+      c = (m*sxy - sx*sy) / (m*sxx - sx*sx); finf = (sy - c*sx) / m
+      r = 0; for (i = 1; i <= m; ++i) { e = f[i] - finf - c*n[i]^a; r += e*e }
       if (r < best) { best = r; ba = a; bc = c; bf = finf }
     }
-    printf "fit: F_max = %.5f + %.4f N^%.3f (rms residual %.2e); spread 64..320: %.2f%%\n",
-           bf, bc, ba, sqrt(best/NR), 100*(f[1]-f[NR])/f[NR] }' "$out/mesh.txt" | tee -a "$out/mesh.txt"
+    printf "fit: F_max = %.5f + %.4f N^%.3f (rms residual %.2e); spread N_min..N_max: %.2f%%\n",
+           bf, bc, ba, sqrt(best/m), 100*(f[1]-f[m])/f[m] }' "$out/mesh.txt" | tee -a "$out/mesh.txt"
 fi
 
 if [[ $which == quadrature || $which == all ]]; then

@@ -6,6 +6,7 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
 #include <capsula/elasticity/HookeanLaw2D.hpp>
+#include <capsula/elasticity/Prestress2D.hpp>
 
 #include <optional>
 
@@ -27,15 +28,16 @@ CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& com
                                const FlowSettings2D& flow, const operators::ContourDiscretisation2D& discretisation,
                                const operators::SolverParameters& solver)
   : cell_(cell), flow_(flow), discretisation_(discretisation), referenceNodes_(initialCellNodes(cell)),
-    freeReference_(referenceNodes_)
+    freeReference_(elasticity::prestressedReference2D(referenceNodes_, cell.prestress))
 {
   core::require<core::InputError>(!flow.wall || cell.lowestPointHeight > 0.0,
                                   "Cell/Lowest point height must be > 0 above the wall, got ",
                                   cell.lowestPointHeight, ": raise it or set Wall/Enabled to false.");
-  const contour::Contour reference(referenceNodes_);
-  referenceLength_ = reference.length();
-  referenceArea_ = contour::enclosedArea(reference);
-  membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
+  const contour::Contour initial(referenceNodes_);
+  referenceLength_ = initial.length();
+  referenceArea_ = contour::enclosedArea(initial);
+  membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(contour::Contour(freeReference_),
+                                                              elasticity::HookeanLaw2D(1.0));
   velocity_ = operators::makeInterfaceVelocity2D(flow.wall, comm, numberOfNodes(), discretisation, solver);
   if (solver.warmStart && flow.conditions.viscosityRatio != 1.0) {
     warmStart_.emplace();

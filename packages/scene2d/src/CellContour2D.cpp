@@ -26,6 +26,14 @@ void declareCellParameters2D(Teuchos::ParameterList& cell)
                     "Height of the cell's lowest point above y = 0 at the start (the thesis's 0.005). "
                     "With the wall it must be > 0; without it y = 0 is only where the shear flow is "
                     "at rest (-1 centres a circle there).");
+  core::declareReal(cell, "Prestress", defaults.prestress,
+                    "Membrane prestress alpha: the cell starts stretched by 1 + alpha over its unstressed "
+                    "reference (the initial contour shrunk by 1 + alpha about its centroid), with the "
+                    "uniform tension alpha E. The thesis's 2D study has 0; without it the free cell's "
+                    "membrane starts in compression (tension down to -0.147 E at Ca = 0.25), which "
+                    "wrinkles at the grid scale from 512 points on; alpha = 0.2 keeps it in tension. "
+                    "See docs/tether2d.md, wrinkles.",
+                    core::atLeast(0.0), core::lessThan(1.0));
   core::declareChoice(cell, "Tether spline ends", "Natural", {"Natural", "NotAKnot"},
                       "End conditions of the tethered contour's position splines at the tether node. "
                       "Natural (x'' = y'' = 0, thesis A.31-A.32) makes the tangents there, hence the "
@@ -40,6 +48,7 @@ CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell)
   s.aspectRatio = cell.get<double>("Aspect ratio");
   s.numberOfPoints = cell.get<int>("Number of points");
   s.lowestPointHeight = cell.get<double>("Lowest point height");
+  s.prestress = cell.get<double>("Prestress");
   s.tetherEnds = cell.get<std::string>("Tether spline ends") == "Natural" ? contour::TetherEnds::Natural
                                                                           : contour::TetherEnds::NotAKnot;
   return s;

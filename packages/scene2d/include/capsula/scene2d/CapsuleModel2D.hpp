@@ -40,20 +40,21 @@ public:
   const operators::ContourDiscretisation2D& discretisation() const { return discretisation_; }
   std::string kernelName() const { return velocity_->kernelName(); }
 
-  /// The undeformed contour in the free (preparation) labelling.
+  /// The initial contour in the free (preparation) labelling (unstressed unless
+  /// Cell/Prestress > 0).
   const Eigen::Matrix2Xd& referenceNodes() const { return referenceNodes_; }
-  /// The reference positions of the free cell's markers now: referenceNodes() until a
-  /// regridFree().
+  /// The unstressed reference positions of the free cell's markers now: referenceNodes()
+  /// shrunk by 1 + prestress (elasticity/Prestress2D.hpp) until a regridFree().
   const Eigen::Matrix2Xd& freeReferenceNodes() const { return freeReference_; }
   bool freeCellRegridded() const { return freeRegridded_; }
   /// The free cell gets new markers (TetherRegrid2D): node i of the state from now on is the
   /// material point whose reference position is column i of `referenceNodes`.
   void regridFree(const Eigen::Matrix2Xd& referenceNodes);
-  /// Its length A0 and area (the reference of A/A0 and of the area drift).
+  /// The initial contour's length A0 and area (the reference of A/A0 and of the area drift).
   double referenceLength() const { return referenceLength_; }
   double referenceArea() const { return referenceArea_; }
 
-  /// The state at t = 0: the reference nodes, x0, y0, x1, y1, ...
+  /// The state at t = 0: referenceNodes(), x0, y0, x1, y1, ...
   std::vector<double> initialState() const;
 
   /// Switches to the tethered cell: node 0 is the material point that was node `offset`

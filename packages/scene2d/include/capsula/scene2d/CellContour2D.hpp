@@ -13,12 +13,15 @@ struct CellSettings2D {
   double aspectRatio = 1.0;         ///< a/b
   int numberOfPoints = 256;         ///< marker points N_P = segments N_E (closed contour)
   double lowestPointHeight = 0.005; ///< y of the lowest point (the thesis's gap)
+  /// Initial stretch 1 + alpha over the unstressed reference (elasticity/Prestress2D.hpp;
+  /// the thesis's 2D study: 0).
+  double prestress = 0.0;
   /// End conditions of the tethered splines at the tether (thesis A.31-A.32: natural).
   contour::TetherEnds tetherEnds = contour::TetherEnds::Natural;
 };
 
-/// Declares Aspect ratio, Number of points, Lowest point height and Tether spline ends in
-/// `cell`.
+/// Declares Aspect ratio, Number of points, Lowest point height, Prestress and Tether spline
+/// ends in `cell`.
 void declareCellParameters2D(Teuchos::ParameterList& cell);
 
 /// Reads a validated "Cell" sublist.
