@@ -30,9 +30,9 @@ void declareCellParameters2D(Teuchos::ParameterList& cell)
                     "Membrane prestress alpha: the cell starts stretched by 1 + alpha over its unstressed "
                     "reference (the initial contour shrunk by 1 + alpha about its centroid), with the "
                     "uniform tension alpha E. The thesis's 2D study has 0; without it the free cell's "
-                    "membrane starts in compression (tension down to -0.147 E at Ca = 0.25), which "
+                    "membrane starts in compression (tension down to -0.16 E at a/b = 1, Ca = 0.25), which "
                     "wrinkles at the grid scale from 512 points on; alpha = 0.2 keeps it in tension. "
-                    "See docs/tether2d.md, wrinkles.",
+                    "See docs/tether2d.md, what stops the convergence.",
                     core::atLeast(0.0), core::lessThan(1.0));
   core::declareChoice(cell, "Tether spline ends", "Natural", {"Natural", "NotAKnot"},
                       "End conditions of the tethered contour's position splines at the tether node. "
