@@ -7,7 +7,8 @@
 #                3.2474, 3.2475), with and without the near-singular subdivision.
 # Usage: utils/tether2d-convergence.sh BUILD_DIR OUT_DIR [mesh|quadrature|all] [QUADRATURE_N] [GAP] [TETHER_TAU]
 #   GAP (default or empty: the deck's 0.005): the initial lowest-point height and the anchor
-#   height; 0.1 resolves the film between the cell and the wall at N >= 128 (docs/tether2d.md).
+#   height; 0.1 resolves the film between the cell and the wall at N >= 128, but without
+#   Cell/Prestress (TETHER2D_SET) the free cell wrinkles from N = 512 on (docs/tether2d.md).
 #   TETHER_TAU (default: the preparation's own end): tether every run at this tau instead
 #   (Minimum = Maximum preparation time), so that the runs differ only in the knob studied:
 #   the preparation's end moves by up to 0.03 tau with N_GL at 256 points, and F_max with it.

@@ -50,7 +50,7 @@ void declareTetherParameters2D(Teuchos::ParameterList& tether)
                     "true: at tethering, place the markers again at new material points whose spacing "
                     "grows from the tether (h = H min(1, f + (1 - f) d / w), d the reference arc distance from it), "
                     "to resolve the thin film between the membrane and the wall next to the tether (it "
-                    "narrows the spread of F_max over N but does not make it converge: docs/tether2d.md); "
+                    "narrows the spread of F_max over N; with Cell/Prestress = 0.2 it converges: docs/tether2d.md); "
                     "the tether is then the lowest point of the spline. false: keep the free "
                     "cell's markers and tether the one nearest the bottom (the thesis).");
   core::declareReal(tether, "Spacing at the tether", defaults.grading.tetherSpacing,

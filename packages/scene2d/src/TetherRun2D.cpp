@@ -276,6 +276,9 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     checkpoint.integers["run last snapshot"] = progress.lastSnapshot;
     checkpoint.integers["run tether offset"] = model_.tetherOffset();
     checkpoint.reals["run next regrid"] = progress.nextRegrid;
+    // The membrane's reference is rebuilt from the deck on restart, so the deck must have
+    // the same prestress (checked there).
+    checkpoint.reals["run cell prestress"] = model_.cell().prestress;
     if (model_.freeCellRegridded()) {
       const Eigen::Matrix2Xd& free = model_.freeReferenceNodes();
       checkpoint.arrays["run free reference nodes"] = std::vector<double>(free.data(), free.data() + free.size());
@@ -353,6 +356,13 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     result.maxCellLength = checkpoint.reals.at("run max cell length");
     result.maxAbsAreaDrift = checkpoint.reals.at("run max abs area drift");
     result.tethered = progress.stage == Stage::Tethered;
+    // Absent from checkpoints written before Cell/Prestress existed: those runs had none.
+    const auto prestress = checkpoint.reals.find("run cell prestress");
+    const double checkpointPrestress = prestress == checkpoint.reals.end() ? 0.0 : prestress->second;
+    core::require<core::InputError>(checkpointPrestress == model_.cell().prestress, "The checkpoint ", path,
+                                    " was written with Cell/Prestress = ", checkpointPrestress,
+                                    " but the deck has ", model_.cell().prestress,
+                                    ": the membrane's reference would change; restart with the run's deck.");
     if (const auto next = checkpoint.reals.find("run next regrid"); next != checkpoint.reals.end()) {
       progress.nextRegrid = next->second;
     }

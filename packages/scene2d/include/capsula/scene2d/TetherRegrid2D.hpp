@@ -6,8 +6,10 @@
 // free cell runs within 0.005-0.1 of the wall, much closer than the spacing of 256 even
 // markers, and the tether force does not converge under uniform refinement up to 1024
 // points. Markers graded towards the tether (and the free cell's towards its lowest point)
-// put the resolution there: they cut the spread of F_max over 64-512 points from 4.5% to
-// 1.3%, but do not make it converge (docs/tether2d.md has the study).
+// put the resolution there: with the thesis's unstressed membrane they cut the spread of
+// F_max over 64-512 points from 4.5% to 1.3% but do not make it converge (the free cell's
+// compressed membrane wrinkles at the grid scale); with Cell/Prestress = 0.2 F_max converges
+// to 0.1% from 128 graded points on (docs/tether2d.md has both studies).
 //
 // How: at the end of the free preparation stage the contour is sampled again at N new
 // material points. Their reference arc lengths, measured from the material point at the
