@@ -11,8 +11,10 @@
 # next to lambda = 1 (docs/tether2d.md, "Dependence on the viscosity ratio").
 # Usage: utils/tether2d-thesis-lambda.sh BUILD_DIR OUT_DIR [CA] [POINTS] [THESIS_TAU_END]
 #   CA (default 0.25), POINTS (default 256: the study's), THESIS_TAU_END (default 100): the
-#   tethered runs end at this k t. Environment: THESIS_LAMBDAS (default "5 10").
-# Results: OUT_DIR/thesis-lambda.txt. Cost (256 points, Ca = 0.25, THESIS_TAU_END = 100):
+#   tethered runs end at this k t. Environment: THESIS_LAMBDAS (default "5 10");
+#   CORRECT_RUNS: this code's own lambda > 1 run directories (e.g. the study's
+#   ab1_lambda5_ca0.25) to draw next to them.
+# Results: OUT_DIR/thesis-lambda.txt and OUT_DIR/tether2d_thesis_lambda_ca<CA>.png. Cost (256 points, Ca = 0.25, THESIS_TAU_END = 100):
 # 4-5 minutes a run on one core.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -72,3 +74,6 @@ for entry in sys.argv[4:]:
           f"| {100 * s['max']['abs_area_drift']:.3f}% |")
 EOF
 cat "$out/thesis-lambda.txt"
+# shellcheck disable=SC2086 # CORRECT_RUNS is a list of directories
+/usr/bin/python3 "$here/utils/plotting/tether2d_thesis_lambda.py" --out "$out" \
+  "$out/lambda1" "$out"/thesis_lambda* ${CORRECT_RUNS:-}
