@@ -364,4 +364,26 @@ double MembraneMechanics::strainEnergy(const double* positions) const
   return energy;
 }
 
+TangentStiffness MembraneMechanics::tangentStiffness(const double* positions) const
+{
+  core::require<core::InputError>(discretisation_.forceMethod == MembraneForceMethod::VirtualWork,
+                                  "the membrane's tangent stiffness is the second variation of its strain "
+                                  "energy, so it needs the virtual-work load (the contour-integral load is not "
+                                  "an energy gradient)");
+  const mesh::SurfaceMesh& mesh = *mesh_;
+  const std::size_t nq = areaRule_->weight.size();
+  std::vector<ElementStiffness> elements(static_cast<std::size_t>(mesh.numElements()));
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const ElementNodes x = mesh.elementNodes(e, positions);
+    ElementStiffness& K = elements[static_cast<std::size_t>(e)];
+    K.fill(0.0);
+    for (std::size_t q = 0; q < nq; ++q) {
+      core::require<core::NumericalError>(
+        addEnergyHessian(referencePoints_[static_cast<std::size_t>(e) * nq + q], x, *law_, K),
+        "the membrane is crushed in element ", e, " (degenerate tangents at a quadrature point)");
+    }
+  }
+  return TangentStiffness(mesh, std::move(elements));
+}
+
 } // namespace capsula::elasticity

@@ -128,6 +128,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   operators::CellSurfaces surfaces(cells_, description_.viscosityRatio);
   initialPositions_ = surfaces.positions();
   const std::string kernel = description_.wall ? "Wall" : "FreeSpace";
+  kernelKey_ = kernel;
   solver_ = kernels.create(kernel, comm_, std::move(surfaces), discretisation, solverParameters);
   if (solverParameters.warmStart) {
     warmStart_.emplace();

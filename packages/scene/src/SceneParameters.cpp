@@ -1,5 +1,7 @@
 #include "capsula/scene/SceneParameters.hpp"
 
+#include "capsula/scene/StiffSolverParameters.hpp"
+
 #include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
@@ -182,6 +184,9 @@ Teuchos::RCP<const Teuchos::ParameterList> validSceneParameters(const Teuchos::P
   timeint::declareTimeIntegrationParameters(
     core::declareSublist(*valid, "Time integration", "Runge-Kutta time stepping (Section 3.10)."), /*stabilityLimitDefault=*/true);
   operators::declareOperatorParameters(*valid);
+  declareStiffSolverParameters(core::declareSublist(
+    valid->sublist("Solver"), "Stiff",
+    "The linear solves of the stiff time integrators (Time integration/Method ROS34PW2, ROS2, Auto)."));
   mesh::declareRedistributionParameters(core::declareSublist(
     *valid, "Mesh regularisation", "Tangential redistribution of the nodes of a running cell (docs/stability.md)."));
   mesh::declareAdaptionParameters(core::declareSublist(

@@ -7,6 +7,7 @@
 #include "capsula/scene/SceneDescription.hpp"
 #include "capsula/scene/SceneSnapshot.hpp"
 #include "capsula/scene/SummaryJson.hpp"
+#include "capsula/scene/VelocityJacobian.hpp"
 #include "capsula/scene/WallShearStressMap.hpp"
 
 #include <capsula/core/Deck.hpp>
@@ -182,6 +183,8 @@ private:
   bool cellsTooClose();
   void regulariseMeshes();
   void adaptMeshes();
+  void attachJacobian();
+  void step(double tOut);
   std::unique_ptr<Scene> restoredScene() const;
   void writeSummary(const std::string& status, const std::string& note);
   void progress(const timeint::IntegrationState& state, double lastD12);
@@ -196,7 +199,9 @@ private:
   std::string directory_;
   std::unique_ptr<Scene> scene_;
   std::unique_ptr<timeint::TimeIntegrator> integrator_;
+  std::shared_ptr<VelocityJacobian> jacobian_;   // only for the stiff methods
   timeint::IntegrationState state_;
+  std::vector<std::pair<double, std::string>> methodSwitches_;   // Auto, this process
   OutputMetrics metrics_;
   bool restarted_ = false;
   io::Checkpoint restartPoint_;
@@ -289,6 +294,31 @@ Run::Run(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::C
   if (scene_->hasConstraints()) {
     integrator_->setStageConstraint(
       [this](double, const std::vector<double>& y, std::vector<double>& dydt) { scene_->constrain(y, dydt); });
+  }
+  terms_.push_back(timeint::describeTimeIntegration(integrator_->settings()));
+  attachJacobian();
+  if (jacobian_) {
+    terms_.push_back(jacobian_->describe());
+  }
+}
+
+// The stiff methods' Jacobian, for the scene as it is now (again after a mesh adaption).
+void Run::attachJacobian()
+{
+  if (!timeint::needsLinearisedSystem(integrator_->settings().method)) {
+    return;
+  }
+  jacobian_ = std::make_shared<VelocityJacobian>(*scene_, deck_, kernels_);
+  integrator_->setLinearisedSystem(jacobian_);
+}
+
+// One accepted step, and what the integrator decided along the way.
+void Run::step(double tOut)
+{
+  const timeint::StepReport report = integrator_->step(state_, tOut);
+  if (!report.switchReason.empty()) {
+    methodSwitches_.emplace_back(state_.time, report.switchReason);
+    log() << std::setprecision(6) << "t = " << state_.time << ": " << report.switchReason << "\n";
   }
 }
 
@@ -448,6 +478,12 @@ void Run::progress(const timeint::IntegrationState& state, double lastD12)
        << std::setprecision(3) << 100.0 * state.time / end << "%)  step " << state.statistics.acceptedSteps
        << "  dt " << std::scientific << std::setprecision(2) << state.statistics.lastStep
        << std::defaultfloat << std::setprecision(4) << "  D12 " << lastD12 << "  ETA " << clock(eta);
+  if (jacobian_) {   // the stiff methods: which one, and the Krylov work so far
+    const auto& stats = state.statistics;
+    line << "  [" << integrator_->activeMethodName(state) << std::setprecision(3) << ", "
+         << (stats.linearSolves > 0 ? static_cast<double>(stats.linearIterations) / static_cast<double>(stats.linearSolves) : 0.0)
+         << " GMRES it/solve]";
+  }
   log() << line.str() << std::endl;
 }
 
@@ -687,6 +723,7 @@ void Run::adaptMeshes()
                                      std::move(adapted->references));
     state_.y = scene_->initialPositions();
     timeint::stateChangedOutside(state_);
+    attachJacobian();
     for (int c = 0; c < scene_->numCells(); ++c) {
       if (marked[static_cast<std::size_t>(c)] == 0) {
         continue;
@@ -718,12 +755,15 @@ void Run::writeSummary(const std::string& status, const std::string& note)
   for (const auto& term : terms_) {
     summary["terms"].append(term);
   }
-  const auto& stats = state_.statistics;
-  summary["steps"]["accepted"] = static_cast<long long>(stats.acceptedSteps);
-  summary["steps"]["rejected"] = static_cast<long long>(stats.rejectedSteps);
-  summary["steps"]["rhs evaluations"] = static_cast<long long>(stats.rhsEvaluations);
-  summary["steps"]["smallest"] = stats.smallestStep;
-  summary["steps"]["largest"] = stats.largestStep;
+  summary["steps"] = integrationStatisticsJson(state_.statistics);
+  summary["time integration"]["method"] = timeint::toString(integrator_->settings().method);
+  summary["time integration"]["in use"] = integrator_->activeMethodName(state_);
+  for (const auto& [time, reason] : methodSwitches_) {
+    io::JsonValue change = io::JsonValue::object();
+    change["time"] = time;
+    change["reason"] = reason;
+    summary["time integration"]["switches"].append(change);
+  }
   summary["max volume drift"] = maxVolumeDrift_;
   if (scene_->regularisesMeshes()) {
     summary["mesh regularisations"] = static_cast<long long>(regularisations_);
@@ -776,7 +816,8 @@ void Run::writeSummary(const std::string& status, const std::string& note)
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart_).count();
   summary["timings"]["wall seconds (this process)"] = wall;
   for (const char* name : {"Membrane tensions and loads", "Boundary-integral velocity", "Single layer",
-                           "Viscosity-ratio GMRES solve", "Fixed-height constraint", "Flow velocity at points",
+                           "Viscosity-ratio GMRES solve", "Fixed-height constraint", "Stiff Jacobian: linearise",
+                           "Stiff Jacobian: apply", "Stiff Jacobian: preconditioner", "Flow velocity at points",
                            "Cell gap", "Mesh regularisation", "Mesh adaption", "Outputs", "Output files"}) {
     summary["timings"][name] = core::timer(name)->totalElapsedTime();
   }
@@ -818,7 +859,7 @@ SceneRunResult Run::execute()
       }
       const double tOut = integrator_->outputTime(state_.outputOrigin, state_.nextOutput, schedule);
       while (state_.time < tOut) {
-        integrator_->step(state_, tOut);
+        step(tOut);
         regulariseMeshes();
         adaptMeshes();
         tooClose = cellsTooClose();

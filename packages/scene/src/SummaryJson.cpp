@@ -51,4 +51,27 @@ io::JsonValue pairJson(const PairSample& p)
   return v;
 }
 
+io::JsonValue integrationStatisticsJson(const timeint::IntegrationStatistics& s)
+{
+  io::JsonValue v = io::JsonValue::object();
+  v["accepted"] = static_cast<long long>(s.acceptedSteps);
+  v["rejected"] = static_cast<long long>(s.rejectedSteps);
+  v["rhs evaluations"] = static_cast<long long>(s.rhsEvaluations);
+  v["smallest"] = s.smallestStep;
+  v["largest"] = s.largestStep;
+  if (s.stiffSteps > 0 || s.methodSwitches > 0) {
+    v["stiff steps"] = static_cast<long long>(s.stiffSteps);
+    v["rhs evaluations in stiff steps"] = static_cast<long long>(s.stiffRhsEvaluations);
+    v["linearisations"] = static_cast<long long>(s.linearisations);
+    v["linear solves"] = static_cast<long long>(s.linearSolves);
+    v["linear iterations"] = static_cast<long long>(s.linearIterations);
+    v["linear iterations per stiff step"] =
+      s.stiffSteps > 0 ? static_cast<double>(s.linearIterations) / static_cast<double>(s.stiffSteps) : 0.0;
+    v["largest linear iterations"] = static_cast<long long>(s.largestLinearIterations);
+    v["failed linear solves"] = static_cast<long long>(s.failedLinearSolves);
+    v["method switches"] = static_cast<long long>(s.methodSwitches);
+  }
+  return v;
+}
+
 } // namespace capsula::scene

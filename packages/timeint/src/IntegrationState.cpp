@@ -37,6 +37,17 @@ StateRecord toRecord(const IntegrationState& state)
   r.integers["accepted steps"] = state.statistics.acceptedSteps;
   r.integers["rejected steps"] = state.statistics.rejectedSteps;
   r.integers["rhs evaluations"] = state.statistics.rhsEvaluations;
+  r.integers["stiff steps"] = state.statistics.stiffSteps;
+  r.integers["stiff rhs evaluations"] = state.statistics.stiffRhsEvaluations;
+  r.integers["linearisations"] = state.statistics.linearisations;
+  r.integers["linear solves"] = state.statistics.linearSolves;
+  r.integers["linear iterations"] = state.statistics.linearIterations;
+  r.integers["largest linear iterations"] = state.statistics.largestLinearIterations;
+  r.integers["failed linear solves"] = state.statistics.failedLinearSolves;
+  r.integers["method switches"] = state.statistics.methodSwitches;
+  r.integers["stiff active"] = state.stiffActive ? 1 : 0;
+  r.integers["stiffness held steps"] = state.stiffnessHeldSteps;
+  r.reals["stiff advance rate"] = state.stiffAdvanceRate;
   r.arrays["state"] = state.y;
   if (!state.firstStageDerivative.empty()) {
     r.arrays["first stage derivative"] = state.firstStageDerivative;
@@ -65,6 +76,23 @@ IntegrationState fromRecord(const StateRecord& record, const std::string& source
   s.statistics.acceptedSteps = entry(record.integers, "accepted steps", source);
   s.statistics.rejectedSteps = entry(record.integers, "rejected steps", source);
   s.statistics.rhsEvaluations = entry(record.integers, "rhs evaluations", source);
+  // Counters of the stiff method: absent from records of explicit-only versions (0 there).
+  const auto counter = [&record](const char* key) {
+    const auto it = record.integers.find(key);
+    return it == record.integers.end() ? std::int64_t{0} : it->second;
+  };
+  s.statistics.stiffSteps = counter("stiff steps");
+  s.statistics.stiffRhsEvaluations = counter("stiff rhs evaluations");
+  s.statistics.linearisations = counter("linearisations");
+  s.statistics.linearSolves = counter("linear solves");
+  s.statistics.linearIterations = counter("linear iterations");
+  s.statistics.largestLinearIterations = counter("largest linear iterations");
+  s.statistics.failedLinearSolves = counter("failed linear solves");
+  s.statistics.methodSwitches = counter("method switches");
+  s.stiffActive = counter("stiff active") != 0;
+  s.stiffnessHeldSteps = counter("stiffness held steps");
+  const auto rate = record.reals.find("stiff advance rate");
+  s.stiffAdvanceRate = rate == record.reals.end() ? 0.0 : rate->second;
   s.y = entry(record.arrays, "state", source);
   const auto fsal = record.arrays.find("first stage derivative");
   if (fsal != record.arrays.end()) {

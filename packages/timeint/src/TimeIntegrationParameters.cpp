@@ -2,6 +2,7 @@
 
 #include "capsula/core/ParameterDeclaration.hpp"
 
+#include <sstream>
 #include <utility>
 
 namespace capsula::timeint {
@@ -10,10 +11,20 @@ void declareTimeIntegrationParameters(Teuchos::ParameterList& list, bool stabili
 {
   using namespace capsula::core;
   declareReal(list, "End time", 10.0, "Time at which the run ends (in the deck's time unit).");
-  declareChoice(list, "Method", "RKF45", {"RKF45", "DormandPrince45", "RK4"},
+  std::vector<std::string> methods;
+  for (const Method m : allMethods()) {
+    methods.push_back(toString(m));
+  }
+  declareChoice(list, "Method", "RKF45", methods,
                 "RKF45: the thesis's Runge-Kutta-Fehlberg with its step doubling/halving (eqs "
                 "3.47-3.50). DormandPrince45: 5th order with a smooth PI step-size controller. "
-                "RK4: classical Runge-Kutta with fixed steps of 'Initial step'.");
+                "RK4: classical Runge-Kutta with fixed steps of 'Initial step'. ROS34PW2: a "
+                "linearly implicit Rosenbrock-W method of order 3 (L-stable) for stiff membranes: "
+                "its step is limited by accuracy only, each stage solving a linear system with "
+                "the flow operator and the membrane's tangent stiffness (the 'Solver/Stiff' "
+                "settings). ROS2: the same idea at order 2. Auto: RKF45 with the stability limit "
+                "while the membrane is soft, ROS34PW2 while the stability limit holds the step "
+                "well below what accuracy allows (docs/stiff-integration.md).");
   declareReal(list, "Tolerance", 1.0e-6,
               "Local error tolerance. RKF45: eps of eq 3.50 on the largest coordinate error "
               "|x5 - x4| of a step (the thesis used 1e-10 in 3D, 1e-6 in 2D). DormandPrince45: "
@@ -44,6 +55,20 @@ void declareTimeIntegrationParameters(Teuchos::ParameterList& list, bool stabili
              "Accepted steps between two estimates of the fastest decay rate (the first is made "
              "at the first step, and again after anything moves the nodes between steps).",
              1);
+  declareReal(list, "Linear tolerance", 0.01,
+              "ROS34PW2, ROS2, Auto: each stage's linear solve stops when its RMS residual falls "
+              "below this fraction of 'Tolerance' (the solve's error then stays below the local "
+              "error the step is allowed).",
+              greaterThan(0.0), atMost(1.0));
+  declareReal(list, "Auto switch margin", 1.5,
+              "Auto: change method only when the other one is expected to advance at least this "
+              "many times further per operator application (work counted in right-hand sides and "
+              "Krylov iterations).",
+              atLeast(1.0));
+  declareInt(list, "Auto switch steps", 5,
+             "Auto: consecutive explicit steps the stability limit must hold before the stiff "
+             "method takes over.",
+             1);
   declareReal(list, "Steady tolerance", 0.0,
               "Stop when the state stops moving: the 'Steady criterion' measure of an accepted "
               "step falls below this (0: never stop early).",
@@ -68,11 +93,40 @@ TimeIntegrationSettings timeIntegrationSettings(const Teuchos::ParameterList& li
   s.maximumStep = list.get<double>("Maximum step");
   s.stabilityLimit = list.get<bool>("Stability limit");
   s.stabilityInterval = list.get<int>("Stability check interval");
+  s.linearTolerance = list.get<double>("Linear tolerance");
+  s.switchMargin = list.get<double>("Auto switch margin");
+  s.switchSteps = list.get<int>("Auto switch steps");
   s.steadyTolerance = list.get<double>("Steady tolerance");
   s.steadyCriterion = s.steadyTolerance > 0.0
                         ? steadyStateCriterionFromString(list.get<std::string>("Steady criterion"))
                         : SteadyStateCriterion::Off;
   return s;
+}
+
+std::string describeTimeIntegration(const TimeIntegrationSettings& s)
+{
+  std::ostringstream line;
+  line << "time integration: " << toString(s.method);
+  switch (s.method) {
+  case Method::RK4:
+    line << ", fixed steps of " << s.initialStep;
+    return line.str();
+  case Method::ROS34PW2:
+  case Method::ROS2:
+    line << " (Rosenbrock-W, order " << (s.method == Method::ROS2 ? 2 : 3) << ", L-stable), tolerance "
+         << s.tolerance << "; stage solves to " << s.linearTolerance << " x tolerance";
+    return line.str();
+  case Method::Auto:
+    line << ": RKF45 with the stability limit, ROS34PW2 while the limit holds RKF45 more than "
+         << s.switchMargin << " x (the cost of a stiff step over that of an explicit one) below what its "
+         << "error estimate allows, for " << s.switchSteps << " steps; tolerance " << s.tolerance;
+    return line.str();
+  case Method::RKF45:
+  case Method::DormandPrince45:
+    break;
+  }
+  line << ", tolerance " << s.tolerance << (s.stabilityLimit ? ", stability limit" : "");
+  return line.str();
 }
 
 TimeIntegrator makeTimeIntegrator(const Teuchos::ParameterList& list, RightHandSide rhs)

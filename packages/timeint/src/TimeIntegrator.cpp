@@ -59,6 +59,8 @@ std::string shown(double value)
 // than followed by a sliver step.
 constexpr double stretchFraction = 0.01;
 
+// The explicit tableau: the deck's, and for Auto the thesis's RKF45 of its explicit phases
+// (the stiff methods never use it).
 ButcherTableau tableauFor(const TimeIntegrationSettings& s)
 {
   switch (s.method) {
@@ -68,8 +70,30 @@ ButcherTableau tableauFor(const TimeIntegrationSettings& s)
     return dormandPrince45();
   case Method::RK4:
     return classicalRungeKutta4();
+  case Method::ROS34PW2:
+  case Method::ROS2:
+  case Method::Auto:
+    break;
   }
   return rungeKuttaFehlberg45();
+}
+
+RosenbrockTableau rosenbrockFor(const TimeIntegrationSettings& s)
+{
+  return s.method == Method::ROS2 ? ros2() : ros34pw2();
+}
+
+// Gustafsson's PI controller for an error estimate of order k: the exponents 0.7/k and
+// 0.4/k of Hairer & Wanner (Solving ODEs II, IV.8, eq 8.21 with a PI memory), a growth
+// limited to 5x per step as in their stiff codes.
+PiControllerParameters rosenbrockControllerFor(const RosenbrockTableau& t)
+{
+  PiControllerParameters p;
+  const double k = t.errorEstimateOrder();
+  p.alpha = 0.7 / k;
+  p.beta = 0.4 / k;
+  p.maximumFactor = 5.0;
+  return p;
 }
 
 TimeIntegrationSettings checked(TimeIntegrationSettings s)
@@ -96,8 +120,18 @@ TimeIntegrationSettings checked(TimeIntegrationSettings s)
   require<InputError>(!s.localExtrapolation || s.method == Method::RKF45,
                       "Time integration/Local extrapolation applies to Method RKF45 only (Method is ",
                       toString(s.method), "): set it to false.");
+  require<InputError>(std::isfinite(s.linearTolerance) && s.linearTolerance > 0.0 && s.linearTolerance <= 1.0,
+                      "Time integration/Linear tolerance must lie in (0, 1], got ", s.linearTolerance, ".");
+  require<InputError>(std::isfinite(s.switchMargin) && s.switchMargin >= 1.0,
+                      "Time integration/Switch margin must be >= 1, got ", s.switchMargin, ".");
+  require<InputError>(s.switchSteps >= 1, "Time integration/Switch steps must be >= 1, got ", s.switchSteps, ".");
   if (s.method == Method::RK4) {
     s.adaptive = false;
+  }
+  if (s.method == Method::Auto) {
+    // Auto judges stiffness by the stability limit of its explicit phases.
+    require<InputError>(s.adaptive, "internal: Method Auto needs adaptive steps");
+    s.stabilityLimit = true;
   }
   if (s.adaptive) {
     require<InputError>(s.minimumStep <= s.initialStep && s.initialStep <= s.maximumStep,
@@ -113,37 +147,15 @@ TimeIntegrationSettings checked(TimeIntegrationSettings s)
 
 } // namespace
 
-std::string toString(Method method)
-{
-  switch (method) {
-  case Method::RKF45:
-    return "RKF45";
-  case Method::DormandPrince45:
-    return "DormandPrince45";
-  case Method::RK4:
-    return "RK4";
-  }
-  return "RKF45";
-}
-
-Method methodFromString(const std::string& word)
-{
-  for (const auto m : {Method::RKF45, Method::DormandPrince45, Method::RK4}) {
-    if (word == toString(m)) {
-      return m;
-    }
-  }
-  throw core::InputError("Unknown time-integration method '" + word +
-                         "': use one of RKF45, DormandPrince45, RK4.");
-}
-
 TimeIntegrator::TimeIntegrator(TimeIntegrationSettings settings, RightHandSide rhs)
   : settings_(checked(std::move(settings))),
     rhs_(std::move(rhs)),
     tableau_(tableauFor(settings_)),
+    rosenbrock_(rosenbrockFor(settings_)),
     thesisController_(settings_.tolerance),
     piController_(tableau_.hasErrorEstimate() ? tableau_.errorEstimateOrder() : 1,
-                  settings_.piController)
+                  settings_.piController),
+    rosenbrockController_(rosenbrock_.errorEstimateOrder(), rosenbrockControllerFor(rosenbrock_))
 {
   core::require<core::InputError>(static_cast<bool>(rhs_),
                                   "internal: the time integrator needs a right-hand side");
@@ -161,60 +173,25 @@ TimeIntegrator::TimeIntegrator(TimeIntegrationSettings settings, RightHandSide r
                                   " must be at least 1");
 }
 
-void TimeIntegrator::estimateStabilityStep(IntegrationState& state)
-{
-  // Power iteration on J v ~ (f(y + eps v) - f(y)) / eps, f(y) = slopes_[0]. The membrane's
-  // J is a product of a symmetric positive mobility and a symmetric stiffness, so its
-  // dominant eigenvalue is real and negative and |J v| converges to rho from below.
-  const std::size_t n = state.y.size();
-  std::vector<double>& v = state.stabilityVector;
-  int iterations = 3;
-  if (v.size() != n) {   // cold start: a fixed vector with every mode in it
-    v.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      v[i] = std::sin(0.7 * static_cast<double>(i) + 0.3);
-    }
-    iterations = 12;
-  }
-  double scale = 1.0;
-  for (const double yi : state.y) {
-    scale = std::max(scale, std::abs(yi));
-  }
-  probe_.resize(n);
-  double rho = 0.0;
-  for (int k = 0; k < iterations; ++k) {
-    double norm = 0.0, largest = 0.0;
-    for (const double vi : v) {
-      norm += vi * vi;
-      largest = std::max(largest, std::abs(vi));
-    }
-    norm = std::sqrt(norm);
-    // Perturb no coordinate by more than 1e-7 of the state's size: small enough for the
-    // linearisation, large enough against round-off in f (1e-16 / 1e-7 ~ 1e-9 relative).
-    const double eps = 1e-7 * scale / (largest / norm);
-    for (std::size_t i = 0; i < n; ++i) {
-      probe_[i] = state.y[i] + eps * v[i] / norm;
-    }
-    evaluate(state.time, probe_, probeSlope_, state, state.proposedStep, 0);
-    double growth = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      v[i] = (probeSlope_[i] - slopes_[0][i]) / eps;
-      growth += v[i] * v[i];
-    }
-    rho = std::sqrt(growth);
-    if (!(rho > 0.0)) {   // f does not depend on y (or not finitely): no limit
-      v.assign(n, 0.0);
-      v[0] = 1.0;
-      break;
-    }
-  }
-  state.stabilityStep = rho > 0.0 ? 0.8 * stabilityBoundary_ / rho : std::numeric_limits<double>::infinity();
-  state.stepsSinceStabilityEstimate = 0;
-}
-
 void TimeIntegrator::setStageConstraint(StageConstraint constraint)
 {
   constraint_ = std::move(constraint);
+}
+
+void TimeIntegrator::setLinearisedSystem(std::shared_ptr<LinearisedSystem> system)
+{
+  system_ = std::move(system);
+}
+
+bool TimeIntegrator::usesStiffMethod(const IntegrationState& state) const
+{
+  return settings_.method == Method::ROS34PW2 || settings_.method == Method::ROS2 ||
+         (settings_.method == Method::Auto && state.stiffActive);
+}
+
+std::string TimeIntegrator::activeMethodName(const IntegrationState& state) const
+{
+  return usesStiffMethod(state) ? rosenbrock_.name : tableau_.name;
 }
 
 void TimeIntegrator::setDomainCheck(DomainCheck check)
@@ -259,7 +236,7 @@ void TimeIntegrator::evaluate(double t, const std::vector<double>& y, std::vecto
   if (bad != n) {
     throw core::NumericalError(core::message(
       "Time integration failed: the right-hand side is not finite at t = ", shown(t), " (entry ",
-      bad, " of ", n, " is ", dydt[bad], "; stage ", stage + 1, " of the ", tableau_.name,
+      bad, " of ", n, " is ", dydt[bad], "; stage ", stage + 1, " of the ", activeMethodName(state),
       " step from t = ", shown(state.time), " with dt = ", shown(step), "). The state at t = ",
       shown(state.time), " is the last accepted one."));
   }
@@ -269,12 +246,36 @@ StepReport TimeIntegrator::step(IntegrationState& state, double tStop)
 {
   core::require(tStop > state.time, "internal: TimeIntegrator::step needs tStop (", tStop,
                 ") > t (", state.time, ")");
+  core::require<core::InputError>(!needsLinearisedSystem(settings_.method) || system_,
+                                  "Time integration/Method ", toString(settings_.method),
+                                  " needs the Jacobian of the system (a LinearisedSystem), which this model "
+                                  "does not provide: use an explicit method (RKF45, DormandPrince45, RK4).");
   // On failure the state is the last accepted one: restore the controller's proposal too.
   const double proposedBefore = state.proposedStep;
+  const bool stiffBefore = state.stiffActive;
+  const std::int64_t heldBefore = state.stiffnessHeldSteps;
   try {
-    return attemptUntilAccepted(state, tStop);
+    StepReport report;
+    if (settings_.method == Method::Auto && state.stiffActive) {
+      reconsiderExplicitMethod(state, report);   // may hand this step back to RKF45
+    }
+    if (usesStiffMethod(state)) {
+      const std::string reason = report.switchReason;
+      report = attemptLinearlyImplicit(state, tStop);
+      report.switchReason = reason;
+    } else {
+      const std::string reason = report.switchReason;
+      report = attemptUntilAccepted(state, tStop);
+      report.switchReason = reason;
+      if (settings_.method == Method::Auto) {
+        reconsiderStiffMethod(state, report);
+      }
+    }
+    return report;
   } catch (...) {
     state.proposedStep = proposedBefore;
+    state.stiffActive = stiffBefore;
+    state.stiffnessHeldSteps = heldBefore;
     throw;
   }
 }
@@ -295,7 +296,7 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
   } else {
     evaluate(state.time, state.y, slopes_[0], state, state.proposedStep, 0);
   }
-  const bool limited = settings_.adaptive && settings_.stabilityLimit;
+  const bool limited = settings_.adaptive && settings_.stabilityLimit;   // always for Auto
   if (limited && (state.stabilityVector.size() != n ||
                   state.stepsSinceStabilityEstimate >= settings_.stabilityInterval)) {
     estimateStabilityStep(state);
@@ -315,6 +316,7 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
       tNew = tStop;   // exactly, whatever the rounding of time + h
     }
     report.shortened = h < proposed;
+    report.heldByStabilityLimit = limited && proposed == state.stabilityStep;
 
     std::string outside;   // why a stage state or the result left the model's domain, or ""
     try {

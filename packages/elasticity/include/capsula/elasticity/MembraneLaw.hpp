@@ -5,8 +5,9 @@
 // invariants of the left Cauchy-Green tensor B = A A^T (eq 3.29):
 //     I1 = lambda1^2 + lambda2^2 - 2,     I2 = lambda1^2 lambda2^2 - 1,
 // which both vanish in the unstressed state. The Cauchy tension (eq 3.30) needs only
-// the two first derivatives, so adding a law means one small header deriving from
-// MembraneLaw (see NeoHookeanLaw.hpp) plus one line in MembraneLawFactory.cpp.
+// the two first derivatives; the tangent stiffness of the stiff time integrators
+// (MembraneEnergyHessian.hpp) the second ones. Adding a law means one small header
+// deriving from MembraneLaw (see NeoHookeanLaw.hpp) plus one line in MembraneLawFactory.cpp.
 #include <string>
 
 namespace capsula::elasticity {
@@ -15,6 +16,13 @@ namespace capsula::elasticity {
 struct EnergyDerivatives {
   double dI1;
   double dI2;
+};
+
+/// The second derivatives of w at one state.
+struct EnergySecondDerivatives {
+  double dI1dI1;
+  double dI1dI2;
+  double dI2dI2;
 };
 
 class MembraneLaw {
@@ -29,6 +37,8 @@ public:
   virtual double energyDensity(double I1, double I2) const = 0;
   /// (dw/dI1, dw/dI2).
   virtual EnergyDerivatives energyDerivatives(double I1, double I2) const = 0;
+  /// (d2w/dI1^2, d2w/dI1dI2, d2w/dI2^2).
+  virtual EnergySecondDerivatives energySecondDerivatives(double I1, double I2) const = 0;
 };
 
 /// Throws core::InputError naming the law, the modulus and its value unless the

@@ -39,6 +39,7 @@
 #include "capsula/elasticity/MembraneLaw.hpp"
 #include "capsula/elasticity/MembraneTension.hpp"
 #include "capsula/elasticity/SurfaceKinematics.hpp"
+#include "capsula/elasticity/TangentStiffness.hpp"
 
 #include <capsula/mesh/SurfaceMassMatrix.hpp>
 #include <capsula/mesh/SurfaceMesh.hpp>
@@ -143,6 +144,12 @@ public:
   /// int_{S0} w dS0 at `positions`, from the element-wise A at the quadrature points
   /// (no nodal averaging). Independent of evaluate().
   double strainEnergy(const double* positions) const;
+
+  /// VirtualWork only: H = d2E/dx dx at `positions`, the derivative of nodalForces()
+  /// (MembraneEnergyHessian.hpp). Independent of evaluate(). Throws InputError for the
+  /// contour-integral load, which is not the gradient of an energy, and NumericalError
+  /// for a crushed element.
+  TangentStiffness tangentStiffness(const double* positions) const;
 
   /// The same membrane (mesh, law, discretisation) with another reference shape: what a
   /// tangential redistribution of the nodes (mesh::redistributeNodes) leaves behind, the

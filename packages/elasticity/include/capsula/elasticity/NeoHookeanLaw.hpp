@@ -20,6 +20,12 @@ inline EnergyDerivatives neoHookeanEnergyDerivatives(double shearModulus, double
   return {0.5 * shearModulus, -0.5 * shearModulus / (areaRatioSquared * areaRatioSquared)};
 }
 
+inline EnergySecondDerivatives neoHookeanEnergySecondDerivatives(double shearModulus, double /*I1*/, double I2)
+{
+  const double areaRatioSquared = I2 + 1.0;
+  return {0.0, 0.0, shearModulus / (areaRatioSquared * areaRatioSquared * areaRatioSquared)};
+}
+
 class NeoHookeanLaw final : public MembraneLaw {
 public:
   /// Throws InputError unless G is finite and positive.
@@ -37,6 +43,10 @@ public:
   EnergyDerivatives energyDerivatives(double I1, double I2) const override
   {
     return neoHookeanEnergyDerivatives(shearModulus_, I1, I2);
+  }
+  EnergySecondDerivatives energySecondDerivatives(double I1, double I2) const override
+  {
+    return neoHookeanEnergySecondDerivatives(shearModulus_, I1, I2);
   }
 
 private:

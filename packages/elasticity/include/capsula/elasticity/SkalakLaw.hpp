@@ -19,6 +19,11 @@ inline EnergyDerivatives skalakEnergyDerivatives(double shearModulus, double are
   return {0.5 * shearModulus * (I1 + 1.0), 0.5 * shearModulus * (areaDilation * I2 - 1.0)};
 }
 
+inline EnergySecondDerivatives skalakEnergySecondDerivatives(double shearModulus, double areaDilation)
+{
+  return {0.5 * shearModulus, 0.0, 0.5 * shearModulus * areaDilation};
+}
+
 class SkalakLaw final : public MembraneLaw {
 public:
   /// Throws InputError unless G is finite and positive and C finite and non-negative.
@@ -39,6 +44,10 @@ public:
   EnergyDerivatives energyDerivatives(double I1, double I2) const override
   {
     return skalakEnergyDerivatives(shearModulus_, areaDilation_, I1, I2);
+  }
+  EnergySecondDerivatives energySecondDerivatives(double /*I1*/, double /*I2*/) const override
+  {
+    return skalakEnergySecondDerivatives(shearModulus_, areaDilation_);
   }
 
 private:

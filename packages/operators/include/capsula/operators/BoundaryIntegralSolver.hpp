@@ -80,6 +80,10 @@ public:
   /// The raw integrals (no prefactors), for checks and diagnostics; collective, results
   /// on every rank. At the nodes: SL(x_t), 3 per node, and DL(x_t) of a nodal density.
   virtual std::vector<double> singleLayer(const LoadDensity& load) = 0;
+  /// SL(x_t) of a load continuous across the elements, given at the nodes (3 per node):
+  /// the same as singleLayer() up to the near-singular tolerance, its corrections kept
+  /// from one call to the next at one geometry (the applications of a linear solve).
+  virtual std::vector<double> singleLayerOfNodalLoad(const double* nodalLoad) = 0;
   virtual std::vector<double> doubleLayer(const double* density, DoubleLayerForm form) = 0;
   /// At points off the surfaces (3 per point).
   virtual std::vector<double> singleLayerAt(const std::vector<double>& points, const LoadDensity& load) = 0;

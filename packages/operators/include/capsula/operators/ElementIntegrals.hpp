@@ -126,6 +126,32 @@ struct SingleLayerIntegrand {
   }
 };
 
+/// int_E phi_a G_ij(x, x0) dS as value[9 a + 3 i + j] (one group): the single layer of a
+/// load interpolated from the element's six nodes, f = sum_a phi_a f_a, as node blocks
+/// (the corrections a repeated single layer at one geometry keeps).
+template <class Kernel>
+struct NodalSingleLayerIntegrand {
+  static constexpr int size = 54;
+  static constexpr std::array<int, 2> groups = {0, 54};
+  using Value = std::array<double, size>;
+
+  const double* x0;
+
+  void evaluate(const ElementSample& s, Value& value) const
+  {
+    double G[3][3];
+    Kernel::stokeslet(s.x, x0, G);
+    for (int a = 0; a < 6; ++a) {
+      const double w = s.weight * s.phi[a];
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+          value[9 * a + 3 * i + j] = w * G[i][j];
+        }
+      }
+    }
+  }
+};
+
 /// int_E f_i G_ij(x, x0) dS for the load f = sum_a phi_a f_a interpolated from the
 /// element's nodes, as value[j] (one group): the element's term of the single layer
 /// (eq 3.36) when the load is known.

@@ -21,4 +21,15 @@ GmresResult solveWithGmres(const Teuchos::RCP<const Tpetra::Operator<double>>& A
                            const Teuchos::RCP<Tpetra::MultiVector<double>>& x,
                            const SolverParameters& parameters);
 
+/// The same with a right preconditioner M ~ A^-1 (null: none), by flexible GMRES: it
+/// keeps the preconditioned vectors, so its residual estimate is that of the iterate
+/// itself and no explicit residual A x - b is formed to confirm it (an application of A
+/// saved per solve). `zeroInitialGuess`: x holds zeros, so the initial residual is b (one
+/// more application saved). For solves that cost little more than those two.
+GmresResult solveWithGmres(const Teuchos::RCP<const Tpetra::Operator<double>>& A,
+                           const Teuchos::RCP<const Tpetra::Operator<double>>& M,
+                           const Teuchos::RCP<const Tpetra::MultiVector<double>>& b,
+                           const Teuchos::RCP<Tpetra::MultiVector<double>>& x,
+                           const SolverParameters& parameters, bool zeroInitialGuess = false);
+
 } // namespace capsula::operators

@@ -43,6 +43,7 @@ public:
                                    const double* nodeVelocities, const FlowConditions& flow) override;
 
   std::vector<double> singleLayer(const LoadDensity& load) override;
+  std::vector<double> singleLayerOfNodalLoad(const double* nodalLoad) override;
   std::vector<double> doubleLayer(const double* density, DoubleLayerForm form) override;
   std::vector<double> singleLayerAt(const std::vector<double>& points, const LoadDensity& load) override;
   std::vector<double> doubleLayerAt(const std::vector<double>& points, const double* density) override;
@@ -279,6 +280,14 @@ std::vector<double> KernelBoundaryIntegralSolver<Kernel>::singleLayer(const Load
 {
   std::vector<double> rows(3 * static_cast<std::size_t>(distribution_.numOwnedNodes()));
   potentials_.singleLayerAtNodes(load, rows.data());
+  return distribution_.gather(rows);
+}
+
+template <class Kernel>
+std::vector<double> KernelBoundaryIntegralSolver<Kernel>::singleLayerOfNodalLoad(const double* nodalLoad)
+{
+  std::vector<double> rows(3 * static_cast<std::size_t>(distribution_.numOwnedNodes()));
+  potentials_.singleLayerOfNodalLoadAtNodes(nodalLoad, rows.data());
   return distribution_.gather(rows);
 }
 

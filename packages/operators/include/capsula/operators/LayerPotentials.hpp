@@ -17,9 +17,11 @@
 // than the discretisation error (docs/operators.md). The same elements seen from the
 // images, and every farther element of the cell (a cell folding onto itself), are tested
 // as usual.
-// The single-layer corrections are computed with the load at each evaluation; the
-// double-layer ones are 3x3 blocks on nodes, built once per geometry and reused by every
-// application of the GMRES solve. Which elements are near each node target is found once
+// The single-layer corrections are computed with the load at each evaluation, except for
+// a load given at the nodes (singleLayerOfNodalLoadAtNodes, the repeated applications of
+// a stiff time step's linear solve), whose corrections are node blocks like the double
+// layer's; the double-layer ones are 3x3 blocks on nodes, built once per geometry and
+// reused by every application of the GMRES solve. Which elements are near each node target is found once
 // per geometry and shared by both layers.
 //
 // Double layer on a surface (thesis eq 3.44 with the ERRATA sign): with n outward and
@@ -76,6 +78,12 @@ public:
   /// nodes, Delta f interpolated from its values at the element nodes (LoadDensity.hpp).
   void singleLayerAtNodes(const LoadDensity& load, double* result);
 
+  /// The same for a load continuous across the elements, given by its values at the nodes
+  /// (3 per node, global numbering). The singular and near-singular corrections are node
+  /// blocks built on the first call after update() and reused until the next (the result
+  /// agrees with singleLayerAtNodes to the near-singular tolerance).
+  void singleLayerOfNodalLoadAtNodes(const double* nodalLoad, double* result);
+
   /// result[3 t + j] = sum over all cells of PV int u_i T_ijk(x, x_t) n_k dS at the target
   /// nodes, for the density u given at every node (3 per node, global numbering) and
   /// interpolated over each element with its shape functions.
@@ -127,6 +135,8 @@ private:
   typename Integrand::Value singularCorrection(int m, int localNode, const Integrand& integrand,
                                                ParametricRule& rule) const;
   void correctDoubleLayer(int target, TargetCorrections& out, ParametricRule& rule) const;
+  void correctNodalSingleLayer(int target, TargetCorrections& out, ParametricRule& rule) const;
+  void prepareNodalSingleLayerCorrections();
   // The near elements of every node target for the current geometry (findNearElements
   // with the target's neighbourhood), found on first use after update().
   void findNodeNearElements();
@@ -148,6 +158,8 @@ private:
 
   bool hasDoubleCorrections_ = false;
   std::vector<TargetCorrections> corrections_;
+  bool hasSingleCorrections_ = false;
+  std::vector<TargetCorrections> singleCorrections_; // nodal loads; .self unused
   bool hasNodeNear_ = false;
   std::vector<std::vector<int>> nodeNear_; // per node target
   long long nearCount_ = 0;
@@ -279,6 +291,8 @@ void LayerPotentials<Kernel>::update(const CellSurfaces& surfaces)
   }
   hasDoubleCorrections_ = false;
   corrections_.clear();
+  hasSingleCorrections_ = false;
+  singleCorrections_.clear();
   hasNodeNear_ = false;
 }
 
@@ -478,6 +492,112 @@ void LayerPotentials<Kernel>::prepareDoubleLayerCorrections()
     }
   }
   hasDoubleCorrections_ = true;
+}
+
+template <class Kernel>
+void LayerPotentials<Kernel>::correctNodalSingleLayer(int t, TargetCorrections& out, ParametricRule& rule) const
+{
+  const double* x0 = quadrature_.nodePositions().data() + 3 * (firstTarget_ + t);
+  const NodalSingleLayerIntegrand<Kernel> integrand{x0};
+  const auto record = [&](int m, const typename NodalSingleLayerIntegrand<Kernel>::Value& correction) {
+    const auto& nodes = quadrature_.elements().nodes[m];
+    for (int a = 0; a < 6; ++a) {
+      const double* block = &correction[9 * a];
+      const auto found = std::find(out.nodes.begin(), out.nodes.end(), nodes[a]);
+      if (found == out.nodes.end()) {
+        out.nodes.push_back(nodes[a]);
+        out.dbl.insert(out.dbl.end(), block, block + 9);
+      } else {
+        detail::addScaledBlock(&out.dbl[9 * (found - out.nodes.begin())], block, 1.0);
+      }
+    }
+  };
+  for (const auto& [m, localNode] : neighbourhoods_[t].incident) {
+    record(m, singularCorrection(m, localNode, integrand, rule));
+  }
+  for (const int m : nodeNear_[t]) {
+    record(m, nearCorrection(m, integrand));
+  }
+}
+
+template <class Kernel>
+void LayerPotentials<Kernel>::prepareNodalSingleLayerCorrections()
+{
+  if (hasSingleCorrections_) {
+    return;
+  }
+  findNodeNearElements();
+  singleCorrections_.assign(numTargets_, TargetCorrections{});
+#if defined(_OPENMP)
+#pragma omp parallel
+#endif
+  {
+    ParametricRule rule;
+#if defined(_OPENMP)
+#pragma omp for schedule(dynamic, 16)
+#endif
+    for (int t = 0; t < numTargets_; ++t) {
+      correctNodalSingleLayer(t, singleCorrections_[t], rule);
+    }
+  }
+  hasSingleCorrections_ = true;
+}
+
+template <class Kernel>
+void LayerPotentials<Kernel>::singleLayerOfNodalLoadAtNodes(const double* nodalLoad, double* result)
+{
+  prepareNodalSingleLayerCorrections();
+  const QuadraturePoints& p = quadrature_.points();
+  const int nq = quadrature_.pointsPerElement();
+  fx_.resize(p.weight.size());
+  fy_.resize(p.weight.size());
+  fz_.resize(p.weight.size());
+  for (int m = 0; m < quadrature_.numElements(); ++m) {
+    const auto& nodes = quadrature_.elements().nodes[m];
+    for (int k = 0; k < nq; ++k) {
+      const std::size_t q = static_cast<std::size_t>(m) * nq + k;
+      double f[3] = {0.0, 0.0, 0.0};
+      for (int a = 0; a < 6; ++a) {
+        const double phi = p.phi[6 * q + a];
+        for (int i = 0; i < 3; ++i) {
+          f[i] += phi * nodalLoad[3 * nodes[a] + i];
+        }
+      }
+      fx_[q] = f[0] * p.weight[q];
+      fy_[q] = f[1] * p.weight[q];
+      fz_[q] = f[2] * p.weight[q];
+    }
+  }
+  const SingleLayerSources sources = singleLayerSources();
+  const double* positions = quadrature_.nodePositions().data();
+  const auto blocks = detail::nodeBlocks(cells_, firstTarget_, numTargets_);
+  const int numPoints = quadrature_.numPoints();
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(dynamic)
+#endif
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    TargetBlock block;
+    block.start(blocks[b].count);
+    for (int k = 0; k < block.size; ++k) {
+      const double* x0 = positions + 3 * (firstTarget_ + blocks[b].first + k);
+      block.x[k] = x0[0];
+      block.y[k] = x0[1];
+      block.z[k] = x0[2];
+    }
+    block.pad();
+    addSingleLayerSums<Kernel>(block, sources, 0, numPoints);
+    for (int k = 0; k < block.size; ++k) {
+      const int t = blocks[b].first + k;
+      double u[3] = {block.ux[k], block.uy[k], block.uz[k]};
+      const TargetCorrections& corr = singleCorrections_[t];
+      for (std::size_t e = 0; e < corr.nodes.size(); ++e) {
+        detail::addTransposedProduct(&corr.dbl[9 * e], nodalLoad + 3 * corr.nodes[e], u);
+      }
+      for (int j = 0; j < 3; ++j) {
+        result[3 * t + j] = u[j];
+      }
+    }
+  }
 }
 
 template <class Kernel>

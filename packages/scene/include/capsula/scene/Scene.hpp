@@ -97,6 +97,8 @@ public:
   operators::BoundaryIntegralSolver& solver() { return *solver_; }
   const operators::FlowConditions& flow() const { return flow_; }
   std::string kernelName() const { return solver_->kernelName(); }
+  /// The name the kernel registry knows the Green's function by ("Wall", "FreeSpace").
+  const std::string& kernelKey() const { return kernelKey_; }
 
   /// The positions of all nodes the scene was built with (the state at t = 0, or where an
   /// adaption or a restart rebuilt it).
@@ -172,6 +174,7 @@ private:
   std::vector<double> loads_;
   std::vector<double> loadDensity_;
   std::vector<std::string> terms_;
+  std::string kernelKey_;
   std::optional<operators::WarmStartHistory> warmStart_;   // with 'Solver/Warm start'
   Teuchos::RCP<Teuchos::Time> membraneTimer_, velocityTimer_, constraintTimer_;
 };

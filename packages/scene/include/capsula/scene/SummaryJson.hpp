@@ -5,6 +5,7 @@
 #include "capsula/scene/PairMetrics.hpp"
 
 #include <capsula/io/Json.hpp>
+#include <capsula/timeint/IntegrationState.hpp>
 
 namespace capsula::scene {
 
@@ -13,5 +14,9 @@ io::JsonValue sampleJson(const CellSample& s, bool wall);
 
 /// One pair of cells' sample.
 io::JsonValue pairJson(const PairSample& p);
+
+/// The integrator's counters ("steps" of summary.json); those of the stiff methods only
+/// where a stiff step was taken or the method switched.
+io::JsonValue integrationStatisticsJson(const timeint::IntegrationStatistics& s);
 
 } // namespace capsula::scene

@@ -18,6 +18,15 @@ struct IntegrationStatistics {
   double largestStep = 0.0;                                       ///< over accepted steps
   double lastStep = 0.0;                 ///< size of the last accepted step
   double lastErrorNorm = 0.0;            ///< error estimate of the last accepted step
+  // Linearly implicit (stiff) steps; all zero for an explicit method.
+  std::int64_t stiffSteps = 0;           ///< accepted steps taken by the stiff method
+  std::int64_t stiffRhsEvaluations = 0;  ///< right-hand sides evaluated in stiff steps
+  std::int64_t linearisations = 0;       ///< J~ frozen (LinearisedSystem::linearise)
+  std::int64_t linearSolves = 0;         ///< solves with W = I - h gamma J~
+  std::int64_t linearIterations = 0;     ///< their Krylov iterations, summed
+  std::int64_t largestLinearIterations = 0; ///< the most iterations one solve took
+  std::int64_t failedLinearSolves = 0;   ///< solves that did not converge (step rejected)
+  std::int64_t methodSwitches = 0;       ///< Method Auto: changes between explicit and stiff
 };
 
 struct IntegrationState {
@@ -40,6 +49,12 @@ struct IntegrationState {
   std::vector<double> stabilityVector;
   double stabilityStep = std::numeric_limits<double>::infinity();
   std::int64_t stepsSinceStabilityEstimate = 0;
+  /// Method Auto: the stiff method is the one in use; how many consecutive explicit steps
+  /// the stability limit has held; the simulated time per operator application the stiff
+  /// method achieved when it last handed over (0: not measured yet).
+  bool stiffActive = false;
+  std::int64_t stiffnessHeldSteps = 0;
+  double stiffAdvanceRate = 0.0;
   IntegrationStatistics statistics;
 };
 
@@ -57,6 +72,7 @@ struct StateRecord {
 
 /// All fields under fixed names: reals "time", "proposed step", ...; integers
 /// "accepted steps", ...; arrays "state" and, if known, "first stage derivative".
+/// Records written before the stiff-method counters existed read back with those at 0.
 StateRecord toRecord(const IntegrationState& state);
 
 /// The inverse of toRecord. Throws core::InputError naming `source` and the missing

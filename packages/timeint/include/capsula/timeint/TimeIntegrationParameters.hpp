@@ -16,6 +16,8 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <string>
+
 namespace capsula::timeint {
 
 /// Declares the keys of the "Time integration" sublist in `list` (the sublist itself).
@@ -25,6 +27,9 @@ void declareTimeIntegrationParameters(Teuchos::ParameterList& list, bool stabili
 
 /// Settings from a validated "Time integration" sublist.
 TimeIntegrationSettings timeIntegrationSettings(const Teuchos::ParameterList& list);
+
+/// One line for a run's "Terms built": the method, its tolerance and what limits its steps.
+std::string describeTimeIntegration(const TimeIntegrationSettings& settings);
 
 /// The integrator a validated "Time integration" sublist describes. Throws
 /// core::InputError naming the key if the values are inconsistent.

@@ -1,6 +1,6 @@
 #pragma once
-// Explicit Runge-Kutta time integration of dy/dt = f(t, y) over a flat state vector
-// (thesis Section 3.10 / App. A.8: dx_i/dt = u_i for all node coordinates). The
+// Time integration of dy/dt = f(t, y) over a flat state vector (thesis Section 3.10 /
+// App. A.8: dx_i/dt = u_i for all node coordinates), explicit or linearly implicit. The
 // integrator never knows what the state means.
 //
 // Methods and their error control:
@@ -12,6 +12,16 @@
 //   DormandPrince45  5th order advances, FSAL; err = scaled RMS norm with
 //                    sc_i = Tolerance + Relative tolerance * |y_i|; PiStepController.
 //   RK4              classical Runge-Kutta, fixed steps of `initialStep`.
+//   ROS34PW2, ROS2   Rosenbrock-W methods for stiff systems (RosenbrockTableau.hpp): each
+//                    stage solves with W = I - h gamma J~, J~ ~ df/dy frozen at the step's
+//                    start by a LinearisedSystem (setLinearisedSystem); no stability limit on
+//                    the step. err = max_i |e_i| / (Tolerance + Relative tolerance |y_i|);
+//                    PI controller for the estimate's order. A stage solve that does not
+//                    converge rejects the step (a quarter of the step is tried next).
+//   Auto             RKF45 with the stability limit, switching to ROS34PW2 while the limit
+//                    holds the step, and back when the explicit method would advance
+//                    further per unit of work (see MethodSwitch.cpp). Needs a
+//                    LinearisedSystem too.
 // Any method runs with fixed steps when `adaptive` is false (tests, benchmarks).
 //
 // Stability limit (optional, adaptive runs): an elastic membrane makes the system stiff,
@@ -29,10 +39,13 @@
 #include "capsula/core/Error.hpp"
 #include "capsula/timeint/ButcherTableau.hpp"
 #include "capsula/timeint/IntegrationState.hpp"
+#include "capsula/timeint/LinearisedSystem.hpp"
+#include "capsula/timeint/RosenbrockTableau.hpp"
 #include "capsula/timeint/SteadyState.hpp"
 #include "capsula/timeint/StepControllers.hpp"
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -53,12 +66,16 @@ public:
 /// Checks a state; throws StateOutsideDomain if the model is not defined there.
 using DomainCheck = std::function<void(const std::vector<double>& y)>;
 
-enum class Method { RKF45, DormandPrince45, RK4 };
+enum class Method { RKF45, DormandPrince45, RK4, ROS34PW2, ROS2, Auto };
 
-/// "RKF45", "DormandPrince45", "RK4" (the deck spelling).
+/// "RKF45", "DormandPrince45", "RK4", "ROS34PW2", "ROS2", "Auto" (the deck spelling).
 std::string toString(Method method);
 /// The inverse of toString; throws core::InputError naming the word.
 Method methodFromString(const std::string& word);
+/// Every method, in the order of the deck's choice list.
+std::vector<Method> allMethods();
+/// True for the methods that need a LinearisedSystem (ROS34PW2, ROS2, Auto).
+bool needsLinearisedSystem(Method method);
 
 struct TimeIntegrationSettings {
   Method method = Method::RKF45;
@@ -78,6 +95,14 @@ struct TimeIntegrationSettings {
   SteadyStateCriterion steadyCriterion = SteadyStateCriterion::Off;
   double steadyTolerance = 0.0;       ///< steady when the measure falls below this
   PiControllerParameters piController;
+  /// Stiff methods: each stage solve stops at an RMS residual of linearTolerance *
+  /// tolerance (well below the local error the step is allowed).
+  double linearTolerance = 0.01;
+  /// Auto: switch when the other method is expected to advance at least this many times
+  /// further per operator application (hysteresis against switching back and forth).
+  double switchMargin = 1.5;
+  /// Auto: consecutive explicit steps held by the stability limit before switching.
+  int switchSteps = 5;
 };
 
 /// dy/dt = f(t, y). `dydt` arrives sized like `y`; the function fills every entry and
@@ -112,6 +137,12 @@ struct StepReport {
   bool shortened = false;        ///< cut short to land on the stop time
   double steadyMeasure = 0.0;    ///< 0 when steady-state detection is off
   bool steady = false;
+  bool stiff = false;            ///< taken by a linearly implicit method
+  int linearIterations = 0;      ///< Krylov iterations of the accepted attempt's solves
+  /// An explicit step under the stability limit that the limit bound.
+  bool heldByStabilityLimit = false;
+  /// Method Auto: why the method changed after this step ("" if it did not).
+  std::string switchReason;
 };
 
 enum class StopReason { EndTime, SteadyState };
@@ -123,13 +154,20 @@ public:
   TimeIntegrator(TimeIntegrationSettings settings, RightHandSide rhs);
 
   void setStageConstraint(StageConstraint constraint);
+  /// J~ and the solves of the stiff methods (required by ROS34PW2, ROS2 and Auto; the
+  /// integrator shares ownership). It must include the stage constraint (LinearisedSystem.hpp).
+  void setLinearisedSystem(std::shared_ptr<LinearisedSystem> system);
+  bool hasLinearisedSystem() const { return static_cast<bool>(system_); }
   /// Every stage state and every step's result is checked before use (see
   /// StateOutsideDomain); the start state is expected inside.
   void setDomainCheck(DomainCheck check);
 
   const TimeIntegrationSettings& settings() const { return settings_; }
   const ButcherTableau& tableau() const { return tableau_; }
+  const RosenbrockTableau& rosenbrockTableau() const { return rosenbrock_; }
   bool adaptive() const;
+  /// The method the next step of `state` will use: the deck's, or for Auto the active one.
+  std::string activeMethodName(const IntegrationState& state) const;
 
   /// A fresh state at (t0, y0) with the initial step proposed.
   IntegrationState start(double t0, std::vector<double> y0) const;
@@ -156,20 +194,33 @@ private:
   void evaluate(double t, const std::vector<double>& y, std::vector<double>& dydt,
                 IntegrationState& state, double step, int stage);
   StepReport attemptUntilAccepted(IntegrationState& state, double tStop);
+  // LinearlyImplicitStep.cpp: one accepted Rosenbrock-W step.
+  StepReport attemptLinearlyImplicit(IntegrationState& state, double tStop);
   void estimateStabilityStep(IntegrationState& state);
+  bool usesStiffMethod(const IntegrationState& state) const;
+  // MethodSwitch.cpp: Auto's decisions, before and after a step.
+  void reconsiderStiffMethod(IntegrationState& state, StepReport& report);
+  void reconsiderExplicitMethod(IntegrationState& state, StepReport& report);
+  double stiffStepCost(const IntegrationState& state) const;
+  double explicitStepCost() const;
 
   TimeIntegrationSettings settings_;
   RightHandSide rhs_;
   StageConstraint constraint_;
   DomainCheck domainCheck_;
   ButcherTableau tableau_;
+  RosenbrockTableau rosenbrock_;
   ThesisStepController thesisController_;
   PiStepController piController_;
+  PiStepController rosenbrockController_;
+  std::shared_ptr<LinearisedSystem> system_;
   std::vector<double> errorWeights_;        // b - bEmbedded
   // Work arrays, sized on first use.
   std::vector<std::vector<double>> slopes_; // k_1..k_s
   std::vector<double> stageState_, newState_, errorVector_;
   std::vector<double> probe_, probeSlope_;  // stability limit: y + eps v and f there
+  std::vector<std::vector<double>> increments_; // Rosenbrock stage increments u_1..u_s
+  std::vector<double> stageRhs_;             // the right-hand side of a stage solve
   double stabilityBoundary_ = 0.0;           // r of the tableau that advances
 };
 

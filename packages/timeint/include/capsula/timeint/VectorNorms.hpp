@@ -66,6 +66,21 @@ inline double scaledRmsNorm(const double* e, const double* y0, const double* y1,
   return std::sqrt(s / static_cast<double>(n));
 }
 
+/// The mixed absolute/relative error norm in the max norm:
+///   max_i |e_i| / sc_i,  sc_i = atol + rtol max(|y0_i|, |y1_i|)
+/// (acceptable when <= 1): the largest coordinate error measured against the tolerance,
+/// as RKF45's |x5 - x4| is, so that no node's error hides in an average.
+inline double scaledMaxNorm(const double* e, const double* y0, const double* y1, std::size_t n, double atol,
+                            double rtol)
+{
+  double m = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double scale = atol + rtol * std::max(std::abs(y0[i]), std::abs(y1[i]));
+    m = std::max(m, std::abs(e[i]) / scale);
+  }
+  return m;
+}
+
 /// Index of the first non-finite entry, or n if all are finite.
 inline std::size_t firstNonFinite(const double* v, std::size_t n)
 {

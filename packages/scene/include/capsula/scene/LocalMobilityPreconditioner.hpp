@@ -1,0 +1,69 @@
+#pragma once
+// The preconditioner of the stiff stage solves (VelocityJacobian.hpp). The stage matrix
+// is W = I + shift c S M^-1 H (c = 1 / (4 pi (1 + lambda) Ca), S the single layer, M the
+// mass matrix, H the membrane's tangent stiffness). Its stiff part is the product of the
+// nonlocal single layer with the sparse stiffness. Here S M^-1 is replaced by a diagonal
+// local mobility: node i, loaded by a force F spread over its share A_i of the area (a
+// disc of radius R_i = sqrt(A_i / pi)), moves at c beta F / R_i (the single layer of a
+// uniform disc load is 2 F / R normal and 3 F / R tangential at the centre: beta ~ 2.5).
+// The result,
+//     P = I + shift B H,   B = diag(b_i),  b_i = c beta / R_i,
+// is sparse with H's pattern, block diagonal over the cells, and its inverse is applied
+// through the symmetric matrix B^-1 + shift H: P z = x  <=>  (B^-1 + shift H) z = B^-1 x,
+// factorised per cell (sparse LDL^T, sparse LU where that fails) once per shift.
+//
+// On the fast, grid-scale membrane modes S acts locally and P is close to W; the smooth
+// modes, where the nonlocal S is larger than any local mobility, are left to GMRES, a few
+// iterations. Every rank applies P to the whole (replicated) vector.
+#include <capsula/elasticity/TangentStiffness.hpp>
+
+#include <Eigen/Sparse>
+#include <Teuchos_RCP.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Operator.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace capsula::scene {
+
+class LocalMobilityPreconditioner final : public Tpetra::Operator<double> {
+public:
+  using Map = Tpetra::Map<>;
+  using MultiVector = Tpetra::MultiVector<double>;
+
+  /// `map`: locally replicated, 3 unknowns per node of the scene.
+  explicit LocalMobilityPreconditioner(Teuchos::RCP<const Map> map);
+
+  /// The cell whose nodes start at `firstNode`: its stiffness H and mobilities b (one per
+  /// node). Replaces what an earlier call gave for the same cell.
+  void setCell(int cell, int firstNode, const elasticity::TangentStiffness& stiffness, std::vector<double> mobility);
+  /// Factorises B^-1 + shift H of every cell (nothing if the shift has not changed).
+  void setShift(double shift);
+
+  Teuchos::RCP<const Map> getDomainMap() const override { return map_; }
+  Teuchos::RCP<const Map> getRangeMap() const override { return map_; }
+  bool hasTransposeApply() const override { return false; }
+  /// Y = alpha P^-1 X + beta Y. Throws std::invalid_argument for a transpose.
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
+             double alpha = 1.0, double beta = 0.0) const override;
+
+private:
+  using SparseMatrix = Eigen::SparseMatrix<double>;
+  struct CellBlock {
+    int firstNode = 0;
+    SparseMatrix stiffness;            // H
+    Eigen::VectorXd inverseMobility;   // B^-1, 3 entries per node
+    std::unique_ptr<Eigen::SimplicialLDLT<SparseMatrix>> ldlt;
+    std::unique_ptr<Eigen::SparseLU<SparseMatrix>> lu;   // where LDL^T fails
+    bool patternAnalysed = false;
+  };
+
+  Teuchos::RCP<const Map> map_;
+  std::vector<CellBlock> cells_;
+  double shift_ = -1.0;
+  mutable Eigen::VectorXd local_, solved_;
+};
+
+} // namespace capsula::scene

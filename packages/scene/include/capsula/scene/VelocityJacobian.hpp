@@ -1,0 +1,81 @@
+#pragma once
+// The Jacobian the stiff time integrators need (timeint::LinearisedSystem) for a scene's
+// right-hand side dx/dt = u(x) (Scene::velocity), built only when the deck asks for a stiff
+// method. With c_d = 1 / (4 pi (1 + lambda_d) Ca) for the cell d a node belongs to,
+//
+//   J~ v = P [ -c_d S(x_n)[M(x_n)^-1 H(x_n) v] + 2/(1 + lambda_d) grad u_inf . v ],
+//
+// frozen at the step's start x_n: H the membranes' tangent stiffness (second variation
+// of the strain energy, elasticity::TangentStiffness), M their mass matrices (the load is
+// M^-1 of the nodal forces), S the single layer on a geometry of its own frozen at x_n, P
+// the fixed-height constraint (if any) at x_n. Left out: how S, M and the double layer
+// move with the nodes, which is of the size of the load itself and does not make the
+// system stiff; and for lambda != 1 the double layer, which vanishes on the fast
+// grid-scale modes (a locally flat surface has no double layer). The Rosenbrock-W
+// methods keep their order with such a J~; it needs to be right only on the stiff modes.
+//
+// Solves with W = I - shift J~ run Belos GMRES on a locally replicated map
+// (operators::StageOperator) with the LocalMobilityPreconditioner on the right; each
+// application of J~ is one single-layer evaluation, its rows shared by the ranks. The
+// results do not depend on the number of ranks (the right-hand side's do not either).
+#include "capsula/scene/LocalMobilityPreconditioner.hpp"
+#include "capsula/scene/StiffSolverParameters.hpp"
+
+#include <capsula/elasticity/TangentStiffness.hpp>
+#include <capsula/mesh/SurfaceMassMatrix.hpp>
+#include <capsula/operators/BoundaryIntegralSolver.hpp>
+#include <capsula/operators/KernelRegistry.hpp>
+#include <capsula/operators/OperatorParameters.hpp>
+#include <capsula/operators/StageOperator.hpp>
+#include <capsula/timeint/LinearisedSystem.hpp>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+#include <Teuchos_Time.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace capsula::scene {
+
+class Scene;
+
+class VelocityJacobian final : public timeint::LinearisedSystem {
+public:
+  /// For `scene` (it must outlive this object), with the deck's "Solver/Stiff" settings
+  /// and its Discretisation. Throws core::InputError naming the keys if a cell's membrane
+  /// has no tangent stiffness (the contour-integral load).
+  VelocityJacobian(Scene& scene, const Teuchos::ParameterList& deck, const operators::KernelRegistry& kernels);
+
+  void linearise(double t, const std::vector<double>& y) override;
+  timeint::LinearSolveReport solve(double shift, const std::vector<double>& r, std::vector<double>& x,
+                                   double residualRms) override;
+  std::string settingsHint() const override;
+
+  /// y = J~ x at the last linearisation (whole vectors, 3 per node). Collective.
+  void apply(const double* x, double* y);
+  /// One line for the run's "Terms built".
+  std::string describe() const;
+  /// Applications of J~ so far (each one single-layer evaluation).
+  long long applications() const { return applications_; }
+
+private:
+  Scene& scene_;
+  StiffSolverSettings settings_;
+  operators::SolverParameters gmres_;
+  std::unique_ptr<operators::BoundaryIntegralSolver> frozen_;   // the single layer at x_n
+  std::vector<elasticity::TangentStiffness> stiffness_;        // per cell, at x_n
+  std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_;  // per cell, at x_n
+  std::vector<double> frozenPositions_;
+  std::vector<double> coefficient_;    // -c_d per node
+  std::vector<double> flowFactor_;     // 2 / (1 + lambda_d) per node
+  Teuchos::RCP<const Tpetra::Map<>> map_;
+  Teuchos::RCP<operators::StageOperator> stage_;
+  Teuchos::RCP<LocalMobilityPreconditioner> preconditioner_;
+  std::vector<double> forces_, loads_, product_;
+  long long applications_ = 0;
+  Teuchos::RCP<Teuchos::Time> lineariseTimer_, applyTimer_, preconditionerTimer_;
+};
+
+} // namespace capsula::scene

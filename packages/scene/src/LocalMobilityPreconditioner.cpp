@@ -1,0 +1,102 @@
+#include "capsula/scene/LocalMobilityPreconditioner.hpp"
+
+#include <capsula/core/Error.hpp>
+
+#include <stdexcept>
+
+namespace capsula::scene {
+
+LocalMobilityPreconditioner::LocalMobilityPreconditioner(Teuchos::RCP<const Map> map) : map_(std::move(map))
+{
+  core::require(!map_->isDistributed(), "LocalMobilityPreconditioner: the map must be locally replicated");
+}
+
+void LocalMobilityPreconditioner::setCell(int cell, int firstNode, const elasticity::TangentStiffness& stiffness,
+                                          std::vector<double> mobility)
+{
+  core::require(cell >= 0, "LocalMobilityPreconditioner: negative cell");
+  core::require(mobility.size() == static_cast<std::size_t>(stiffness.numNodes()),
+                "LocalMobilityPreconditioner: one mobility per node expected");
+  if (cells_.size() <= static_cast<std::size_t>(cell)) {
+    cells_.resize(static_cast<std::size_t>(cell) + 1);
+  }
+  CellBlock& block = cells_[static_cast<std::size_t>(cell)];
+  const int n = 3 * stiffness.numNodes();
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(stiffness.elements().size() * 18 * 18);
+  stiffness.forEachEntry([&entries](int row, int column, double value) { entries.emplace_back(row, column, value); });
+  SparseMatrix H(n, n);
+  H.setFromTriplets(entries.begin(), entries.end());   // sums the element contributions
+  const bool samePattern = block.patternAnalysed && block.firstNode == firstNode && block.stiffness.rows() == n &&
+                           block.stiffness.nonZeros() == H.nonZeros();
+  block.firstNode = firstNode;
+  block.stiffness = std::move(H);
+  block.inverseMobility.resize(n);
+  for (int k = 0; k < n; ++k) {
+    block.inverseMobility[k] = 1.0 / mobility[static_cast<std::size_t>(k / 3)];
+  }
+  block.patternAnalysed = samePattern;
+  shift_ = -1.0;   // refactorise at the next setShift
+}
+
+void LocalMobilityPreconditioner::setShift(double shift)
+{
+  if (shift == shift_) {
+    return;
+  }
+  for (CellBlock& block : cells_) {
+    SparseMatrix A = shift * block.stiffness;
+    A.diagonal() += block.inverseMobility;   // H has every diagonal entry (a node couples to itself)
+    A.makeCompressed();
+    if (!block.ldlt) {
+      block.ldlt = std::make_unique<Eigen::SimplicialLDLT<SparseMatrix>>();
+    }
+    if (!block.patternAnalysed) {
+      block.ldlt->analyzePattern(A);
+      block.patternAnalysed = true;
+    }
+    block.ldlt->factorize(A);
+    block.lu.reset();
+    if (block.ldlt->info() != Eigen::Success) {
+      // An indefinite H (a membrane in compression) can defeat LDL^T without pivoting.
+      block.lu = std::make_unique<Eigen::SparseLU<SparseMatrix>>();
+      block.lu->compute(A);
+      core::require<core::NumericalError>(block.lu->info() == Eigen::Success,
+                                          "The preconditioner of the stiff stage solve is singular (shift ",
+                                          shift, "): set 'Solver/Stiff/Preconditioner' to None.");
+    }
+  }
+  shift_ = shift;
+}
+
+void LocalMobilityPreconditioner::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode, double alpha,
+                                        double beta) const
+{
+  if (mode != Teuchos::NO_TRANS) {
+    throw std::invalid_argument("LocalMobilityPreconditioner has no transpose apply.");
+  }
+  core::require(shift_ >= 0.0, "LocalMobilityPreconditioner: setShift before apply");
+  for (std::size_t v = 0; v < X.getNumVectors(); ++v) {
+    const auto x = X.getData(v);
+    auto y = Y.getDataNonConst(v);
+    const std::size_t total = map_->getNodeNumElements();
+    std::vector<double> z(x.begin(), x.end());   // nodes of no cell: identity
+    for (const CellBlock& block : cells_) {
+      const auto n = block.stiffness.rows();
+      const std::size_t first = 3 * static_cast<std::size_t>(block.firstNode);
+      local_.resize(n);
+      for (Eigen::Index k = 0; k < n; ++k) {
+        local_[k] = block.inverseMobility[k] * x[first + static_cast<std::size_t>(k)];
+      }
+      solved_ = block.lu ? Eigen::VectorXd(block.lu->solve(local_)) : Eigen::VectorXd(block.ldlt->solve(local_));
+      for (Eigen::Index k = 0; k < n; ++k) {
+        z[first + static_cast<std::size_t>(k)] = solved_[k];
+      }
+    }
+    for (std::size_t k = 0; k < total; ++k) {
+      y[k] = (beta == 0.0 ? 0.0 : beta * y[k]) + alpha * z[k];
+    }
+  }
+}
+
+} // namespace capsula::scene

@@ -1,0 +1,205 @@
+#include "capsula/scene/VelocityJacobian.hpp"
+
+#include "capsula/scene/Scene.hpp"
+
+#include <capsula/core/Error.hpp>
+#include <capsula/core/Timers.hpp>
+#include <capsula/mesh/Measures.hpp>
+#include <capsula/operators/CellSurfaces.hpp>
+#include <capsula/operators/GmresSolve.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace capsula::scene {
+
+namespace {
+
+// The mass-matrix solves inside J~: far below the Krylov tolerances they feed.
+constexpr double kMassSolveTolerance = 1e-11;
+
+} // namespace
+
+VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& deck,
+                                   const operators::KernelRegistry& kernels)
+  : scene_(scene),
+    settings_(readStiffSolverSettings(deck.sublist("Solver").sublist("Stiff"))),
+    lineariseTimer_(core::timer("Stiff Jacobian: linearise")),
+    applyTimer_(core::timer("Stiff Jacobian: apply")),
+    preconditionerTimer_(core::timer("Stiff Jacobian: preconditioner"))
+{
+  const SceneDescription& description = scene.description();
+  for (const CellDescription& cell : description.cells) {
+    core::require<core::InputError>(
+      cell.membraneForces == "Virtual work", "The stiff time integration ('Time integration/Method' ROS34PW2, ROS2 or ",
+      "Auto) needs the membranes' tangent stiffness, the second variation of their strain energy; '", cell.path,
+      "/Membrane forces' = '", cell.membraneForces, "' is not an energy gradient. Set it to 'Virtual work' or "
+      "choose an explicit method (RKF45, DormandPrince45, RK4).");
+  }
+  std::vector<mesh::SurfaceMesh> cells;
+  for (int c = 0; c < scene.numCells(); ++c) {
+    cells.push_back(scene.cell(c));
+  }
+  frozen_ = kernels.create(scene.kernelKey(), scene.comm(),
+                           operators::CellSurfaces(std::move(cells), description.viscosityRatio),
+                           operators::readDiscretisationParameters(deck.sublist("Discretisation")),
+                           operators::readSolverParameters(deck.sublist("Solver")));
+  const int numNodes = scene.numNodes();
+  map_ = Teuchos::rcp(new Tpetra::Map<>(3 * static_cast<Tpetra::global_size_t>(numNodes), 0, scene.comm(),
+                                        Tpetra::LocallyReplicated));
+  stage_ = Teuchos::rcp(new operators::StageOperator(map_, [this](const double* x, double* y) { apply(x, y); }));
+  if (settings_.preconditioned) {
+    preconditioner_ = Teuchos::rcp(new LocalMobilityPreconditioner(map_));
+  }
+  const double lambda = description.viscosityRatio;
+  coefficient_.assign(static_cast<std::size_t>(numNodes),
+                      -1.0 / (4.0 * M_PI * (1.0 + lambda) * scene.flow().capillaryNumber));
+  flowFactor_.assign(static_cast<std::size_t>(numNodes), 2.0 / (1.0 + lambda));
+  gmres_.restart = settings_.restart;
+  gmres_.maximumIterations = settings_.maximumIterations;
+  for (int c = 0; c < scene.numCells(); ++c) {
+    mass_.push_back(std::make_unique<mesh::SurfaceMassMatrix>(scene.cell(c)));
+  }
+}
+
+void VelocityJacobian::linearise(double /*t*/, const std::vector<double>& y)
+{
+  Teuchos::TimeMonitor guard(*lineariseTimer_);
+  frozenPositions_ = y;
+  frozen_->setPositions(y.data());
+  stiffness_.clear();
+  const SceneDescription& description = scene_.description();
+  for (int c = 0; c < scene_.numCells(); ++c) {
+    const double* positions = y.data() + 3 * static_cast<std::size_t>(scene_.nodeOffset(c));
+    try {
+      stiffness_.push_back(scene_.membrane(c).tangentStiffness(positions));
+    } catch (const core::NumericalError& e) {
+      throw core::NumericalError(
+        core::message("The membrane of '", description.cells[static_cast<std::size_t>(c)].path, "' failed: ", e.what()));
+    }
+    mass_[static_cast<std::size_t>(c)]->assemble(positions);
+    if (preconditioner_.is_null()) {
+      continue;
+    }
+    // Node i's share of the area, A_i = sum of its elements' areas / 6 (the shares add up
+    // to the area), and its local mobility c beta / sqrt(A_i / pi).
+    const mesh::SurfaceMesh& cell = scene_.cell(c);
+    const std::vector<double> areas = mesh::elementAreas(cell, positions);
+    std::vector<double> share(static_cast<std::size_t>(cell.numNodes()), 0.0);
+    for (int e = 0; e < cell.numElements(); ++e) {
+      for (const int node : cell.element(e)) {
+        share[static_cast<std::size_t>(node)] += areas[static_cast<std::size_t>(e)] / 6.0;
+      }
+    }
+    const double c0 = -coefficient_[static_cast<std::size_t>(scene_.nodeOffset(c))];
+    std::vector<double> mobility(share.size());
+    for (std::size_t i = 0; i < share.size(); ++i) {
+      mobility[i] = c0 * settings_.mobilityFactor / std::sqrt(share[i] / M_PI);
+    }
+    preconditioner_->setCell(c, scene_.nodeOffset(c), stiffness_.back(), std::move(mobility));
+  }
+}
+
+void VelocityJacobian::apply(const double* x, double* y)
+{
+  Teuchos::TimeMonitor guard(*applyTimer_);
+  ++applications_;
+  const std::size_t n = 3 * static_cast<std::size_t>(scene_.numNodes());
+  forces_.resize(n);
+  loads_.resize(n);
+  for (int c = 0; c < scene_.numCells(); ++c) {
+    const std::size_t first = 3 * static_cast<std::size_t>(scene_.nodeOffset(c));
+    stiffness_[static_cast<std::size_t>(c)].apply(x + first, forces_.data() + first);
+    mass_[static_cast<std::size_t>(c)]->solve(forces_.data() + first, loads_.data() + first, kMassSolveTolerance);
+  }
+  const std::vector<double> single = frozen_->singleLayerOfNodalLoad(loads_.data());
+  const mesh::Mat3& gradient = scene_.flow().background.gradient;
+  for (std::size_t g = 0; g < n / 3; ++g) {
+    for (int i = 0; i < 3; ++i) {
+      const double flow = gradient(i, 0) * x[3 * g] + gradient(i, 1) * x[3 * g + 1] + gradient(i, 2) * x[3 * g + 2];
+      y[3 * g + i] = coefficient_[g] * single[3 * g + i] + flowFactor_[g] * flow;
+    }
+  }
+  if (scene_.hasConstraints()) {
+    product_.assign(y, y + n);
+    scene_.constrain(frozenPositions_, product_);
+    std::copy(product_.begin(), product_.end(), y);
+  }
+}
+
+timeint::LinearSolveReport VelocityJacobian::solve(double shift, const std::vector<double>& r, std::vector<double>& x,
+                                                   double residualRms)
+{
+  timeint::LinearSolveReport report;
+  const std::size_t n = r.size();
+  double norm = 0.0;
+  for (const double v : r) {
+    norm += v * v;
+  }
+  norm = std::sqrt(norm);
+  const double target = residualRms * std::sqrt(static_cast<double>(n));
+  if (norm <= target) {   // x = 0 is already close enough
+    x.assign(n, 0.0);
+    report.converged = true;
+    report.residualRms = norm / std::sqrt(static_cast<double>(n));
+    return report;
+  }
+  stage_->setShift(shift);
+  if (!preconditioner_.is_null()) {
+    Teuchos::TimeMonitor guard(*preconditionerTimer_);
+    preconditioner_->setShift(shift);
+  }
+  using MV = Tpetra::MultiVector<double>;
+  auto b = Teuchos::rcp(new MV(map_, 1));
+  auto solution = Teuchos::rcp(new MV(map_, 1));
+  {
+    auto bData = b->getDataNonConst(0);
+    auto xData = solution->getDataNonConst(0);
+    for (std::size_t k = 0; k < n; ++k) {
+      bData[k] = r[k];
+      xData[k] = x[k];
+    }
+  }
+  operators::SolverParameters parameters = gmres_;
+  parameters.tolerance = std::max(target / norm, 1e-14);
+  const bool zeroGuess = std::all_of(x.begin(), x.end(), [](double v) { return v == 0.0; });
+  const operators::GmresResult result =
+    operators::solveWithGmres(stage_, preconditioner_, b, solution, parameters, zeroGuess);
+  const auto xData = solution->getData(0);
+  x.assign(xData.begin(), xData.end());
+  report.converged = result.converged;
+  report.iterations = result.iterations;
+  report.residualRms = result.residual * norm / std::sqrt(static_cast<double>(n));
+  return report;
+}
+
+std::string VelocityJacobian::settingsHint() const
+{
+  std::ostringstream hint;
+  hint << "(raise 'Solver/Stiff/Maximum iterations' = " << settings_.maximumIterations << " or 'Solver/Stiff/Restart' = "
+       << settings_.restart << (settings_.preconditioned ? "" : ", or set 'Solver/Stiff/Preconditioner' to 'Local mobility'")
+       << ")";
+  return hint.str();
+}
+
+std::string VelocityJacobian::describe() const
+{
+  std::ostringstream line;
+  line << "stiff Jacobian: single layer of the membranes' tangent stiffness, frozen each step";
+  if (scene_.description().viscosityRatio != 1.0) {
+    line << " (double layer left out)";
+  }
+  if (scene_.hasConstraints()) {
+    line << ", fixed-height constraint";
+  }
+  line << "; GMRES (restart " << settings_.restart << ", at most " << settings_.maximumIterations << " iterations)";
+  if (settings_.preconditioned) {
+    line << " with the local-mobility preconditioner (beta = " << settings_.mobilityFactor << ")";
+  } else {
+    line << " without preconditioner";
+  }
+  return line.str();
+}
+
+} // namespace capsula::scene
