@@ -25,6 +25,13 @@ void declareStiffSolverParameters(Teuchos::ParameterList& stiff)
                     "single layer of a uniform load of total force F on a disc of radius R is 2 F / R "
                     "(normal) to 3 F / R (tangential) at its centre).",
                     core::greaterThan(0.0));
+  core::declareInt(stiff, "Quadrature points", defaults.quadraturePoints,
+                   "N_Q of the single layer inside the Jacobian (0: 'Discretisation/Quadrature points'). "
+                   "The Jacobian needs to be right only on the fast membrane modes, which the "
+                   "singular and near-singular corrections carry, so its regular sums can use a "
+                   "smaller rule than the right-hand side's: each application costs about "
+                   "N_Q / 7 of one with the thesis's 7 points (docs/stiff-integration.md).",
+                   0, 19);
 }
 
 StiffSolverSettings readStiffSolverSettings(const Teuchos::ParameterList& stiff)
@@ -34,6 +41,7 @@ StiffSolverSettings readStiffSolverSettings(const Teuchos::ParameterList& stiff)
   s.restart = stiff.get<int>("Restart");
   s.preconditioned = stiff.get<std::string>("Preconditioner") == "Local mobility";
   s.mobilityFactor = stiff.get<double>("Mobility factor");
+  s.quadraturePoints = stiff.get<int>("Quadrature points");
   return s;
 }
 

@@ -41,9 +41,19 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   for (int c = 0; c < scene.numCells(); ++c) {
     cells.push_back(scene.cell(c));
   }
+  operators::DiscretisationParameters discretisation =
+    operators::readDiscretisationParameters(deck.sublist("Discretisation"));
+  if (settings_.quadraturePoints > 0) {
+    discretisation.quadraturePoints = settings_.quadraturePoints;
+    try {
+      operators::validate(discretisation);
+    } catch (const core::InputError& e) {
+      throw core::InputError(core::message("'Solver/Stiff/Quadrature points' = ", settings_.quadraturePoints,
+                                           " has no symmetric triangle rule: ", e.what()));
+    }
+  }
   frozen_ = kernels.create(scene.kernelKey(), scene.comm(),
-                           operators::CellSurfaces(std::move(cells), description.viscosityRatio),
-                           operators::readDiscretisationParameters(deck.sublist("Discretisation")),
+                           operators::CellSurfaces(std::move(cells), description.viscosityRatio), discretisation,
                            operators::readSolverParameters(deck.sublist("Solver")));
   const int numNodes = scene.numNodes();
   map_ = Teuchos::rcp(new Tpetra::Map<>(3 * static_cast<Tpetra::global_size_t>(numNodes), 0, scene.comm(),

@@ -7,6 +7,7 @@
 //     <Parameter name="Restart" type="int" value="60"/>
 //     <Parameter name="Preconditioner" type="string" value="Local mobility"/>
 //     <Parameter name="Mobility factor" type="double" value="2.5"/>
+//     <Parameter name="Quadrature points" type="int" value="3"/>
 //   </ParameterList>
 #include <Teuchos_ParameterList.hpp>
 
@@ -19,6 +20,7 @@ struct StiffSolverSettings {
   int restart = 60;             ///< Krylov vectors kept (Belos "Num Blocks")
   bool preconditioned = true;   ///< "Local mobility" (true) or "None"
   double mobilityFactor = 2.5;  ///< beta of the local mobility beta / R_i (LocalMobilityPreconditioner.hpp)
+  int quadraturePoints = 3;     ///< N_Q of J~'s single layer (0: Discretisation/Quadrature points)
 };
 
 /// Declares the keys of the "Stiff" sublist in `stiff`.
