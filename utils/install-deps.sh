@@ -3,6 +3,11 @@
 # Idempotent and quiet when everything is present; exits non-zero with a clear
 # message if an install fails. Uses sudo when not run as root.
 set -euo pipefail
+if [[ ${1:-} == -h || ${1:-} == --help ]]; then
+  echo "Usage: bash utils/install-deps.sh"
+  echo "Installs the Debian 12 packages Capsula needs that are missing (with sudo unless root)."
+  exit 0
+fi
 
 packages=(
   # build tools

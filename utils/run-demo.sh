@@ -4,6 +4,12 @@
 # minute on 2 cores. Outputs in out/cell3d-demo: metrics.csv, summary.json, snapshots.xdmf
 # (open it in ParaView; the data are in snapshots.h5), checkpoint.h5.
 set -euo pipefail
+if [[ ${1:-} == -h || ${1:-} == --help ]]; then
+  echo "Usage: bash utils/run-demo.sh [BUILD]"
+  echo "Runs input/cell3d/demo.xml on 2 MPI ranks with the cell3d of BUILD (default build);"
+  echo "outputs in out/cell3d-demo."
+  exit 0
+fi
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-build}
 [[ "$build" = /* ]] || build="$here/$build"

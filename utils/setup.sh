@@ -12,7 +12,13 @@ jobs=${JOBS:-$(nproc)}
 
 case "$mode" in
   demo|test) ;;
-  *) echo "usage: utils/setup.sh demo|test" >&2; exit 2 ;;
+  -h|--help)
+    echo "Usage: bash utils/setup.sh demo|test"
+    echo "  demo  install what is missing, build, run the default demo deck"
+    echo "  test  install what is missing, build, run the whole test suite"
+    echo "Environment: BUILD_DIR (default build), JOBS (default: number of cores)."
+    exit 0 ;;
+  *) echo "usage: utils/setup.sh demo|test (see --help)" >&2; exit 2 ;;
 esac
 
 bash utils/install-deps.sh

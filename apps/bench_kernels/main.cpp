@@ -7,7 +7,7 @@
 //            layer, free-space and wall kernels; counters give (target, source) pairs per second.
 // Operators: one node-velocity evaluation of a sphere above the wall (levels 1-3, lambda = 1;
 //            level 2, lambda = 5 with its GMRES solve), one rank; and the geometry update.
-// Wall times on a shared machine: compare runs made at the same load (utils/bench-targets.py
+// Wall times on a shared machine: compare runs made at the same load (utils/bench/bench_targets.py
 // records the load; docs/accuracy-cost.md).
 #include <capsula/mesh/Shapes.hpp>
 #include <capsula/operators/BuiltInKernels.hpp>

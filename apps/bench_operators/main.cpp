@@ -156,7 +156,7 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int level, double la
                 directTime.cpu, surfaces.numNodes(), numPoints);
     std::printf("  ratio velocity / direct  %8.2f  %8.2f\n", velocity.wall / directTime.wall,
                 velocity.cpu / directTime.cpu);
-    std::printf("  reference: 50 ms for the direct sum on 2 cores (the brief); velocity / 50 ms: %.2f (wall)\n",
+    std::printf("  target: 50 ms per velocity evaluation on 2 cores; velocity / 50 ms: %.2f (wall)\n",
                 velocity.wall / 50.0);
     std::printf("  (direct-sum checksum %.6e)\n", sink);
   }

@@ -135,7 +135,7 @@ set_tests_properties(app_cell3d_failure_keeps_checkpoint PROPERTIES LABELS app F
 add_test(NAME app_cell3d_failure_keeps_snapshots COMMAND check_snapshots count ${_failed}/snapshots.h5 1)
 set_tests_properties(app_cell3d_failure_keeps_snapshots PROPERTIES LABELS app FIXTURES_REQUIRED cell3d_failed)
 
-# Fast versions of the validation runs of utils/validate-cell3d.sh (docs/validation-cell3d.md),
+# Fast versions of the validation runs of utils/studies/validate-cell3d.sh (docs/validation-cell3d.md),
 # 2 ranks, mesh level 2, ~10 s each (labels mpi, validation).
 # cell3d_validation(NAME DECK END EXPECTATION...)
 function(cell3d_validation name deck end)

@@ -31,7 +31,7 @@ set_tests_properties(stability_cell3d_contour_integral_load_folds_prestressed_me
   LABELS stability
   PASS_REGULAR_EXPRESSION "error: At t = 0\\.[0-9]+, the membrane of 'Cells/Cell 0' failed: the membrane is folded")
 
-# --- Diagnostics and the hard cases of issue 10 (docs/stability.md) -------------------------
+# --- Diagnostics and the hard cases (docs/stability.md) ------------------------------------
 #
 # Every run below is adaptive (RKF45, tolerance 1e-4) at mesh level 1 on one rank, a few
 # seconds each. metrics.csv carries, per cell and output, the stability diagnostics

@@ -64,11 +64,12 @@ add_test(NAME regression_tether2d_ranks_agree
 set_tests_properties(regression_tether2d_ranks_agree PROPERTIES
   FIXTURES_REQUIRED tether2d_ranks LABELS "mpi;regression")
 
-# The a/b = 0.25 cell tethered at the sharp end of its contour (docs/tether2d.md, a/b = 0.25):
+# The a/b = 0.25 cell tethered at the sharp end of its contour (docs/tether2d-results.md, a/b = 0.25):
 # the preparation's step (k dt = 2e-3) is far too large for the stiff relaxation right after
-# tethering, and the first Runge-Kutta stages drove node 1 through the wall ("the cell has
-# touched the wall", the reduced study at 64 points, Ca = 0.01, 0.025, 0.25). Such attempts
-# are now rejected steps (scene2d/NodesInFluid2D.hpp, a domain check of the time integrator). The run must finish (the preparation
+# tethering, and the first Runge-Kutta stages drive node 1 through the wall (at 64 points,
+# Ca = 0.01, 0.025, 0.25, without the domain check the run stops: "the cell has touched the
+# wall"). Such attempts are rejected steps (scene2d/NodesInFluid2D.hpp, a domain check of the
+# time integrator). The run must finish (the preparation
 # ends by its own criterion at tau = 1.12, node 63 tethered) and stay above the wall: the
 # tether holds node 0 at 0.005, so the contour's lowest point is at most that, and it must
 # not come within 1e-3 of the wall (a fifth of the anchor gap; measured: 0.005 all along).

@@ -75,7 +75,7 @@ set_tests_properties(app_twocell3d_rejects_touching_cells PROPERTIES LABELS app
 # regression wrote it) into one table: one row per cell with the start geometry (h0 = 1.25,
 # centres 2.5 apart in z, surfaces 0.5 apart) and the pair columns filled (distance 2.5000...).
 add_test(NAME app_twocell3d_sweep_gathers_the_table
-  COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/utils/twocell3d-sweep.py --gather-only
+  COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/utils/studies/twocell3d_sweep.py --gather-only
           --out ${CMAKE_CURRENT_BINARY_DIR} --table ${_twoout}/sweep.csv ${_twodecks}/demo.xml)
 set_tests_properties(app_twocell3d_sweep_gathers_the_table PROPERTIES LABELS app
   FIXTURES_REQUIRED twocell3d_demo FIXTURES_SETUP twocell3d_sweep PASS_REGULAR_EXPRESSION "sweep.csv \\(2 rows\\)")

@@ -31,7 +31,7 @@ QUANTITIES = [
     ("contour_length_ratio", "A / A0", "contour_length", (7, 8, 9, 10), "contour_length_ratio"),
     ("cell_length", "L_cell / L", "cell_length", (11, 12, 13, 14), "cell_length"),
     # The force's maximum after the tethering transient (Tether/Force transient): the spike
-    # of the first ~0.01 tau depends on the resolution (docs/tether2d.md).
+    # of the first ~0.01 tau depends on the resolution (docs/tether2d-results.md).
     ("tether_force", "F / E", "tether_force", (15, 16, 17, 18), "tether_force_after_transient"),
     ("leading_edge_velocity", "lambda U_cell / k a", "cell_velocity", (19, 20, 21, None), None),
 ]

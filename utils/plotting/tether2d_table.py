@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The key numbers of a set of tether2d runs as one Markdown table (docs/tether2d.md keeps the
+"""The key numbers of a set of tether2d runs as one Markdown table (docs/tether2d-results.md keeps the
 full study's): per run a/b, lambda, Ca, points, the end of the preparation, the largest tether
 force (every step, and after the tethering transient) with its time, A_max/A0, L_cell,max, the
 largest |area drift| against the thesis's bounds (0.5% at lambda = 1, 1.5% at lambda = 10,

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Figures of the cell3d validation (docs/validation-cell3d.md) from the runs of
-utils/validate-cell3d.sh:
+utils/studies/validate-cell3d.sh:
 
   validation_lac2005_D12.png      D12(t) of the prestressed Skalak capsule (Ca = 1.8,
                                   alpha = 2.5%) on each mesh level, with Lac &
@@ -11,7 +11,7 @@ utils/validate-cell3d.sh:
                                   capsule (Ca -> 0) against h/a, with the reflection
                                   solution of Goldman, Cox & Brenner (1967)
 
-Usage: validation_cell3d.py RUNS FIGDIR   (RUNS: the OUT folder of validate-cell3d.sh, with
+Usage: validation_cell3d.py RUNS FIGDIR   (RUNS: the runs folder of validate-cell3d.sh, with
 lac2005-L<n>/, small-L<n>/, goldman-h<h>-Ca<ca>/). A figure whose runs are missing is
 skipped with a note. Debian's /usr/bin/python3 with python3-matplotlib.
 """
@@ -125,6 +125,9 @@ def goldman(runs, figdir):
 
 
 def main(argv):
+    if len(argv) == 2 and argv[1] in ("-h", "--help"):
+        sys.stdout.write(__doc__)
+        return 0
     if len(argv) != 3:
         sys.stderr.write(__doc__)
         return 2

@@ -14,8 +14,7 @@ void declareContourDiscretisation2D(Teuchos::ParameterList& discretisation)
   const ContourDiscretisation2D defaults;
   core::declareInt(discretisation, "Gauss-Legendre points", defaults.gaussLegendrePoints,
                    "N_GL, Gauss-Legendre points per contour segment (thesis eq A.40). 6 is the "
-                   "thesis choice (Table 3.2: the maximum tether force changes by < 0.1% from 6 "
-                   "to 12); the cost of a velocity evaluation is proportional to it.",
+                   "thesis choice (Table 3.2); the cost of a velocity evaluation is proportional to it.",
                    1, 64);
   core::declareInt(discretisation, "Log-weighted points", defaults.logWeightedPoints,
                    "Points of the Gauss rule with weight -ln(t) for the logarithmic singularity "
@@ -25,9 +24,8 @@ void declareContourDiscretisation2D(Teuchos::ParameterList& discretisation)
   core::declareReal(discretisation, "Near-singular distance", defaults.nearSingularDistance,
                     "A piece of a segment closer than this many of its own lengths to the target "
                     "node or to its image below the wall is bisected, up to 'Near-singular "
-                    "levels' times. 0 turns the subdivision off (thesis practice, inaccurate near the "
-                    "wall: 2e-3 in the double-layer identity at the gap 0.005 and N = 256); 2 "
-                    "keeps the integrals accurate to ~1e-9 there (docs/tether2d.md).",
+                    "levels' times. 0 turns the subdivision off (thesis practice, inaccurate next to "
+                    "the wall); docs/tether2d.md gives the errors of both.",
                     core::atLeast(0.0));
   core::declareInt(discretisation, "Near-singular levels", defaults.nearSingularLevels,
                    "Most bisections of one segment by the near-singular subdivision.", 0, 20);

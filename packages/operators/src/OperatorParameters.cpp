@@ -37,33 +37,31 @@ void declareDiscretisationParameters(Teuchos::ParameterList& discretisation)
                    1, 19);
   core::declareInt(discretisation, "Singular quadrature points", defaults.singularQuadraturePoints,
                    "N_GL, Gauss-Legendre points per direction of the polar coordinates on the "
-                   "elements that hold the target node (thesis eqs 3.42-3.43). With 6 the polar "
-                   "rules err by < 1e-6 of the single layer on a level-3 sphere (3: 2e-4, 4: 6e-5).",
+                   "elements that hold the target node (thesis eqs 3.42-3.43). docs/operators.md "
+                   "gives the error of the polar rules against N_GL.",
                    2, 32);
   core::declareReal(discretisation, "Near-singular tolerance", defaults.nearSingularTolerance,
                     "Accuracy, relative to that element's contribution, to which an element close "
                     "to a target it does not hold (a node of another cell, a flow probe, a node's "
-                    "wall image) is integrated by adaptive subdivision. The estimate is "
-                    "conservative: at 1e-6 the measured errors are 2e-7 to 1e-9.",
+                    "wall image) is integrated by adaptive subdivision. The error estimate is "
+                    "conservative (docs/operators.md).",
                     core::greaterThan(0.0), core::lessThan(1.0));
   core::declareReal(discretisation, "Near-singular distance", defaults.nearSingularDistance,
                     "Targets closer than this many element sizes to an element's bounding sphere get "
-                    "the adaptive subdivision; farther ones use the N_Q-point rule (its error there is "
-                    "~2e-4 of the element's single layer at N_Q = 7). 0 turns the subdivision off "
-                    "(thesis practice).",
+                    "the adaptive subdivision; farther ones use the N_Q-point rule. 0 turns the "
+                    "subdivision off (thesis practice).",
                     core::atLeast(0.0));
   core::declareInt(discretisation, "Regular neighbour rings", defaults.regularNeighbourRings,
                    "Rings of elements around the elements holding a node that keep the N_Q-point "
-                   "rule however near (the node lies in their tangent plane, where the rule is 10-50 "
-                   "times more accurate than off the surface). 0 subdivides them too: on a level-3 "
-                   "sphere the single layer gets ~10x more accurate and an evaluation ~2x dearer.",
+                   "rule however near (the node lies in their tangent plane, where the rule is far "
+                   "more accurate than at the same distance off the surface). 0 subdivides them too: "
+                   "more accurate and dearer (docs/operators.md).",
                    0, 10);
 }
 
 namespace {
 
-void declareSolverKeys(Teuchos::ParameterList& solver, double defaultTolerance, const std::string& toleranceDoc,
-                       const std::string& warmStartDoc)
+void declareSolverKeys(Teuchos::ParameterList& solver, double defaultTolerance, const std::string& toleranceDoc)
 {
   const SolverParameters defaults;
   core::declareReal(solver, "Tolerance", defaultTolerance,
@@ -78,8 +76,8 @@ void declareSolverKeys(Teuchos::ParameterList& solver, double defaultTolerance, 
                     "Start each GMRES solve of a run from the combination of the last 6 solutions "
                     "whose right-hand sides best reproduce the new one (least squares; "
                     "operators::WarmStartHistory) instead of from the right-hand side. RKF45's "
-                    "stages are combinations of the same slopes, so the start is close: " + warmStartDoc +
-                    " The stopping test is relative to ||b||, so its meaning does not change. The "
+                    "stages are combinations of the same slopes, so the start is close and saves "
+                    "GMRES iterations. The stopping test is relative to ||b||, so its meaning does not change. The "
                     "checkpoint carries the history: a restarted run still repeats the uninterrupted "
                     "one bit for bit.");
 }
@@ -88,22 +86,16 @@ void declareSolverKeys(Teuchos::ParameterList& solver, double defaultTolerance, 
 
 void declareSolverParameters(Teuchos::ParameterList& solver)
 {
-  declareSolverKeys(solver, SolverParameters{}.tolerance, "",
-                    "14.4 instead of 25.4 GMRES iterations per solve (256 points, a/b = 1, lambda = 10, "
-                    "tolerance 1e-10).");
+  declareSolverKeys(solver, SolverParameters{}.tolerance, "");
 }
 
 void declareSurfaceSolverParameters(Teuchos::ParameterList& solver)
 {
-  declareSolverKeys(
-    solver, kSurfaceSolverTolerance,
-    " The node velocities err by about this much times the largest |u| (0.2 to 4 times, "
-    "lambda 0.2-10, levels 2-3, near the wall), and the nodes by ~0.45 x this by t = 1; "
-    "the default RKF45 tolerance 1e-6 leaves 2.7e-8 there (level 2, lambda = 5, h/a = 1.6). "
-    "1e-9 keeps the solve ~60 times below the time integration; with a looser "
-    "'Time integration/Tolerance' loosen this by the same factor (1e-3 x it). Each factor "
-    "10 costs about 1.5 GMRES iterations, each ~0.7 of a single-layer evaluation.",
-    "4.1 instead of 12.6 double-layer applications per solve (level 3, lambda = 5).");
+  declareSolverKeys(solver, kSurfaceSolverTolerance,
+                    " The node velocities err by about this much times the largest |u|. The default "
+                    "keeps the solve's error well below that of the default RKF45 tolerance; with a "
+                    "looser 'Time integration/Tolerance' this can follow it (about 1e-3 x it). "
+                    "docs/operators.md gives the errors and iteration counts.");
 }
 
 void declareOperatorParameters(Teuchos::ParameterList& deck)

@@ -20,7 +20,7 @@ void declareCellParameters2D(Teuchos::ParameterList& cell)
                     core::greaterThan(0.0));
   core::declareInt(cell, "Number of points", defaults.numberOfPoints,
                    "Marker points (= spline segments) of the contour; the thesis used 256 (Section "
-                   "3.12.1: the maximum tether force changes by < 0.5% from 256 to 320).",
+                   "3.12.1).",
                    8, 100000);
   core::declareReal(cell, "Lowest point height", defaults.lowestPointHeight,
                     "Height of the cell's lowest point above y = 0 at the start (the thesis's 0.005). "
@@ -29,17 +29,17 @@ void declareCellParameters2D(Teuchos::ParameterList& cell)
   core::declareReal(cell, "Prestress", defaults.prestress,
                     "Membrane prestress alpha: the cell starts stretched by 1 + alpha over its unstressed "
                     "reference (the initial contour shrunk by 1 + alpha about its centroid), with the "
-                    "uniform tension alpha E. The thesis's 2D study has 0; without it the free cell's "
-                    "membrane starts in compression (tension down to -0.16 E at a/b = 1, Ca = 0.25), which "
-                    "wrinkles at the grid scale from 512 points on; alpha = 0.2 keeps it in tension. "
-                    "See docs/tether2d.md, what stops the convergence.",
+                    "uniform tension alpha E. The thesis's 2D study has 0, with which the free cell's "
+                    "membrane starts in compression in shear and wrinkles at the grid scale on fine "
+                    "contours; a prestress that keeps it in tension makes the mesh study converge "
+                    "(docs/tether2d-results.md).",
                     core::atLeast(0.0), core::lessThan(1.0));
   core::declareChoice(cell, "Tether spline ends", "Natural", {"Natural", "NotAKnot"},
                       "End conditions of the tethered contour's position splines at the tether node. "
                       "Natural (x'' = y'' = 0, thesis A.31-A.32) makes the tangents there, hence the "
-                      "tether force, first-order accurate; NotAKnot makes them third-order but the "
-                      "tethered run unstable at fine meshes (256 points blew up right after "
-                      "tethering). See docs/tether2d.md, mesh convergence.");
+                      "tether force, first-order accurate; NotAKnot makes them third-order, but without "
+                      "Cell/Prestress the tethered run is unstable on fine contours "
+                      "(docs/tether2d-results.md).");
 }
 
 CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell)

@@ -31,9 +31,9 @@ void declareTetherParameters2D(Teuchos::ParameterList& tether)
   core::declareBool(tether, "Wait for a node at the bottom", defaults.waitForNodeAtBottom,
                     "true: once the preparation's shape criterion holds, go on until a node passes "
                     "the lowest point of the contour and tether that node (the tether is then the "
-                    "contour's lowest point; the wait is at most one node passage, up to ~0.4 tau "
-                    "at 48 points). false: tether the node nearest the bottom at once (up to half a "
-                    "segment off the lowest point). docs/tether2d.md compares the two.");
+                    "contour's lowest point; the wait is at most one node passage). false: tether "
+                    "the node nearest the bottom at once (up to half a segment off the lowest point). "
+                    "docs/tether2d-results.md compares the two.");
   core::declareReal(tether, "Minimum preparation time", defaults.minimumPreparationTime,
                     "tau before which the preparation stage never ends.", core::atLeast(0.0));
   core::declareReal(tether, "Maximum preparation time", defaults.maximumPreparationTime,
@@ -42,15 +42,15 @@ void declareTetherParameters2D(Teuchos::ParameterList& tether)
   core::declareReal(tether, "Force transient", defaults.forceTransient,
                     "tau after tethering left out of summary.json's max.tether_force_after_transient "
                     "(max.tether_force takes every step). Right after tethering a fast mode next to "
-                    "the tether relaxes within ~0.01 tau; its force spike depends on the resolution "
-                    "(0.63, 0.53, 0.06 at 64, 128, 256 points for a/b = 0.25, Ca = 0.025) and can be "
-                    "the run's largest force on coarse contours (docs/tether2d.md).",
+                    "the tether relaxes within a few hundredths of tau; its force spike depends on the "
+                    "resolution and can be the run's largest force on coarse contours "
+                    "(docs/tether2d-results.md).",
                     core::atLeast(0.0));
   core::declareBool(tether, "Regrid at tethering", defaults.regrid,
                     "true: at tethering, place the markers again at new material points whose spacing "
                     "grows from the tether (h = H min(1, f + (1 - f) d / w), d the reference arc distance from it), "
-                    "to resolve the thin film between the membrane and the wall next to the tether (it "
-                    "narrows the spread of F_max over N; with Cell/Prestress = 0.2 it converges: docs/tether2d.md); "
+                    "to resolve the thin film between the membrane and the wall next to the tether "
+                    "(docs/tether2d-results.md); "
                     "the tether is then the lowest point of the spline. false: keep the free "
                     "cell's markers and tether the one nearest the bottom (the thesis).");
   core::declareReal(tether, "Spacing at the tether", defaults.grading.tetherSpacing,

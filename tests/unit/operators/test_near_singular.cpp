@@ -123,7 +123,7 @@ void expectCurvedElementMatchesReference(const Vec3& centre)
         const auto uRef = integrateAdaptively(element, single, fine, 1e-13);
         const auto d = integrateAdaptively(element, dbl, defaultRule(), defaultTolerance);
         const auto dRef = integrateAdaptively(element, dbl, fine, 1e-13);
-        // The brief's bar: 1e-6 relative to the element's contribution.
+        // The accuracy asked of the subdivision: 1e-6 relative to the element's contribution.
         EXPECT_LT(maxDifference(u, uRef), 1e-6 * maxAbs(uRef)) << "element " << e << " d/h = " << ratio;
         EXPECT_LT(maxDifference(d, dRef), 1e-6 * maxAbs(dRef)) << "element " << e << " d/h = " << ratio;
       }

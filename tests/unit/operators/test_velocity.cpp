@@ -81,7 +81,7 @@ TEST(Velocity, StokesDragOfTranslatingSphere)
     errors.push_back(maxError(u, nodalField(solver->surfaces(), [](const Vec3&) { return U; })));
   }
   const double order = reportConvergence("Stokes sphere: u = U at the nodes", levels, errors);
-  // The brief's bar is 0.5% at level 3; the error is that of int G dS on the sphere,
+  // The accuracy asked of the operator is 0.5% at level 3; the error is that of int G dS on the sphere,
   // second order (test_identities), ~1e-4 at level 3.
   EXPECT_LT(errors.back(), 5e-3);
   EXPECT_LT(errors.back(), 2e-4);

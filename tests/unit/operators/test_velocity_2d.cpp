@@ -256,8 +256,8 @@ std::vector<double> velocitiesWithInwardNormal(operators::InterfaceVelocity2D& v
 TEST(InterfaceVelocity2D, ThesisInwardNormalTurnsLambdaIntoItsInverse)
 {
   // Why the thesis's Chapter 4 finds deformation, cell length and tether force growing with
-  // lambda at Ca = 0.25 where this code finds them falling (docs/tether2d.md, "Dependence
-  // on the viscosity ratio"): with the normal of eqs A.26-A.27 on its anticlockwise contour
+  // lambda at Ca = 0.25 where this code finds them falling (docs/tether2d-results.md, "The
+  // thesis's lambda read as 1/lambda"): with the normal of eqs A.26-A.27 on its anticlockwise contour
   // the double layer flips sign. Multiplying that equation by lambda shows that lambda times
   // its solution solves the correct equation at 1/lambda, for any contour and load:
   //   lambda u_inward(lambda) = u(1 / lambda),
@@ -314,7 +314,7 @@ TEST(InterfaceVelocity2D, DoubleLayerKeepsTheFluxOfAVelocity)
   // int n . DL[u] / (2 pi) dl = int n . u dl on a closed contour (the double layer's
   // eigenvalue +1 for the flux; rigid motions, of zero flux, have -1). So eq A.35 damps the
   // flux, i.e. the area change, by 1 - (1 - lambda)/(1 + lambda) = 2 lambda/(1 + lambda):
-  // the reason the area drift grows as lambda -> 0 (docs/tether2d.md). u has a flux of
+  // the reason the area drift grows as lambda -> 0 (docs/tether2d-results.md). u has a flux of
   // O(1) here; the nodal rule (arc-length weights around each node, 128 nodes on an
   // ellipse) is second order: they agree to 3e-5 of it (measured), and the tolerance 1e-3
   // is still 2000 times below the 2 flux that the opposite sign would be off by.

@@ -17,7 +17,7 @@ using namespace capsula::scene2d;
 namespace {
 
 // A node relaxing onto the film height h = 0.005 at the rate mu: y' = -mu (y - h), x' = 0.
-// mu h_step >> 1 is the stiff mode of a freshly tethered a/b = 0.25 cell (docs/tether2d.md).
+// mu h_step >> 1 is the stiff mode of a freshly tethered a/b = 0.25 cell (docs/tether2d-results.md).
 constexpr double film = 0.005;
 constexpr double rate = 5000.0;
 

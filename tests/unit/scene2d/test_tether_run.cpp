@@ -44,7 +44,7 @@ TEST(TetherRun2D, FreeCapsuleInShearReachesTheSmallDeformationShape)
   // change (a mode-2 wrinkle at fixed length does not stretch it). The mean tension is
   // set by the perimeter increase 3 D^2 / 4 of an area-preserving mode-2 shape, and its
   // normal load 3 D gamma / Ca must balance the strain of the shear flow: the steady
-  // tank-treading shape has D12 = (4 Ca / 3)^(1/3) (1 + O(D^2)) (docs/tether2d.md). Measured
+  // tank-treading shape has D12 = (4 Ca / 3)^(1/3) (1 + O(D^2)) (docs/tether2d-results.md). Measured
   // at 64 points: 0.1855, 0.2317, 0.2884 for Ca = 0.005, 0.01, 0.02 against 0.1882, 0.2371,
   // 0.2988; the gap, 0.42 D^2, is the next order. At 32 points and Ca = 0.01: within 3%.
   const double ca = 0.01;
@@ -312,7 +312,7 @@ TEST(TetherRun2D, RegriddedCellIsTetheredAtTheLowestPointOfItsSpline)
 
 TEST(TetherRun2D, AreaDriftStaysSmallAtLambdaTen)
 {
-  // The short version of the area-drift check (docs/tether2d.md has the full runs: the
+  // The short version of the area-drift check (docs/tether2d-results.md has the full runs: the
   // thesis kept it below 1.5% at lambda = 10): 40 points, a/b = 0.5, Ca = 0.1, lambda = 10,
   // through tethering to tau = 1. The GMRES path with its double layer is exercised.
   const auto deck = tether2dDeck({"Cell/Number of points=40", "Cell/Aspect ratio=0.5", "Flow/Viscosity ratio=10",

@@ -5,8 +5,8 @@
 // initial membrane carries the uniform tension E alpha (HookeanLaw2D). The thesis's 2D study
 // (Chapter 4) has alpha = 0; a free cell in shear then starts with compressed arcs (the
 // smallest tension is -0.147 E at tau = 0.7 for a/b = 1, Ca = 0.25), which a membrane
-// without bending stiffness cannot resist: it wrinkles at the grid scale (docs/tether2d.md,
-// "What stops the convergence").
+// without bending stiffness cannot resist: it wrinkles at the grid scale
+// (docs/tether2d-results.md, "What stops the convergence").
 #include <Eigen/Core>
 
 namespace capsula::elasticity {

@@ -1,5 +1,5 @@
 #pragma once
-// Diagnostics of the numerical health of one cell at an output time (issue 10): how far
+// Diagnostics of the numerical health of one cell at an output time (docs/stability.md): how far
 // its mesh has degraded, whether its membrane is in compression (the precursor of
 // buckling), and how well the gap to the wall is resolved. Observers compute them at
 // output times, never inside the right-hand side; they cost one pass over the elements.

@@ -8,7 +8,7 @@
 // (and the state a smaller step would reach) stays above it. Right after tethering an
 // a/b = 0.25 cell at the sharp end of its contour, the relaxation of the tether node's
 // stretch is such a mode: with the preparation's step (k dt = 2e-3 .. 2.5e-2) the first
-// stages threw node 1 through the wall at 64 and 128 points (docs/tether2d.md, a/b = 0.25).
+// stages put node 1 through the wall at 64 and 128 points (docs/tether2d-results.md, a/b = 0.25).
 // requireNodesInFluid is the tether run's domain check (TimeIntegrator::setDomainCheck):
 // such an attempt is then a rejected step, retried with half the step, and the run fails
 // only when the step collapses below the minimum.

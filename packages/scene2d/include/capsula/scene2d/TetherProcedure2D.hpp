@@ -29,9 +29,9 @@
 // lower unbounded value (D12 = 0.61 at tau = 15, 1.3 above the wall): the rate crosses the
 // tolerance just before that maximum, the thesis's "maximum extent". The rate is a
 // difference over a fixed window of tau, not over one time step: the step-to-step rate
-// carries the grid-scale noise of the near-wall region (it fell below 1e-3 for one step at
-// tau = 4.74 with 64 points and 4.94 with 128 while D12 still grew by 0.01 per tau), so the
-// stage used to end at a resolution-dependent, noise-picked time. The tether node is moved
+// carries the grid-scale noise of the near-wall region (it falls below 1e-3 for one step at
+// tau = 4.74 with 64 points and 4.94 with 128 while D12 still grows by 0.01 per tau) and
+// would end the stage at a resolution-dependent, noise-picked time. The tether node is moved
 // with the whole contour to the anchor (0, Anchor height) and relabelled node 0 (a cyclic
 // relabelling keeps the nodes counter-clockwise), the contour becomes a tethered spline,
 // the tether node's velocity is held at zero, and time restarts: tau = k (t - t0) / lambda.

@@ -9,7 +9,7 @@
 // put the resolution there: with the thesis's unstressed membrane they cut the spread of
 // F_max over 64-512 points from 4.5% to 1.3% but do not make it converge (the free cell's
 // compressed membrane wrinkles at the grid scale); with Cell/Prestress = 0.2 F_max converges
-// to 0.1% from 128 graded points on (docs/tether2d.md has both studies).
+// to 0.1% from 128 graded points on (docs/tether2d-results.md has both studies).
 //
 // How: at the end of the free preparation stage the contour is sampled again at N new
 // material points. Their reference arc lengths, measured from the material point at the

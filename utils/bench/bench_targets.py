@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""The speed and memory targets of issue 9, measured with the apps themselves (not a test).
+"""The speed and memory targets, measured with the apps themselves (not a test).
 
-  bench-targets.py --build BUILD [--out DIR] [--json FILE] [--steps 30] [--quick]
+  bench_targets.py --build BUILD [--out DIR] [--json FILE] [--steps 30] [--quick]
 
 Runs, each for a fixed number of RKF45 steps of 1e-3 (Initial = Maximum step, no outputs but
 the first and last): one Skalak cell at mesh level 3 (2562 nodes) at h/a = 1.6 above the wall,
@@ -16,16 +16,14 @@ measured / thesis (Table 3.4), the load average before and after each run, and t
 each Teuchos timer. --quick: level 1 and 64 points (a pipeline check; targets do not apply).
 """
 import argparse
-import importlib.util
 import json
 import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
-_spec = importlib.util.spec_from_file_location("accuracy_cost", os.path.join(HERE, "accuracy-cost.py"))
-ac = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(ac)
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+import accuracy_cost as ac  # noqa: E402 (the sweep's runner, next to this file)
 
 STAGES = 6  # RKF45 right-hand sides per step (eq 3.47-3.50)
 
@@ -83,7 +81,7 @@ def main():
     res = {}
     for name, app, deck, sets, ranks in cases:
         if not os.path.exists(app):
-            print(f"bench-targets: {name}: {app} not built, skipped")
+            print(f"bench_targets: {name}: {app} not built, skipped")
             continue
         rec = measure(app, deck, sets, ranks, args.out, name, args.steps, args.timeout)
         res[name] = rec
@@ -108,7 +106,7 @@ def main():
         ("peak memory, two cells, largest of 2 ranks", val("two_cells_np2", "peak_rss_mb"), 200.0, 550.0, "MB"),
         ("peak memory, 2D tether, 256 points", val("tether2d_256_np1", "peak_rss_mb"), None, 34.0, "MB"),
     ]
-    print(f"\nbench-targets ({'quick: level 1, 64 points; targets do not apply' if args.quick else 'level 3, 256 points'}):")
+    print(f"\nbench_targets ({'quick: level 1, 64 points; targets do not apply' if args.quick else 'level 3, 256 points'}):")
     print(f"  {'what':58s} {'measured':>10s} {'target':>8s} {'meas/target':>11s} {'meas/thesis':>11s}")
     table = []
     for what, m, target, thesis, unit in rows:

@@ -3,10 +3,10 @@
 # input/cell3d/{heights,fixed-height,unbounded}/ with cell3d and draws Figs. 5.3-5.22
 # (profiles, deformation and velocities against h/a and against C and Ca, wall shear
 # stress maps and line cuts) as PNG files.
-#   utils/study-cell3d.sh --quick /tmp/fig      # ~1 min on 2 cores: 18 runs, mesh level 1, t = 0.4
-#   utils/study-cell3d.sh docs/figures          # reduced (docs/figures): 25 runs, level 2, t = 2
-#   utils/study-cell3d.sh --full /tmp/fig       # every deck as written (level 3, t = 15): days
-# utils/study-cell3d.sh --help lists the options.
+#   utils/studies/cell3d.sh --quick /tmp/fig      # ~1 min on 2 cores: 18 runs, mesh level 1, t = 0.4
+#   utils/studies/cell3d.sh docs/figures          # reduced (docs/figures): 25 runs, level 2, t = 2
+#   utils/studies/cell3d.sh --full /tmp/fig       # every deck as written (level 3, t = 15): days
+# utils/studies/cell3d.sh --help lists the options.
 set -euo pipefail
 STUDY=cell3d
 APP=cell3d
@@ -54,31 +54,31 @@ study_runs() {
   # Released from several heights (Figs. 5.3, 5.7, 5.10, 5.13, 5.15, 5.19, 5.21).
   for h in $heights; do
     for ca in $cas_a; do
-      run_deck "heights/Ca${ca}-C2.5-prestress5-h${h}" "input/cell3d/heights/Ca${ca}-C2.5-prestress5-h${h}.xml" \
+      queue_run "heights/Ca${ca}-C2.5-prestress5-h${h}" "input/cell3d/heights/Ca${ca}-C2.5-prestress5-h${h}.xml" \
         "${settings[@]}" "${wall[@]}"
     done
     for c in $cs_b; do
-      run_deck "heights/Ca0.9-C${c}-prestress0-h${h}" "input/cell3d/heights/Ca0.9-C${c}-prestress0-h${h}.xml" \
+      queue_run "heights/Ca0.9-C${c}-prestress0-h${h}" "input/cell3d/heights/Ca0.9-C${c}-prestress0-h${h}.xml" \
         "${settings[@]}" "${wall[@]}"
     done
   done
   # Held at h/a = 1.25 (Figs. 5.4-5.9, 5.11, 5.16-5.18, 5.20, 5.22).
   for ca in $cas_fixed; do
     for c in $cs_fixed; do
-      run_deck "fixed-height/Ca${ca}-C${c}-prestress5" "input/cell3d/fixed-height/Ca${ca}-C${c}-prestress5.xml" \
+      queue_run "fixed-height/Ca${ca}-C${c}-prestress5" "input/cell3d/fixed-height/Ca${ca}-C${c}-prestress5.xml" \
         "${settings[@]}" "${wall[@]}"
     done
   done
   for c in $cs_fixed; do
-    run_deck "fixed-height/Ca0.9-C${c}-prestress0" "input/cell3d/fixed-height/Ca0.9-C${c}-prestress0.xml" \
+    queue_run "fixed-height/Ca0.9-C${c}-prestress0" "input/cell3d/fixed-height/Ca0.9-C${c}-prestress0.xml" \
       "${settings[@]}" "${wall[@]}"
   done
   # Unbounded shear (top rows of Figs. 5.5, 5.6, 5.9).
   for ca in $cas_free; do
-    run_deck "unbounded/Ca${ca}-C0.5-prestress5" "input/cell3d/unbounded/Ca${ca}-C0.5-prestress5.xml" "${settings[@]}"
+    queue_run "unbounded/Ca${ca}-C0.5-prestress5" "input/cell3d/unbounded/Ca${ca}-C0.5-prestress5.xml" "${settings[@]}"
   done
   for c in $cs_fixed; do
-    run_deck "unbounded/Ca0.9-C${c}-prestress0" "input/cell3d/unbounded/Ca0.9-C${c}-prestress0.xml" "${settings[@]}"
+    queue_run "unbounded/Ca0.9-C${c}-prestress0" "input/cell3d/unbounded/Ca0.9-C${c}-prestress0.xml" "${settings[@]}"
   done
 }
 
@@ -89,4 +89,4 @@ study_figures() {
   draw cell3d_wall_stress.py
 }
 
-study_main "$@"
+figure_study_main "$@"

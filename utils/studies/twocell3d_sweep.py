@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """Runs a list of twocell3d (or cell3d) decks and gathers the per-cell results into one table.
 
-    utils/twocell3d-sweep.py [--build build] [--ranks 2] [--out out/twocell3d-sweep]
-                             [--set "List/Key=value"]... [--skip-done] [--gather-only]
-                             [--isolated RUN_DIR] [--table FILE] DECK...
+    utils/studies/twocell3d_sweep.py [--build build] [--ranks 2] [--out out/twocell3d-sweep]
+                                     [--set "List/Key=value"]... [--skip-done] [--gather-only]
+                                     [--isolated RUN_DIR] [--table FILE] DECK...
 
 Each deck runs into OUT/<folder>/<name> (its folder and file name, e.g.
 out/twocell3d-sweep/in-line/h1.25-dx1-fixed), with the --set overrides passed on; a run that

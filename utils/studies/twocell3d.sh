@@ -2,10 +2,10 @@
 # Two cells near a wall (thesis Chapter 6, docs/twocell3d.md): runs decks of
 # input/twocell3d/{side-by-side,in-line}/ with twocell3d and draws Figs. 6.3, 6.4, 6.6, 6.9,
 # 6.10 and 6.12 (velocities against the separation, wall shear stress maps) as PNG files.
-#   utils/study-twocell3d.sh --quick /tmp/fig   # ~15 s on 2 cores: 8 runs, mesh level 1, t = 0.3
-#   utils/study-twocell3d.sh docs/figures       # reduced: 10 runs at h/a = 1.25, level 2, t = 1
-#   utils/study-twocell3d.sh --full /tmp/fig    # every deck as written (level 3, t = 15): days
-# utils/study-twocell3d.sh --help lists the options.
+#   utils/studies/twocell3d.sh --quick /tmp/fig   # ~15 s on 2 cores: 8 runs, mesh level 1, t = 0.3
+#   utils/studies/twocell3d.sh docs/figures       # reduced: 10 runs at h/a = 1.25, level 2, t = 1
+#   utils/studies/twocell3d.sh --full /tmp/fig    # every deck as written (level 3, t = 15): days
+# utils/studies/twocell3d.sh --help lists the options.
 set -euo pipefail
 STUDY=twocell3d
 APP=twocell3d
@@ -41,10 +41,10 @@ study_runs() {
       local sbs=$sbs_fixed inl=$inl_fixed
       [[ $kind == fixed ]] || { sbs=$sbs_free; inl=$inl_free; }
       for d in $sbs; do
-        run_deck "side-by-side/h$h-dz$d-$kind" "input/twocell3d/side-by-side/h$h-dz$d-$kind.xml" "${settings[@]}"
+        queue_run "side-by-side/h$h-dz$d-$kind" "input/twocell3d/side-by-side/h$h-dz$d-$kind.xml" "${settings[@]}"
       done
       for d in $inl; do
-        run_deck "in-line/h$h-dx$d-$kind" "input/twocell3d/in-line/h$h-dx$d-$kind.xml" "${settings[@]}"
+        queue_run "in-line/h$h-dx$d-$kind" "input/twocell3d/in-line/h$h-dx$d-$kind.xml" "${settings[@]}"
       done
     done
   done
@@ -56,4 +56,4 @@ study_figures() {
   draw twocell3d_figures.py --transient "$transient"
 }
 
-study_main "$@"
+figure_study_main "$@"

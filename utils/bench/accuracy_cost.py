@@ -1,12 +1,12 @@
 #!/usr/bin/python3
-"""What accuracy costs in time (issue 9): sweeps of an app deck over lists of knobs, the error of
+"""What accuracy costs in time: sweeps of an app deck over lists of knobs, the error of
 each run against a reference, its cost, and the report docs/accuracy-cost.md.
 
-  accuracy-cost.py sweep --app BUILD/apps/cell3d/cell3d --deck DECK --out DIR \\
+  accuracy_cost.py sweep --app BUILD/apps/cell3d/cell3d --deck DECK --out DIR \\
       --knob "Cells/Cell 0/Mesh level=1,2,3" --knob "Discretisation/Quadrature points=3,7" \\
       [--grid product|axes|mixed|blocks] [--block "KEY=v1,v2;KEY2=v3"]... [--set KEY=VALUE]... \\
       [--ranks 2] [--qoi metrics:D12] [--refine "Cells/Cell 0/Mesh level:level"] [--exact VALUE]
-  accuracy-cost.py all --build BUILD [--quick] [--runs DIR] [--report docs/accuracy-cost.md] [--check]
+  accuracy_cost.py all --build BUILD [--quick] [--runs DIR] [--report docs/accuracy-cost.md] [--check]
 
 sweep: runs every combination (product), every knob varied alone from the first value of the
 others (axes; the first value of each knob is the base point), (mixed) the product of the
@@ -29,9 +29,10 @@ Reference: --exact VALUE, or Richardson extrapolation of the three finest runs a
 --refine knob (the others at their base values), with the observed order; `level` means
 h = 2^-n (icosphere level), `points` h = 1/N; two runs only: the finest run is the reference.
 
-all: the issue-9 studies (3D free shear, 3D D12_max near the wall, 2D tether F_max at the thesis's
-gap and at gap 0.1, lambda = 5 GMRES tolerance) and the performance targets (utils/bench-targets.py); with --report, writes the markdown report from
-what was measured. --quick: tiny meshes and short end times, a pipeline check (--check exits
+all: the five studies (3D free shear, 3D D12_max near the wall, 2D tether F_max at the thesis's
+gap and at gap 0.1, lambda = 5 GMRES tolerance); with --report, writes the markdown report from
+what was measured, with the performance targets of bench_targets.py (--targets) and the kernel
+microbenchmarks (--kernels). --quick: tiny meshes and short end times, a pipeline check (--check exits
 non-zero unless every study has rows with finite errors and its plots exist). Runs already
 finished in --runs are reused (delete the folder to start from scratch).
 """
@@ -48,7 +49,7 @@ import time
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
+ROOT = os.path.dirname(os.path.dirname(HERE))
 
 COLUMNS = ["study", "run", "ranks", "knobs", "status", "qoi", "reference", "error", "rel_error",
            "drift", "s_per_rhs", "s_per_step", "steps", "rejected", "rhs", "wall_s", "cpu_s",
@@ -507,7 +508,7 @@ def plot(out, name, rows, knobs, base, refine_key, refine_kind, qoi, how):
     return orders
 
 
-# --- the issue-9 studies ------------------------------------------------------------------------
+# --- the studies of docs/accuracy-cost.md -----------------------------------------------------
 
 def studies(build, quick):
     cell3d = os.path.join(build, "apps/cell3d/cell3d")
@@ -578,7 +579,7 @@ def studies(build, quick):
              knob=[points + "=128,64,256,320,512", gauss + "=6,5,8,12"],
              set=quiet2d + ["Time integration/End time=12", "Output/Interval=0.25"]),
         # The same with the cell released and tethered 0.1 above the wall instead of 0.005: the
-        # lubrication film under the cell is then resolved from 128 points on (docs/tether2d.md),
+        # lubrication film under the cell is then resolved from 128 points on (docs/tether2d-results.md),
         # and F_max converges.
         dict(name="tether2d_fmax_gap0.1", app=tether, deck=t2d, ranks="1", grid="axes",
              qoi="summary:max.tether_force", refine=points + ":points",
@@ -666,7 +667,7 @@ def main():
     a.add_argument("--quick", action="store_true")
     a.add_argument("--only", help="comma-separated study names")
     a.add_argument("--report", help="write the markdown report here (figures next to it)")
-    a.add_argument("--targets", help="a bench-targets.py JSON result to include in the report")
+    a.add_argument("--targets", help="a bench_targets.py JSON result to include in the report")
     a.add_argument("--kernels", help="a bench_kernels (Google Benchmark) JSON output to include in the report")
     a.add_argument("--check", action="store_true")
     a.add_argument("--timeout", type=float, default=1800)
@@ -683,7 +684,7 @@ def main():
         report.write(args.report, results, args, time.monotonic() - t0)
     ok = check(results, args.runs) if args.check else True
     if args.check:
-        for path, what in ((args.targets, "bench-targets JSON"), (args.report, "report")):
+        for path, what in ((args.targets, "bench_targets JSON"), (args.report, "report")):
             if path and not os.path.exists(path):
                 print(f"CHECK FAILED: the {what} {path} is missing")
                 ok = False
