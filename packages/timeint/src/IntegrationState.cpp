@@ -47,7 +47,7 @@ StateRecord toRecord(const IntegrationState& state)
   r.integers["method switches"] = state.statistics.methodSwitches;
   r.integers["stiff active"] = state.stiffActive ? 1 : 0;
   r.integers["stiffness held steps"] = state.stiffnessHeldSteps;
-  r.reals["stiff advance rate"] = state.stiffAdvanceRate;
+  r.integers["stiff trials failed"] = state.stiffTrialsFailed;
   r.arrays["state"] = state.y;
   if (!state.firstStageDerivative.empty()) {
     r.arrays["first stage derivative"] = state.firstStageDerivative;
@@ -91,8 +91,7 @@ IntegrationState fromRecord(const StateRecord& record, const std::string& source
   s.statistics.methodSwitches = counter("method switches");
   s.stiffActive = counter("stiff active") != 0;
   s.stiffnessHeldSteps = counter("stiffness held steps");
-  const auto rate = record.reals.find("stiff advance rate");
-  s.stiffAdvanceRate = rate == record.reals.end() ? 0.0 : rate->second;
+  s.stiffTrialsFailed = counter("stiff trials failed");
   s.y = entry(record.arrays, "state", source);
   const auto fsal = record.arrays.find("first stage derivative");
   if (fsal != record.arrays.end()) {

@@ -47,8 +47,10 @@ void combine(const std::vector<double>& y, const double* w, const std::vector<st
 
 } // namespace
 
-StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, double tStop)
+StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, double tStop, double trialStep)
 {
+  const bool trial = trialStep > 0.0;
+  const double proposedBefore = state.proposedStep;
   const RosenbrockTableau& R = rosenbrock_;
   const std::size_t n = state.y.size();
   const int s = R.stages;
@@ -75,8 +77,9 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
     difference[static_cast<std::size_t>(i)] = R.m[static_cast<std::size_t>(i)] - R.mEmbedded[static_cast<std::size_t>(i)];
   }
   for (;;) {
-    const double proposed =
-      settings_.adaptive ? std::min(state.proposedStep, settings_.maximumStep) : state.proposedStep;
+    const double proposed = trial                ? trialStep
+                            : settings_.adaptive ? std::min(state.proposedStep, settings_.maximumStep)
+                                                 : state.proposedStep;
     double h = proposed;
     double tNew = state.time + h;
     if (tStop - state.time <= proposed * (1.0 + stretchFraction)) {
@@ -141,6 +144,12 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
       outside = e.what();
     }
 
+    if (trial && (!unsolved.empty() || !outside.empty())) {
+      ++stats.rejectedSteps;
+      state.proposedStep = proposedBefore;
+      report.stepSize = 0.0;
+      return report;
+    }
     if (!unsolved.empty() || !outside.empty()) {
       core::require<core::NumericalError>(
         settings_.adaptive, "Time integration failed: ", unsolved.empty() ? outside : unsolved, " in the fixed ",
@@ -174,6 +183,13 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
       errorNorm = scaledMaxNorm(errorVector_.data(), state.y.data(), newState_.data(), n, settings_.tolerance,
                                 settings_.relativeTolerance);
       decision = rosenbrockController_.decide(h, errorNorm, state.previousErrorNorm, report.rejectedAttempts > 0);
+    }
+    if (!decision.accepted && trial) {
+      ++stats.rejectedSteps;
+      state.proposedStep = proposedBefore;
+      report.stepSize = 0.0;
+      report.errorNorm = errorNorm;
+      return report;
     }
     if (!decision.accepted) {
       ++report.rejectedAttempts;

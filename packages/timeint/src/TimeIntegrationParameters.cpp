@@ -60,7 +60,7 @@ void declareTimeIntegrationParameters(Teuchos::ParameterList& list, bool stabili
               "below this fraction of 'Tolerance' (the solve's error then stays below the local "
               "error the step is allowed).",
               greaterThan(0.0), atMost(1.0));
-  declareReal(list, "Auto switch margin", 1.5,
+  declareReal(list, "Auto switch margin", 2.0,
               "Auto: change method only when the other one is expected to advance at least this "
               "many times further per operator application (work counted in right-hand sides and "
               "Krylov iterations).",

@@ -254,28 +254,26 @@ StepReport TimeIntegrator::step(IntegrationState& state, double tStop)
   const double proposedBefore = state.proposedStep;
   const bool stiffBefore = state.stiffActive;
   const std::int64_t heldBefore = state.stiffnessHeldSteps;
+  const std::int64_t failedBefore = state.stiffTrialsFailed;
   try {
     StepReport report;
     if (settings_.method == Method::Auto && state.stiffActive) {
       reconsiderExplicitMethod(state, report);   // may hand this step back to RKF45
+    } else if (settings_.method == Method::Auto && tryStiffMethod(state, tStop, report)) {
+      return report;   // the trial step of ROS34PW2 was accepted
     }
-    if (usesStiffMethod(state)) {
-      const std::string reason = report.switchReason;
-      report = attemptLinearlyImplicit(state, tStop);
-      report.switchReason = reason;
-    } else {
-      const std::string reason = report.switchReason;
-      report = attemptUntilAccepted(state, tStop);
-      report.switchReason = reason;
-      if (settings_.method == Method::Auto) {
-        reconsiderStiffMethod(state, report);
-      }
+    const std::string reason = report.switchReason;
+    report = usesStiffMethod(state) ? attemptLinearlyImplicit(state, tStop) : attemptUntilAccepted(state, tStop);
+    report.switchReason = reason;
+    if (settings_.method == Method::Auto && !report.stiff) {
+      countStabilityHolds(state, report);
     }
     return report;
   } catch (...) {
     state.proposedStep = proposedBefore;
     state.stiffActive = stiffBefore;
     state.stiffnessHeldSteps = heldBefore;
+    state.stiffTrialsFailed = failedBefore;
     throw;
   }
 }

@@ -50,11 +50,11 @@ struct IntegrationState {
   double stabilityStep = std::numeric_limits<double>::infinity();
   std::int64_t stepsSinceStabilityEstimate = 0;
   /// Method Auto: the stiff method is the one in use; how many consecutive explicit steps
-  /// the stability limit has held; the simulated time per operator application the stiff
-  /// method achieved when it last handed over (0: not measured yet).
+  /// the stability limit has held; how often a trial of the stiff method failed or it
+  /// handed back (each doubles the held steps before the next trial).
   bool stiffActive = false;
   std::int64_t stiffnessHeldSteps = 0;
-  double stiffAdvanceRate = 0.0;
+  std::int64_t stiffTrialsFailed = 0;
   IntegrationStatistics statistics;
 };
 

@@ -18,10 +18,10 @@
 //                    the step. err = max_i |e_i| / (Tolerance + Relative tolerance |y_i|);
 //                    PI controller for the estimate's order. A stage solve that does not
 //                    converge rejects the step (a quarter of the step is tried next).
-//   Auto             RKF45 with the stability limit, switching to ROS34PW2 while the limit
-//                    holds the step, and back when the explicit method would advance
-//                    further per unit of work (see MethodSwitch.cpp). Needs a
-//                    LinearisedSystem too.
+//   Auto             RKF45 with the stability limit, switching to ROS34PW2 when the limit
+//                    holds the step and a trial step of ROS34PW2 large enough to pay off
+//                    meets the tolerance, and back when RKF45 would advance further per
+//                    unit of work (see MethodSwitch.cpp). Needs a LinearisedSystem too.
 // Any method runs with fixed steps when `adaptive` is false (tests, benchmarks).
 //
 // Stability limit (optional, adaptive runs): an elastic membrane makes the system stiff,
@@ -100,7 +100,7 @@ struct TimeIntegrationSettings {
   double linearTolerance = 0.01;
   /// Auto: switch when the other method is expected to advance at least this many times
   /// further per operator application (hysteresis against switching back and forth).
-  double switchMargin = 1.5;
+  double switchMargin = 2.0;
   /// Auto: consecutive explicit steps held by the stability limit before switching.
   int switchSteps = 5;
 };
@@ -194,12 +194,15 @@ private:
   void evaluate(double t, const std::vector<double>& y, std::vector<double>& dydt,
                 IntegrationState& state, double step, int stage);
   StepReport attemptUntilAccepted(IntegrationState& state, double tStop);
-  // LinearlyImplicitStep.cpp: one accepted Rosenbrock-W step.
-  StepReport attemptLinearlyImplicit(IntegrationState& state, double tStop);
+  // LinearlyImplicitStep.cpp: one accepted Rosenbrock-W step; with trialStep > 0 a single
+  // attempt of that size, which on failure leaves the state as it was and reports a step
+  // size of 0.
+  StepReport attemptLinearlyImplicit(IntegrationState& state, double tStop, double trialStep = 0.0);
   void estimateStabilityStep(IntegrationState& state);
   bool usesStiffMethod(const IntegrationState& state) const;
   // MethodSwitch.cpp: Auto's decisions, before and after a step.
-  void reconsiderStiffMethod(IntegrationState& state, StepReport& report);
+  void countStabilityHolds(IntegrationState& state, const StepReport& report) const;
+  bool tryStiffMethod(IntegrationState& state, double tStop, StepReport& report);
   void reconsiderExplicitMethod(IntegrationState& state, StepReport& report);
   double stiffStepCost(const IntegrationState& state) const;
   double explicitStepCost() const;

@@ -1,0 +1,315 @@
+#!/usr/bin/python3
+"""The stiff time integrators (ROS34PW2, Auto) against the explicit RKF45 with its stability
+limit: accuracy and cost side by side, measured with the cell3d app in one session.
+
+  stiff_integration.py --build BUILD [--runs DIR] [--report FILE] [--quick] [--case NAME]...
+
+Cases (docs/stiff-integration-results.md explains them):
+  goldman  nearly rigid neo-Hookean capsule held at h/a = 1.5431 (the Goldman deck), level 2,
+           Ca = 0.01 and 0.005, to t = 0.3: the instantaneous slip of every method and
+           tolerance against RKF45's, and the operator applications each needs.
+  stiff    the same capsule at Ca = 0.002, h/a = 1.543081, levels 2 and 3, to t = 3: ROS34PW2 and
+           Auto at 1e-4 against a ROS34PW2 reference (1e-7 at level 2, 1e-6 at level 3);
+           RKF45 to t = 3 at level 2 and, at level 3, to t = 0.02 with its cost to t = 3
+           projected from its measured steps.
+  soft     the demo deck (Skalak C = 2.5, Ca = 0.3, level 2, to t = 2): RKF45, ROS34PW2 and Auto
+           at the deck's tolerance 1e-5, against RKF45 at 1e-8.
+  c10      Skalak C = 10, Ca = 0.9, unbounded, level 2, to t = 5, tolerance 1e-4.
+
+Cost: operator applications (right-hand sides, GMRES iterations, linearisations: each one
+evaluation of the layer potentials or a geometry set-up), CPU seconds of the run (user +
+system: less inflated than wall time by other jobs on the machine) and wall seconds. Speed is
+stated as ratios of runs made one after the other in the same session.
+
+Finished runs in RUNS are reused (delete RUNS, or a run's folder, for fresh numbers). From
+scratch the full set takes about 3 hours on 2 cores; --quick (level 1, short end times, a
+pipeline check, about 2 minutes) writes its report to RUNS/stiff-integration-results.md.
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+import accuracy_cost as ac  # noqa: E402 (run_app: one app run with its wall and CPU time)
+
+QUIET = {"Output/Snapshots": "false", "Output/Wall shear stress/Enabled": "false", "Output/Progress steps": "100000"}
+
+
+def run(build, runs, name, deck, sets, timeout):
+    """Runs cell3d once (or reuses a finished run); returns its record."""
+    out = os.path.join(runs, name)
+    record_file = out + ".json"
+    if os.path.exists(record_file):
+        with open(record_file) as f:
+            return json.load(f)
+    app = os.path.join(build, "apps/cell3d/cell3d")
+    code, wall, rss, before, after, cpu = ac.run_app(app, deck, {}, dict(QUIET, **sets), 1, out, timeout)
+    record = {"name": name, "code": code, "wall": wall, "cpu": cpu, "load": [before, after]}
+    try:
+        with open(os.path.join(out, "summary.json")) as f:
+            summary = json.load(f)
+        steps = summary["steps"]
+        final = summary["cells"][0]["final"]
+        record.update(
+            time=summary["time"], status=summary["status"], steps=steps["accepted"], rejected=steps["rejected"],
+            rhs=steps["rhs evaluations"], iterations=steps.get("linear iterations", 0),
+            linearisations=steps.get("linearisations", 0), stiff_steps=steps.get("stiff steps", 0),
+            switches=steps.get("method switches", 0), u_slip_inst=final["u_slip (instantaneous)"],
+            u_slip=final["u_slip"], D12=final["D12"], volume_change=final["volume change"])
+        record["applications"] = record["rhs"] + record["iterations"] + record["linearisations"]
+        record["rows"] = metrics_rows(os.path.join(out, "metrics.csv"))
+    except (OSError, KeyError, ValueError) as e:
+        record["status"] = f"failed: {e}"
+    with open(record_file, "w") as f:
+        json.dump(record, f, indent=1)
+    return record
+
+
+def metrics_rows(path):
+    """time, step, u_slip, D12 of every output row."""
+    import csv
+    rows = []
+    with open(path) as f:
+        for row in csv.DictReader(f):
+            rows.append({k: float(row[k]) for k in ("time", "step", "u_slip", "D12", "u_slip_instant")})
+    return rows
+
+
+def relative(value, reference):
+    return abs(value - reference) / abs(reference) if reference else float("nan")
+
+
+def ok(record):
+    return record.get("status") in ("finished", "steady")
+
+
+def fmt(value, digits=4):
+    if isinstance(value, float) and not math.isfinite(value):
+        return "-"
+    if isinstance(value, float):
+        return f"{value:.{digits}g}"
+    return str(value)
+
+
+def table(header, rows):
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(fmt(c) for c in row) + " |" for row in rows]
+    return "\n".join(lines)
+
+
+def goldman(args, report):
+    deck = os.path.join(ROOT, "input/cell3d/validation/goldman-rigid-h1.5431.xml")
+    base = {"Cells/Cell 0/Mesh level": "1" if args.quick else "2"}
+    if args.quick:
+        base["Time integration/End time"] = "0.05"
+    report.append("## Nearly rigid capsule held at h/a = 1.5431 (Goldman deck), t = %s\n"
+                  % base.get("Time integration/End time", "0.3"))
+    for ca in ("0.01", "0.005"):
+        sets = dict(base, **{"Flow/Capillary number": ca})
+        runs = {"RKF45 1e-6": run(args.build, args.runs, f"goldman-ca{ca}-rkf45", deck, sets, args.timeout)}
+        for method in ("ROS34PW2", "Auto"):
+            for tol in ("1e-4", "1e-6"):
+                runs[f"{method} {tol}"] = run(
+                    args.build, args.runs, f"goldman-ca{ca}-{method.lower()}-{tol}", deck,
+                    dict(sets, **{"Time integration/Method": method, "Time integration/Tolerance": tol}), args.timeout)
+        explicit = runs["RKF45 1e-6"]
+        rows = []
+        for label, r in runs.items():
+            if not ok(r):
+                rows.append([label, r.get("status", "?")] + [float("nan")] * 9)
+                continue
+            method = label.split()[0]
+            tight = runs.get(f"{method} 1e-6", r)
+            rows.append([label, r["steps"], r["rhs"], r["iterations"], r["applications"],
+                         r["applications"] / explicit["applications"], f"{r['u_slip_inst']:.7f}",
+                         100 * relative(r["u_slip_inst"], explicit["u_slip_inst"]),
+                         100 * relative(r["u_slip_inst"], tight["u_slip_inst"]) if ok(tight) else float("nan"),
+                         r["cpu"], explicit["cpu"] / r["cpu"]])
+        report.append(f"### Ca = {ca}\n")
+        report.append(table(["method, tolerance", "steps", "rhs", "GMRES it", "applications",
+                             "applications / RKF45's", "u_slip (instantaneous)", "vs RKF45 (%)",
+                             "vs same method at 1e-6 (%)", "CPU s", "speed-up (CPU)"], rows) + "\n")
+
+
+def projected(short, end):
+    """RKF45's cost to `end` from a run cut short: its rate of applications and CPU seconds per
+    unit time over the second half of the run (the stability limit holds the step nearly constant)."""
+    rows = short["rows"]
+    half = [r for r in rows if r["time"] >= rows[-1]["time"] / 2]
+    steps_per_time = (half[-1]["step"] - half[0]["step"]) / (half[-1]["time"] - half[0]["time"])
+    applications_per_step = short["applications"] / short["steps"]
+    cpu_per_application = short["cpu"] / short["applications"]
+    applications = short["applications"] + steps_per_time * (end - short["time"]) * applications_per_step
+    return applications, applications * cpu_per_application, steps_per_time * end
+
+
+def stiff(args, report):
+    deck = os.path.join(ROOT, "input/cell3d/validation/goldman-rigid-h1.5431.xml")
+    end = 0.1 if args.quick else 3.0
+    short_end = 0.02 if not args.quick else 0.01
+    report.append(f"## Stiff neo-Hookean capsule: Ca = 0.002, h/a = 1.543081, fixed height, t = {end:g}\n")
+    for level in ((1,) if args.quick else (2, 3)):
+        sets = {"Flow/Capillary number": "0.002", "Cells/Cell 0/Center": "{0.0, 1.543081, 0.0}",
+                "Cells/Cell 0/Mesh level": str(level), "Time integration/End time": f"{end:g}",
+                "Output/Interval": f"{end / 6:g}"}
+        name = f"stiff-level{level}"
+        reference_tolerance = "1e-6" if level >= 3 else "1e-7"
+        ref = run(args.build, args.runs, f"{name}-reference", deck,
+                  dict(sets, **{"Time integration/Method": "ROS34PW2",
+                                "Time integration/Tolerance": reference_tolerance}), args.timeout)
+        stiff_runs = {m: run(args.build, args.runs, f"{name}-{m.lower()}-1e-4", deck,
+                             dict(sets, **{"Time integration/Method": m, "Time integration/Tolerance": "1e-4"}), args.timeout)
+                      for m in ("ROS34PW2", "Auto")}
+        full_explicit = level <= 2
+        explicit_end = end if full_explicit else short_end
+        # u_slip is the centroid's mean velocity over the last output interval: the full
+        # explicit run keeps the others' interval, so its u_slip compares with theirs.
+        explicit = run(args.build, args.runs, f"{name}-rkf45", deck,
+                       sets if full_explicit else dict(sets, **{"Time integration/End time": f"{explicit_end:g}",
+                                                                "Output/Interval": f"{explicit_end / 4:g}"}),
+                       args.timeout)
+        rows = []
+        if ok(explicit):
+            if full_explicit:
+                apps, cpu, steps = explicit["applications"], explicit["cpu"], explicit["steps"]
+                note = "measured"
+            else:
+                apps, cpu, steps = projected(explicit, end)
+                note = f"projected from t = {explicit_end:g}"
+        else:
+            apps = cpu = steps = float("nan")
+            note = explicit.get("status", "?")
+        for label, r in [(f"ROS34PW2 {reference_tolerance} (reference)", ref)] + [(f"{m} 1e-4", r) for m, r in stiff_runs.items()]:
+            if not ok(r):
+                rows.append([label, r.get("status", "?")] + [float("nan")] * 8)
+                continue
+            rows.append([label, r["steps"], r["applications"], f"{r['u_slip']:.6f}", f"{r['D12']:.6f}",
+                         100 * relative(r["u_slip"], ref["u_slip"]) if ok(ref) else float("nan"),
+                         100 * relative(r["D12"], ref["D12"]) if ok(ref) else float("nan"),
+                         r["cpu"], cpu / r["cpu"]])
+        if full_explicit and ok(explicit):
+            rows.append(["RKF45 1e-6 + stability limit", explicit["steps"], explicit["applications"],
+                         f"{explicit['u_slip']:.6f}", f"{explicit['D12']:.6f}",
+                         100 * relative(explicit["u_slip"], ref["u_slip"]) if ok(ref) else float("nan"),
+                         100 * relative(explicit["D12"], ref["D12"]) if ok(ref) else float("nan"), explicit["cpu"], 1.0])
+        else:
+            rows.append([f"RKF45 1e-6 + stability limit ({note})", fmt(steps, 3), fmt(apps, 3), "-", "-", "-", "-",
+                         cpu, 1.0])
+        report.append(f"### Mesh level {level}\n")
+        report.append(table(["method, tolerance", "steps", "applications", "u_slip", "D12", "u_slip vs reference (%)",
+                             "D12 vs reference (%)", "CPU s", "speed-up (CPU) over RKF45"], rows) + "\n")
+        if ok(ref):
+            tail = [r for r in ref["rows"] if r["time"] >= end / 2]
+            report.append("u_slip of the reference at t = " + ", ".join(f"{r['time']:g}: {r['u_slip']:.6f}" for r in tail)
+                          + ".\n")
+        if ok(explicit) and not full_explicit:
+            short_ref = run(args.build, args.runs, f"{name}-reference-short", deck,
+                            dict(sets, **{"Time integration/Method": "ROS34PW2",
+                                          "Time integration/Tolerance": reference_tolerance,
+                                          "Time integration/End time": f"{explicit_end:g}",
+                                          "Output/Interval": f"{explicit_end / 4:g}"}), args.timeout)
+            if ok(short_ref):
+                report.append(
+                    f"RKF45 to t = {explicit_end:g}: {explicit['steps']} steps, {explicit['applications']} applications, "
+                    f"{explicit['cpu']:.0f} CPU s; its D12 there differs from the reference's by "
+                    f"{100 * relative(explicit['D12'], short_ref['D12']):.2g}%.\n")
+
+
+def soft(args, report):
+    deck = os.path.join(ROOT, "input/cell3d/demo.xml")
+    sets = {"Cells/Cell 0/Mesh level": "1" if args.quick else "2"}
+    if args.quick:
+        sets["Time integration/End time"] = "0.2"
+    report.append("## Soft capsule: the demo deck (Skalak C = 2.5, Ca = 0.3, h/a = 1.6), t = %s\n"
+                  % sets.get("Time integration/End time", "2"))
+    ref = run(args.build, args.runs, "soft-reference", deck, dict(sets, **{"Time integration/Tolerance": "1e-8"}),
+              args.timeout)
+    runs = {"RKF45 1e-5": run(args.build, args.runs, "soft-rkf45", deck, sets, args.timeout)}
+    for method in ("ROS34PW2", "Auto"):
+        runs[f"{method} 1e-5"] = run(args.build, args.runs, f"soft-{method.lower()}", deck,
+                                     dict(sets, **{"Time integration/Method": method}), args.timeout)
+    explicit = runs["RKF45 1e-5"]
+    rows = []
+    for label, r in runs.items():
+        if not ok(r):
+            rows.append([label, r.get("status", "?")] + [float("nan")] * 7)
+            continue
+        rows.append([label, r["steps"], r["applications"], r["switches"], f"{r['D12']:.6f}",
+                     100 * relative(r["D12"], ref["D12"]) if ok(ref) else float("nan"), r["cpu"], r["cpu"] / explicit["cpu"]])
+    report.append(table(["method, tolerance", "steps", "applications", "method switches", "D12", "D12 vs RKF45 1e-8 (%)",
+                         "CPU s", "CPU / RKF45's"], rows) + "\n")
+
+
+def c10(args, report):
+    deck = os.path.join(ROOT, "input/cell3d/unbounded/Ca0.9-C0.5-prestress0.xml")
+    end = "0.3" if args.quick else "5"
+    sets = {"Cells/Cell 0/Area dilation C": "10", "Cells/Cell 0/Mesh level": "1" if args.quick else "2",
+            "Time integration/End time": end, "Output/Interval": "0.25", "Time integration/Tolerance": "1e-4"}
+    report.append(f"## Skalak C = 10, Ca = 0.9, unbounded shear, t = {end}\n")
+    runs = {"RKF45 1e-4": run(args.build, args.runs, "c10-rkf45", deck, sets, args.timeout)}
+    for method in ("ROS34PW2", "Auto"):
+        runs[f"{method} 1e-4"] = run(args.build, args.runs, f"c10-{method.lower()}", deck,
+                                     dict(sets, **{"Time integration/Method": method}), args.timeout)
+    explicit = runs["RKF45 1e-4"]
+    rows = []
+    for label, r in runs.items():
+        if not ok(r):
+            rows.append([label, r.get("status", "?")] + [float("nan")] * 7)
+            continue
+        rows.append([label, r["steps"], r["applications"], explicit["applications"] / r["applications"],
+                     f"{r['D12']:.6f}", 100 * relative(r["D12"], explicit["D12"]), r["cpu"], explicit["cpu"] / r["cpu"]])
+    report.append(table(["method, tolerance", "steps", "applications", "fewer applications than RKF45 (x)", "D12",
+                         "D12 vs RKF45 (%)", "CPU s", "speed-up (CPU)"], rows) + "\n")
+
+
+CASES = {"goldman": goldman, "stiff": stiff, "soft": soft, "c10": c10}
+
+
+def git_sha():
+    try:
+        return subprocess.run(["git", "-C", ROOT, "rev-parse", "--short=12", "HEAD"], capture_output=True, text=True,
+                              check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--build", default=os.path.join(ROOT, "build"))
+    p.add_argument("--runs", default=os.path.join(ROOT, "out/stiff-integration"))
+    p.add_argument("--report")
+    p.add_argument("--quick", action="store_true")
+    p.add_argument("--case", action="append", choices=sorted(CASES), help="run only these cases (repeatable)")
+    p.add_argument("--timeout", type=float, default=6 * 3600.0, help="seconds one run may take")
+    args = p.parse_args()
+    args.runs = os.path.abspath(args.runs)
+    os.makedirs(args.runs, exist_ok=True)
+    report_path = args.report or (os.path.join(args.runs, "stiff-integration-results.md") if args.quick
+                                  else os.path.join(ROOT, "docs/stiff-integration-results.md"))
+    report = [f"# Stiff time integration: measured accuracy and cost (cell3d)\n",
+              f"Generated by `utils/bench/stiff_integration.py{' --quick' if args.quick else ''}` from git "
+              f"{git_sha()}; one rank. Method and keys: docs/stiff-integration.md.\n"]
+    failed = False
+    for name in args.case or list(CASES):
+        CASES[name](args, report)
+    text = "\n".join(report)
+    with open(report_path, "w") as f:
+        f.write(text)
+    print(text)
+    print(f"stiff_integration.py: report written to {report_path}")
+    for name in os.listdir(args.runs):
+        if name.endswith(".json"):
+            with open(os.path.join(args.runs, name)) as f:
+                if not ok(json.load(f)):
+                    print(f"stiff_integration.py: run {name[:-5]} did not finish", file=sys.stderr)
+                    failed = True
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
