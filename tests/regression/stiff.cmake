@@ -86,3 +86,20 @@ add_test(NAME app_stiff_unconverged_solves_stop_the_run
           --output ${_stiff}/unconverged)
 set_tests_properties(app_stiff_unconverged_solves_stop_the_run PROPERTIES LABELS "app"
   PASS_REGULAR_EXPRESSION "error: Time integration failed at t = 0: the solve of stage 1 stopped after 2 iterations.*raise 'Solver/Stiff/Maximum iterations' = 2")
+
+# The two-cell gap stop with the stiff method (the twocell3d demo's catching-up pair,
+# tests/regression/twocell3d.cmake), on 2 ranks: the stop comes after the step that crossed
+# 'Cells/Minimum gap', with the state there written, as with RKF45.
+capsula_add_mpi_command_test(app_stiff_twocell3d_stops_when_too_close
+  COMMAND $<TARGET_FILE:twocell3d> ${PROJECT_SOURCE_DIR}/input/twocell3d/demo.xml --output ${_stiff}/too_close
+          --set "Cells/Cell 0/Mesh level=1" --set "Cells/Cell 1/Mesh level=1"
+          --set "Cells/Cell 0/Center={-1.8, 3.05, 0}" --set "Cells/Cell 1/Center={0, 1.25, 0}"
+          --set "Cells/Minimum gap=0.565" --set "Output/Wall shear stress/Enabled=false"
+          --set "Time integration/Method=ROS34PW2" --set "Time integration/Tolerance=1e-4"
+  LABELS app TIMEOUT 300)
+set_tests_properties(app_stiff_twocell3d_stops_when_too_close PROPERTIES FIXTURES_SETUP stiff_too_close
+  PASS_REGULAR_EXPRESSION "Stopped at t = [0-9.e-]+: the surfaces of 'Cells/Cell 0' and 'Cells/Cell 1' are [0-9.e-]+ apart, less than 'Cells/Minimum gap' = 0.565")
+add_test(NAME app_stiff_twocell3d_too_close_keeps_outputs
+  COMMAND check_metrics expect ${_stiff}/too_close/metrics.csv - gap_0_1=0.5625:0.0025)
+set_tests_properties(app_stiff_twocell3d_too_close_keeps_outputs PROPERTIES LABELS app
+  FIXTURES_REQUIRED stiff_too_close)

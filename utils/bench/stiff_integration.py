@@ -15,6 +15,9 @@ Cases (docs/stiff-integration-results.md explains them):
   soft     the demo deck (Skalak C = 2.5, Ca = 0.3, level 2, to t = 2): RKF45, ROS34PW2 and Auto
            at the deck's tolerance 1e-5, against RKF45 at 1e-8.
   c10      Skalak C = 10, Ca = 0.9, unbounded, level 2, to t = 5, tolerance 1e-4.
+  gmres    GMRES iterations per stage solve of ROS34PW2 (1e-4, to t = 0.1) on the Goldman
+           capsule over Ca = 0.1 ... 5e-4 and mesh levels 1-3, with and without the
+           local-mobility preconditioner.
 
 Cost: operator applications (right-hand sides, GMRES iterations, linearisations: each one
 evaluation of the layer potentials or a geometry set-up), CPU seconds of the run (user +
@@ -267,7 +270,35 @@ def c10(args, report):
                          "D12 vs RKF45 (%)", "CPU s", "speed-up (CPU)"], rows) + "\n")
 
 
-CASES = {"goldman": goldman, "stiff": stiff, "soft": soft, "c10": c10}
+def gmres(args, report):
+    deck = os.path.join(ROOT, "input/cell3d/validation/goldman-rigid-h1.5431.xml")
+    levels = (1,) if args.quick else (1, 2, 3)
+    numbers = ("0.1", "0.01") if args.quick else ("0.1", "0.01", "0.002", "0.0005")
+    end = "0.02" if args.quick else "0.1"
+    report.append(f"## GMRES iterations per stage solve (ROS34PW2, tolerance 1e-4, Goldman capsule, to t = {end})\n")
+    rows = []
+    for level in levels:
+        for ca in numbers:
+            row = [level, ca]
+            for preconditioner in ("Local mobility", "None"):
+                tag = "lm" if preconditioner == "Local mobility" else "none"
+                r = run(args.build, args.runs, f"gmres-level{level}-ca{ca}-{tag}", deck,
+                        {"Cells/Cell 0/Mesh level": str(level), "Flow/Capillary number": ca,
+                         "Time integration/Method": "ROS34PW2", "Time integration/Tolerance": "1e-4",
+                         "Time integration/End time": end, "Output/Interval": end,
+                         "Solver/Stiff/Preconditioner": preconditioner, "Solver/Stiff/Maximum iterations": "2000",
+                         "Solver/Stiff/Restart": "200"}, args.timeout)
+                if ok(r):
+                    solves = 4 * (r["steps"] + r["rejected"])
+                    row += [r["steps"], r["iterations"] / solves]
+                else:
+                    row += [r.get("status", "?"), float("nan")]
+            rows.append(row)
+    report.append(table(["level", "Ca", "steps", "iterations per solve", "steps (no preconditioner)",
+                         "iterations per solve (no preconditioner)"], rows) + "\n")
+
+
+CASES = {"goldman": goldman, "stiff": stiff, "soft": soft, "c10": c10, "gmres": gmres}
 
 
 def git_sha():
