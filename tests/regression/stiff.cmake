@@ -103,3 +103,28 @@ add_test(NAME app_stiff_twocell3d_too_close_keeps_outputs
   COMMAND check_metrics expect ${_stiff}/too_close/metrics.csv - gap_0_1=0.5625:0.0025)
 set_tests_properties(app_stiff_twocell3d_too_close_keeps_outputs PROPERTIES LABELS app
   FIXTURES_REQUIRED stiff_too_close)
+
+# A hard case that must stay stable with steps ~200 times the explicit limit: the nearly
+# rigid neo-Hookean capsule (Ca = 0.002, h/a = 1.543081, level 1, no prestress) with
+# ROS34PW2 at 1e-4 to t = 3. Measured: 63 steps (RKF45's stability limit: ~3e-4, ~10^4
+# steps), D12 0.005094-0.005096 from t = 0.5 on, volume drift <= 2.4e-5, smallest angle
+# 55.27 (55.57 at rest), smallest tension -0.009. Bounds: a stiff mode growing under the
+# large steps would fold the mesh (the angle falls) and break the volume; 4x the measured
+# drift, the angle within 1.3 degrees of rest, 80 steps.
+add_test(NAME stability_stiff_rigid_capsule
+  COMMAND cell3d ${PROJECT_SOURCE_DIR}/input/cell3d/validation/goldman-rigid-h1.5431.xml
+          --set "Cells/Cell 0/Mesh level=1" --set "Flow/Capillary number=0.002"
+          --set "Cells/Cell 0/Center={0.0, 1.543081, 0.0}" --set "Time integration/Method=ROS34PW2"
+          --set "Time integration/Tolerance=1e-4" --set "Time integration/End time=3" --set "Output/Interval=0.5"
+          --set "Output/Snapshots=false" --output ${_stiff}/rigid_capsule)
+set_tests_properties(stability_stiff_rigid_capsule PROPERTIES LABELS stability FIXTURES_SETUP stiff_rigid_capsule)
+add_test(NAME stability_stiff_rigid_capsule_bounds
+  COMMAND check_metrics within ${_stiff}/rigid_capsule/metrics.csv volume_change=-1e-4:1e-4
+          min_angle_deg=54.3:60 D12=0:0.0052 step=0:80)
+set_tests_properties(stability_stiff_rigid_capsule_bounds PROPERTIES LABELS stability
+  FIXTURES_REQUIRED stiff_rigid_capsule)
+add_test(NAME stability_stiff_rigid_capsule_trend
+  COMMAND check_metrics expect ${_stiff}/rigid_capsule/metrics.csv 0 time=3:1e-12 D12=0.005095:2e-5
+          u_slip=0.1204:0.002)
+set_tests_properties(stability_stiff_rigid_capsule_trend PROPERTIES LABELS stability
+  FIXTURES_REQUIRED stiff_rigid_capsule)
