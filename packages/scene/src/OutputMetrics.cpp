@@ -1,7 +1,7 @@
 #include "capsula/scene/OutputMetrics.hpp"
 
 #include "capsula/scene/CellKinematics.hpp"
-#include "capsula/scene/CubicSpline.hpp"
+#include <capsula/contour/CubicSpline.hpp>
 
 #include <capsula/core/Error.hpp>
 
@@ -69,7 +69,7 @@ std::vector<CellSample> OutputMetrics::record(double t, const Scene& scene, cons
         component[k] = history[3 * k + static_cast<std::size_t>(d)];
       }
       // One sample has no slope: fall back to the instantaneous velocity at t = 0.
-      s.splineVelocity[d] = times_.size() > 1 ? CubicSpline(times_, component).derivative(t)
+      s.splineVelocity[d] = times_.size() > 1 ? contour::CubicSpline::interpolating(times_, component).derivative(t)
                                               : s.instantVelocity[d];
     }
     if (first) {
