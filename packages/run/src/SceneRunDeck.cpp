@@ -1,0 +1,26 @@
+#include "capsula/run/SceneRunDeck.hpp"
+
+#include "capsula/run/SceneOutputSettings.hpp"
+
+#include <capsula/core/ParameterDeclaration.hpp>
+#include <capsula/operators/OperatorParameters.hpp>
+#include <capsula/scene/SceneParameters.hpp>
+#include <capsula/timeint/TimeIntegrationParameters.hpp>
+
+namespace capsula::run {
+
+Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos::ParameterList& deck,
+                                                                   const std::string& appName)
+{
+  auto valid = Teuchos::rcp(new Teuchos::ParameterList(appName));
+  scene::declareSceneParameters(*valid, deck);
+  timeint::declareTimeIntegrationParameters(
+    core::declareSublist(*valid, "Time integration", "Runge-Kutta time stepping (Section 3.10)."),
+    /*stabilityLimitDefault=*/true);
+  operators::declareOperatorParameters(*valid);
+  scene::declareMeshEvolutionParameters(*valid);
+  declareSceneOutputParameters(core::declareSublist(*valid, "Output", "What is written, where and when."));
+  return valid;
+}
+
+} // namespace capsula::run
