@@ -431,10 +431,33 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
   }
 }
 
+double IntegrationObserver::nextEvent(const IntegrationState&)
+{
+  return std::numeric_limits<double>::infinity();
+}
+
+ObserverVerdict IntegrationObserver::afterStep(IntegrationState&, const StepReport&, bool)
+{
+  return ObserverVerdict::Continue;
+}
+
+ObserverVerdict IntegrationObserver::atOutput(const IntegrationState&, OutputReason)
+{
+  return ObserverVerdict::Continue;
+}
+
+double TimeIntegrator::endTime(const OutputSchedule& schedule) const
+{
+  return schedule.endTime ? *schedule.endTime : settings_.endTime;
+}
+
 double TimeIntegrator::outputTime(double origin, std::int64_t index,
                                   const OutputSchedule& schedule) const
 {
-  const double end = settings_.endTime;
+  if (schedule.times) {
+    return index == 0 ? origin : schedule.times(index);
+  }
+  const double end = endTime(schedule);
   if (!(schedule.interval > 0.0)) {
     return index == 0 ? origin : end;
   }
@@ -443,24 +466,62 @@ double TimeIntegrator::outputTime(double origin, std::int64_t index,
   return t >= end - 1.0e-9 * schedule.interval ? end : t;
 }
 
+namespace {
+
+/// Observers that only watch the outputs (the function form of integrate()).
+class OutputWatcher final : public IntegrationObserver {
+public:
+  explicit OutputWatcher(const Observer& observe) : observe_(observe) {}
+  ObserverVerdict atOutput(const IntegrationState& state, OutputReason reason) override
+  {
+    observe_(state, reason);
+    return ObserverVerdict::Continue;
+  }
+
+private:
+  const Observer& observe_;
+};
+
+} // namespace
+
 StopReason TimeIntegrator::integrate(IntegrationState& state, const OutputSchedule& schedule,
                                      const std::vector<Observer>& observers)
 {
+  std::vector<OutputWatcher> watchers;
+  watchers.reserve(observers.size());
+  std::vector<IntegrationObserver*> pointers;
+  for (const auto& observe : observers) {
+    pointers.push_back(&watchers.emplace_back(observe));
+  }
+  return integrateWith(state, schedule, pointers);
+}
+
+StopReason TimeIntegrator::integrate(IntegrationState& state, const OutputSchedule& schedule,
+                                     std::initializer_list<IntegrationObserver*> observers)
+{
+  return integrateWith(state, schedule, std::vector<IntegrationObserver*>(observers));
+}
+
+StopReason TimeIntegrator::integrateWith(IntegrationState& state, const OutputSchedule& schedule,
+                                         const std::vector<IntegrationObserver*>& observers)
+{
   const auto notify = [&](OutputReason reason) {
-    for (const auto& observe : observers) {
-      observe(state, reason);
+    bool stop = false;
+    for (auto* observer : observers) {
+      stop = observer->atOutput(state, reason) == ObserverVerdict::Stop || stop;
     }
+    return stop;
   };
   if (state.nextOutput == 0) {
     state.nextOutput = 1;   // counted before the observers see (and may checkpoint) the state
-    if (schedule.observeStart) {
-      notify(OutputReason::Start);
+    if (schedule.observeStart && notify(OutputReason::Start)) {
+      return StopReason::Requested;
     }
   }
   if (state.steady) {
     return StopReason::SteadyState;
   }
-  const double end = settings_.endTime;
+  const double end = endTime(schedule);
   while (state.time < end) {
     // Outputs at or before the current time are past (a restart with another interval).
     while (outputTime(state.outputOrigin, state.nextOutput, schedule) <= state.time) {
@@ -468,7 +529,19 @@ StopReason TimeIntegrator::integrate(IntegrationState& state, const OutputSchedu
     }
     const double tOut = outputTime(state.outputOrigin, state.nextOutput, schedule);
     while (state.time < tOut && !state.steady) {
-      step(state, tOut);
+      double tStop = tOut;
+      for (auto* observer : observers) {
+        const double event = observer->nextEvent(state);
+        if (event > state.time && event < tStop) {
+          tStop = event;
+        }
+      }
+      const StepReport report = step(state, tStop);
+      for (auto* observer : observers) {
+        if (observer->afterStep(state, report, state.time == tOut) == ObserverVerdict::Stop) {
+          return StopReason::Requested;
+        }
+      }
     }
     if (state.time == tOut) {
       ++state.nextOutput;
@@ -477,7 +550,9 @@ StopReason TimeIntegrator::integrate(IntegrationState& state, const OutputSchedu
       notify(OutputReason::SteadyState);
       return StopReason::SteadyState;
     }
-    notify(state.time == end ? OutputReason::End : OutputReason::Interval);
+    if (notify(state.time == end ? OutputReason::End : OutputReason::Interval)) {
+      return StopReason::Requested;
+    }
   }
   return StopReason::EndTime;
 }

@@ -11,32 +11,31 @@
 //                  cells suffixed _c, then gap_per_h_i_j of every pair); rewritten
 //                  atomically at every output
 //   probes.csv     fluid velocity at 'Output/Flow probes', only if some are given
-//   summary.json   status, final (and steady) values per cell, the terms built, step
-//                  statistics, timings, code version and the validated deck
+//   summary.json   status, final (and steady) values per cell and pair, the terms built,
+//                  step statistics, timings, code version and the validated deck
+//                  (RunSummary.hpp, SceneOutputs::addResults)
 //   snapshots.h5 + snapshots.xdmf   one HDF5 file with every snapshot (mesh, positions,
 //                  velocities, loads, tensions, wall shear stress; io/SnapshotSeries.hpp)
 //                  that ParaView opens as one time series through the XDMF
 //   checkpoint.h5  everything needed to continue (--restart DIR)
 //   deck.xml, run.json   the validated deck and the run record
 //
-// Time stepping (timeint) lands on every output time; observers measure there and never
-// inside the right-hand side. Steady state: the root-mean-square normal speed of the nodes
-// relative to their cell's centroid, (u_i - dx_c/dt) . n_i, falls below
-// 'Time integration/Steady tolerance' for every cell (the change of positions per unit time
-// that is neither translation nor tank-treading). Restart: the deck must equal the checkpoint's except for
-// 'Time integration/End time' and 'Output/Directory'; the continued run writes the same
-// rows, bit for bit, as the uninterrupted one.
+// The run is the time loop of timeint::TimeIntegrator::integrate with these observers:
+//   RunScene.hpp      after every step: mesh regularisation and adaption
+//   SceneOutputs.hpp  at every output: the metrics, probes, wall stress, snapshot and
+//                     checkpoint; steady state; a degraded mesh
+//   the run itself    after every step: the gap between the cells; progress lines; at every
+//                     output: summary.json
+// and the checkpoint sections of the integration state ("timeint."), the outputs and the
+// scene. Restart: the deck must equal the checkpoint's except for 'Time integration/End
+// time' and 'Output/Directory' (RestartDeck.hpp); the continued run writes the same rows,
+// bit for bit, as the uninterrupted one.
 //
 // Cells too close: after every step the smallest gap between two cell surfaces is compared
 // with 'Cells/Minimum gap'; below it the run records that state as an output (metrics row,
 // snapshot, checkpoint), writes the reason naming the two cells, the gap and the time into
 // summary.json and the log, and returns with status "too close" (not an error: the cells
 // met, which is a result; the thin film between them is no longer resolved).
-//
-// Mesh degraded: at an output where some element's smallest angle is below
-// 'Output/Stability/Minimum angle', the metrics row is written (it shows the cause), the
-// checkpoint and snapshot are not (the last good ones stay), and the run fails with a
-// core::NumericalError naming the cell, the angle and the time.
 //
 // All ranks run this together; rank 0 writes the files. A failure (non-finite state, a
 // step-size collapse below 'Time integration/Minimum step', a cell reaching the wall, a
