@@ -67,7 +67,7 @@ for entry in sys.argv[4:]:
     name, thesis, inverse = entry.split(":")
     s = json.load(open(f"{out}/{name}/summary.json"))
     lam = float(inverse)
-    tether = s["preparation_time"] * lam          # tau = k t / lambda in this code
+    tether = s["preparation time"] * lam          # tau = k t / lambda in this code
     peak = s["max"]["time_of_max_tether_force"] * lam
     print(f"| {thesis} | {inverse} | {tether:.3f} | {s['max']['tether_force']:.4f} | {peak - tether:.2f} "
           f"| {s['max']['contour_length_ratio']:.4f} | {s['max']['cell_length']:.4f} "

@@ -22,7 +22,7 @@ void runTether(core::RunContext& ctx)
   } else if (ctx.options.restartDirectory) {
     directory = *ctx.options.restartDirectory;
   }
-  run::TetherRun2D simulation(ctx.comm, *ctx.deck, ctx.out);
+  run::TetherRun2D simulation(ctx.comm, *ctx.deck, ctx.out, ctx.deckName);
   *ctx.out << "tether2d: " << simulation.model().numberOfNodes() << " points, " << simulation.model().kernelName()
            << " Green's function, " << ctx.comm->getSize() << " rank(s)\n";
   const run::TetherRunResult2D result = simulation.run(directory, ctx.options.restartDirectory);

@@ -35,7 +35,7 @@ def figure(runs, plt, out, ca):
         table = run.table()
         # this code's tau = k t / lambda; the thesis's time is k t / Lambda
         scale = lam if lam < 1.0 else 1.0
-        time = (np.asarray(table["time"]) - run.summary["preparation_time"]) * scale
+        time = (np.asarray(table["time"]) - run.summary["preparation time"]) * scale
         end = max(end, float(time[-1]))
         style = "-" if lam <= 1.0 else "--"
         for ax, (column, _) in zip(axes[0], PANELS):

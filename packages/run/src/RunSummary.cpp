@@ -5,6 +5,7 @@
 #include <capsula/core/Timers.hpp>
 
 #include <algorithm>
+#include <ostream>
 
 namespace capsula::run {
 
@@ -29,6 +30,14 @@ void RunSummary::begin(const timeint::IntegrationStatistics& statistics, bool re
   wallStart_ = std::chrono::steady_clock::now();
   evaluationsAtStart_ = statistics.rhsEvaluations;
   restarted_ = restarted;
+}
+
+void RunSummary::printTerms(std::ostream& log) const
+{
+  log << "Terms built:\n";
+  for (const auto& term : terms_) {
+    log << "  " << term << "\n";
+  }
 }
 
 double RunSummary::wallSeconds() const

@@ -226,10 +226,7 @@ SceneRunResult SceneRunner::execute()
   summary_.begin(state_.statistics, restarted_);
   files_.open(deck_, {options_.application, options_.deckSource, comm_->getSize()});
   log() << "Output directory: " << files_.directory() << "\n";
-  log() << "Terms built:\n";
-  for (const auto& term : summary_.terms()) {
-    log() << "  " << term << "\n";
-  }
+  summary_.printTerms(log());
   outputs_.open(restarted_ ? std::optional<double>(state_.time) : std::nullopt);
 
   timeint::OutputSchedule schedule;

@@ -1,6 +1,6 @@
 #include "capsula/run/Tether2DDeck.hpp"
 
-#include "capsula/run/TetherRun2D.hpp"
+#include "capsula/run/TetherOutputs2D.hpp"
 
 #include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/scene2d/ModelParameters2D.hpp>

@@ -3,6 +3,7 @@
 #include "Tether2DRunTesting.hpp"
 
 #include <capsula/core/Error.hpp>
+#include <capsula/io/Checkpoint.hpp>
 #include <capsula/io/MetricsCsv.hpp>
 #include <capsula/run/TetherRun2D.hpp>
 
@@ -12,6 +13,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 #include <utility>
@@ -325,4 +328,50 @@ TEST(TetherRun2D, AreaDriftStaysSmallAtLambdaTen)
   // Measured 3.1e-4 (the spline area error of 40 points and the quadrature of the velocity).
   EXPECT_LT(result.maxAbsAreaDrift, 1e-3);
   EXPECT_GT(result.final.tetherForceX, 0.0);
+}
+
+TEST(TetherRun2D, SummaryHasTheLayoutOfEveryApp)
+{
+  // summary.json as RunSummary writes it for every app: status, the version object, the
+  // integration statistics under "steps", then the tether's results.
+  const std::string directory = scratchDirectory("summary");
+  const auto deck = tether2dDeck({"Cell/Number of points=32", "Tether/Minimum preparation time=0.125",
+                                  "Tether/Maximum preparation time=0.125", "Time integration/End time=0.125",
+                                  "Output/Interval=0.125"});
+  const TetherRunResult2D result = TetherRun2D(serial(), deck, nullptr).run(directory, std::nullopt);
+  std::ifstream in(directory + "/summary.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string summary = text.str();
+  for (const char* key : {"\"application\": \"tether2d\"", "\"status\": \"finished\"", "\"git sha\"", "\"trilinos\"",
+                          "\"accepted\": ", "\"rhs evaluations\"", "\"wall seconds (this process)\"",
+                          "\"tethered\": true", "\"preparation time\"", "\"tether_force_after_transient\""}) {
+    EXPECT_NE(summary.find(key), std::string::npos) << key << " in\n" << summary;
+  }
+  EXPECT_NE(summary.find("\"accepted\": " + std::to_string(result.steps)), std::string::npos) << summary;
+  EXPECT_EQ(summary.find("git_sha"), std::string::npos) << summary;
+  std::filesystem::remove_all(directory);
+}
+
+TEST(TetherRun2D, RestartRefusesACheckpointThatLacksAnEntry)
+{
+  // A checkpoint of another version (here: one without the preparation's window rate) is
+  // refused with the entry and the file named, not read with a guessed default.
+  const std::string directory = scratchDirectory("old_checkpoint");
+  const auto deck = tether2dDeck({"Cell/Number of points=32", "Tether/Minimum preparation time=0.125",
+                                  "Tether/Maximum preparation time=0.125", "Time integration/End time=0.125",
+                                  "Output/Interval=0.125"});
+  TetherRun2D(serial(), deck, nullptr).run(directory, std::nullopt);
+  io::Checkpoint checkpoint = io::readCheckpoint(directory + "/checkpoint.h5");
+  ASSERT_EQ(checkpoint.reals.erase("run preparation rate"), 1u);
+  io::writeCheckpoint(directory + "/checkpoint.h5", checkpoint);
+  try {
+    TetherRun2D(serial(), deck, nullptr).run(directory, directory);
+    FAIL() << "a checkpoint without 'run preparation rate' was accepted";
+  } catch (const core::InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("'run preparation rate'"), std::string::npos) << what;
+    EXPECT_NE(what.find("checkpoint.h5"), std::string::npos) << what;
+  }
+  std::filesystem::remove_all(directory);
 }

@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,8 @@ public:
   void begin(const timeint::IntegrationStatistics& statistics, bool restarted);
   void setTerms(std::vector<std::string> terms) { terms_ = std::move(terms); }
   const std::vector<std::string>& terms() const { return terms_; }
+  /// The log's account of what the run built: "Terms built:" and a line per term.
+  void printTerms(std::ostream& log) const;
   /// Wall seconds since begin().
   double wallSeconds() const;
 
