@@ -2,9 +2,9 @@
 // (thesis Chapter 5): deformation, slip and migration velocity, footprint, membrane and
 // wall shear stress over time, with snapshots for ParaView and restart.
 //
-// The deck names the scene (packages/scene/SceneParameters.hpp, docs/cell3d.md); this
-// driver only names the app (capsula::scene::runSceneApplication runs it).
-#include <capsula/scene/SceneApplication.hpp>
+// The deck names the scene and its outputs (packages/run/SceneRunDeck.hpp, docs/cell3d.md);
+// this driver only names the app (capsula::run::runSceneApplication runs it).
+#include <capsula/run/SceneApplication.hpp>
 
 int main(int argc, char** argv)
 {
@@ -17,5 +17,5 @@ int main(int argc, char** argv)
      "cell3d input/cell3d/demo.xml --output out/demo --restart out/demo --set \"Time integration/End time=4\"",
      "cell3d --print-defaults > my_deck.xml"},
     true};
-  return capsula::scene::runSceneApplication(argc, argv, app);
+  return capsula::run::runSceneApplication(argc, argv, app);
 }

@@ -3,10 +3,10 @@
 // slip and migration velocities and stress, and the pair's separation, relative velocities
 // and the gap between the surfaces, with snapshots for ParaView and restart.
 //
-// The deck names the scene (packages/scene/SceneParameters.hpp, docs/twocell3d.md); the
-// run is the same as cell3d's (capsula::scene::runScene), which writes one column per cell
+// The deck names the scene and its outputs (packages/run/SceneRunDeck.hpp,
+// docs/twocell3d.md); the run is the same as cell3d's (capsula::run::runScene), which writes one column per cell
 // for every metric and stops cleanly when two cells come closer than 'Cells/Minimum gap'.
-#include <capsula/scene/SceneApplication.hpp>
+#include <capsula/run/SceneApplication.hpp>
 
 int main(int argc, char** argv)
 {
@@ -20,5 +20,5 @@ int main(int argc, char** argv)
      "twocell3d input/twocell3d/demo.xml --output out/demo --restart out/demo --set \"Time integration/End time=4\"",
      "twocell3d --print-defaults > my_deck.xml"},
     true};
-  return capsula::scene::runSceneApplication(argc, argv, app);
+  return capsula::run::runSceneApplication(argc, argv, app);
 }

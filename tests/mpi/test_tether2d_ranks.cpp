@@ -5,8 +5,8 @@
 #include <capsula/contour/InitialShapes.hpp>
 #include <capsula/core/Deck.hpp>
 #include <capsula/operators/InterfaceVelocity2D.hpp>
-#include <capsula/scene2d/Tether2DDeck.hpp>
-#include <capsula/scene2d/TetherRun2D.hpp>
+#include <capsula/run/Tether2DDeck.hpp>
+#include <capsula/run/TetherRun2D.hpp>
 
 #include <Teuchos_DefaultSerialComm.hpp>
 #include <Tpetra_Core.hpp>
@@ -36,7 +36,7 @@ contour::Contour tetheredEllipse()
 
 Teuchos::ParameterList deck(double lambda)
 {
-  const auto valid = scene2d::validTether2DParameters();
+  const auto valid = run::validTether2DParameters();
   Teuchos::ParameterList d("tether2d");
   for (const std::string a : {"Cell/Number of points=33", "Flow/Capillary number=0.1",
                               "Tether/Minimum preparation time=0.125", "Tether/Maximum preparation time=0.25",
@@ -88,8 +88,8 @@ TEST(Tether2DRanks, TetheredRunDoesNotDependOnTheRankCount)
   const auto comm = Tpetra::getDefaultComm();
   bool ok = true;
   for (const double lambda : {1.0, 3.0}) {
-    scene2d::TetherRun2D parallel(comm, deck(lambda), nullptr);
-    scene2d::TetherRun2D alone(serial(), deck(lambda), nullptr);
+    run::TetherRun2D parallel(comm, deck(lambda), nullptr);
+    run::TetherRun2D alone(serial(), deck(lambda), nullptr);
     const auto a = parallel.run("", std::nullopt);
     const auto b = alone.run("", std::nullopt);
     // lambda = 1: identical velocities, hence identical steps. lambda = 3: round-off in

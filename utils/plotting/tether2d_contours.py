@@ -117,7 +117,7 @@ def final_contours_over_ca(runs, out, plt):
             last = run.last_snapshot("contour")
             if last is None:
                 continue
-            state = "equilibrium" if run.summary.get("steady") else f"tau = {last.time:.3g}"
+            state = "equilibrium" if run.summary.get("status") == "steady" else f"tau = {last.time:.3g}"
             curves.append((contour_of(last)[0], colour, f"Ca = {co.label_number(parameters(run)[2])} ({state})"))
         panels.append((f"{letter}) a/b = {co.label_number(ratio)}, lambda = 1", curves))
     return stacked_panels(plt, panels, "Final tethered contours over Ca (flow left to right)",

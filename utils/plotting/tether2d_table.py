@@ -24,11 +24,11 @@ def row(run):
     t = s["timings"]
     return dict(ab=run.value("Cell/Aspect ratio"), lam=run.value("Flow/Viscosity ratio"),
                 ca=run.value("Flow/Capillary number"), n=run.value("Cell/Number of points"),
-                prep=s.get("preparation_time", float("nan")), fmax=m["tether_force"], tfmax=m["time_of_max_tether_force"],
+                prep=s.get("preparation time", float("nan")), fmax=m["tether_force"], tfmax=m["time_of_max_tether_force"],
                 fafter=m.get("tether_force_after_transient", float("nan")),
                 amax=m["contour_length_ratio"], lmax=m["cell_length"], drift=m["abs_area_drift"],
-                steady=s.get("steady", False), end=s["final"]["time"], steps=t["accepted_steps"],
-                wall=t["wall_seconds_this_process"])
+                steady=s.get("status") == "steady", end=s["final"]["time"], steps=s["steps"]["accepted"],
+                wall=t["wall seconds (this process)"])
 
 
 def table(rows):

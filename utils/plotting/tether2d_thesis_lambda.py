@@ -37,7 +37,7 @@ def figure(runs, plt, out, ca):
         table = run.table()
         # this code's tau = k t / lambda; the thesis's time is k t / Lambda
         scale = lam if lam < 1.0 else 1.0
-        time = (np.asarray(table["time"]) - run.summary["preparation_time"]) * scale
+        time = (np.asarray(table["time"]) - run.summary["preparation time"]) * scale
         end = max(end, float(time[-1]))
         style = "-" if lam <= 1.0 else "--"
         for ax, (column, _) in zip(axes[0], PANELS):
@@ -68,7 +68,7 @@ def table(runs, path):
         for run in chosen:
             lam = run.value("Flow/Viscosity ratio")
             s = run.summary
-            tether = s["preparation_time"] * lam          # tau = k t / lambda in this code
+            tether = s["preparation time"] * lam          # tau = k t / lambda in this code
             peak = s["max"]["time_of_max_tether_force"] * lam
             lines.append(f"| {1.0 / lam:g} | {lam:.12g} | {tether:.3f} | {s['max']['tether_force']:.4f} "
                          f"| {peak - tether:.2f} | {s['max']['contour_length_ratio']:.4f} "

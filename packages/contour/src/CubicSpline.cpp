@@ -194,6 +194,29 @@ CubicSpline CubicSpline::notAKnot(std::vector<double> knots, const std::vector<d
   return spline;
 }
 
+CubicSpline CubicSpline::interpolating(std::vector<double> knots, const std::vector<double>& values)
+{
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    require<InputError>(std::isfinite(values[k]), "cubic spline: value ", k, " is not finite");
+  }
+  if (knots.size() >= 4) {
+    return notAKnot(std::move(knots), values);
+  }
+  const std::size_t n = checkedPieces(knots, 1, "interpolating");
+  require<InputError>(values.size() == n + 1, "an open cubic spline over ", n + 1, " knots takes ",
+                      n + 1, " values, got ", values.size());
+  CubicSpline spline(std::move(knots), SplineEnds::NotAKnot);
+  const std::vector<double> h = spacings(spline.knots_);
+  // The line has M = 0; the parabola through three samples the constant M = 2 c, c its
+  // second divided difference.
+  double m = 0.0;
+  if (n == 2) {
+    m = 2.0 * ((values[2] - values[1]) / h[1] - (values[1] - values[0]) / h[0]) / (h[0] + h[1]);
+  }
+  spline.buildPieces(values, std::vector<double>(n + 1, m));
+  return spline;
+}
+
 std::pair<int, double> CubicSpline::locate(double s) const
 {
   const double start = knots_.front();

@@ -1,3 +1,5 @@
+// The checked HDF5 calls and owning handles of the io package. (Length: one wrapper per HDF5
+// object and call the package uses, all with the same error convention, naming the file.)
 #include "Hdf5Support.hpp"
 
 #include "capsula/core/Error.hpp"

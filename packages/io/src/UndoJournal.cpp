@@ -1,3 +1,6 @@
+// The undo journal of snapshot appends (UndoJournal.hpp). (Length: the HDF5 file driver's
+// callbacks, the journal they write and its replay are kept together: a change to one must
+// be checked against the others.)
 #include "UndoJournal.hpp"
 
 #include "capsula/core/Error.hpp"

@@ -2,7 +2,7 @@
 
 #include "capsula/operators/GmresSolve.hpp"
 #include "capsula/operators/LayerPotentials2D.hpp"
-#include "capsula/operators/SecondKindOperator2D.hpp"
+#include "capsula/operators/SecondKindOperator.hpp"
 
 #include <capsula/core/Error.hpp>
 
@@ -20,13 +20,13 @@ class KernelInterfaceVelocity2D final : public InterfaceVelocity2D {
 public:
   KernelInterfaceVelocity2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes,
                             const ContourDiscretisation2D& discretisation, const SolverParameters& solver)
-    : distribution_(comm, numNodes), potentials_(discretisation), solver_(solver)
+    : distribution_(comm, numNodes, 2), potentials_(discretisation), solver_(solver)
   {
     validate(solver_);
   }
 
   std::string kernelName() const override { return Kernel::name; }
-  const NodeDistribution2D& distribution() const override { return distribution_; }
+  const NodeDistribution& distribution() const override { return distribution_; }
 
   VelocitySolution2D nodeVelocities(const contour::Contour& contour, const ContourLoad2D& load,
                                     const FlowConditions2D& flow, const std::vector<int>& fixedNodes,
@@ -71,12 +71,18 @@ public:
 
     using MV = Tpetra::MultiVector<double>;
     const double coefficient = (1.0 - lambda) / (2.0 * M_PI * (1.0 + lambda));
-    auto A = Teuchos::rcp(new SecondKindOperator2D(
+    std::vector<double> rowScale(static_cast<std::size_t>(owned), coefficient);
+    for (std::size_t k = 0; k < rowScale.size(); ++k) {
+      if (fixed[k]) {
+        rowScale[k] = 0.0;   // a prescribed velocity: the row is the identity
+      }
+    }
+    auto A = Teuchos::rcp(new SecondKindOperator(
       distribution_.map(),
       [this](const double* density, double* rows) {
         potentials_.doubleLayerAtNodes(density, DoubleLayerForm::Subtracted, rows);
       },
-      coefficient, fixed));
+      {}, std::move(rowScale), 2));
     // The start: the lambda = 1 velocity, or the warm start's combination of the last
     // solutions (every rank forms the same guess from the same global vectors).
     std::vector<double> globalRhs, guess;
@@ -144,7 +150,7 @@ private:
     potentials_.update(contour, distribution_.firstOwnedNode(), distribution_.numOwnedNodes());
   }
 
-  NodeDistribution2D distribution_;
+  NodeDistribution distribution_;
   LayerPotentials2D<Kernel> potentials_;
   SolverParameters solver_;
 };

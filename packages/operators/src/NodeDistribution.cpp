@@ -1,5 +1,7 @@
 #include "capsula/operators/NodeDistribution.hpp"
 
+#include <capsula/core/Error.hpp>
+
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -7,21 +9,29 @@
 
 namespace capsula::operators {
 
-NodeDistribution::NodeDistribution(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes)
-  : comm_(comm)
+NodeDistribution::NodeDistribution(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes,
+                                   int unknownsPerNode)
+  : comm_(comm), numNodes_(numNodes), unknownsPerNode_(unknownsPerNode)
 {
+  core::require<core::InputError>(numNodes > 0, "a node distribution needs nodes, got ", numNodes);
+  core::require<core::InputError>(unknownsPerNode == 2 || unknownsPerNode == 3,
+                                  "a node distribution has 2 or 3 unknowns per node, not ", unknownsPerNode);
   const Map nodes(static_cast<Tpetra::global_size_t>(numNodes), 0, comm_);
   numOwned_ = static_cast<int>(nodes.getNodeNumElements());
   firstNode_ = numOwned_ > 0 ? static_cast<int>(nodes.getMinGlobalIndex()) : 0;
-  map_ = Teuchos::rcp(new Map(3 * static_cast<Tpetra::global_size_t>(numNodes),
-                              3 * static_cast<std::size_t>(numOwned_), 0, comm_));
-  replicatedMap_ = Teuchos::rcp(new Map(3 * static_cast<Tpetra::global_size_t>(numNodes), 0, comm_,
+  const auto stride = static_cast<std::size_t>(unknownsPerNode);
+  map_ = Teuchos::rcp(new Map(stride * static_cast<Tpetra::global_size_t>(numNodes),
+                              stride * static_cast<std::size_t>(numOwned_), 0, comm_));
+  replicatedMap_ = Teuchos::rcp(new Map(stride * static_cast<Tpetra::global_size_t>(numNodes), 0, comm_,
                                         Tpetra::LocallyReplicated));
   gather_ = Teuchos::rcp(new Tpetra::Import<>(map_, replicatedMap_));
 }
 
 std::vector<double> NodeDistribution::gather(const std::vector<double>& ownedRows) const
 {
+  core::require(ownedRows.size() == static_cast<std::size_t>(unknownsPerNode_) * static_cast<std::size_t>(numOwned_),
+                "NodeDistribution::gather: ", unknownsPerNode_, " values per owned node expected, got ",
+                ownedRows.size());
   Tpetra::Vector<double> owned(map_);
   {
     auto data = owned.getDataNonConst();

@@ -3,12 +3,14 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace capsula::operators {
 
 SecondKindOperator::SecondKindOperator(Teuchos::RCP<const Map> map, DoubleLayerRows doubleLayer,
-                                       std::vector<double> densityScale, std::vector<double> rowScale)
+                                       std::vector<double> densityScale, std::vector<double> rowScale,
+                                       int unknownsPerNode)
   : map_(std::move(map)),
     replicatedMap_(Teuchos::rcp(new Map(map_->getGlobalNumElements(), 0, map_->getComm(),
                                         Tpetra::LocallyReplicated))),
@@ -16,11 +18,14 @@ SecondKindOperator::SecondKindOperator(Teuchos::RCP<const Map> map, DoubleLayerR
     doubleLayer_(std::move(doubleLayer)),
     densityScale_(std::move(densityScale)),
     rowScale_(std::move(rowScale)),
+    unknownsPerNode_(static_cast<std::size_t>(unknownsPerNode)),
     timer_(core::timer("Double-layer application"))
 {
-  core::require(3 * densityScale_.size() == map_->getGlobalNumElements(),
+  core::require(unknownsPerNode == 2 || unknownsPerNode == 3, "SecondKindOperator: 2 or 3 unknowns per node, not ",
+                unknownsPerNode, ".");
+  core::require(densityScale_.empty() || unknownsPerNode_ * densityScale_.size() == map_->getGlobalNumElements(),
                 "SecondKindOperator: one density factor per node expected.");
-  core::require(3 * rowScale_.size() == map_->getNodeNumElements(),
+  core::require(unknownsPerNode_ * rowScale_.size() == map_->getNodeNumElements(),
                 "SecondKindOperator: one row factor per owned node expected.");
 }
 
@@ -37,8 +42,12 @@ void SecondKindOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ET
   rows_.resize(numOwned);
   for (std::size_t v = 0; v < X.getNumVectors(); ++v) {
     const auto u = all.getData(v);
-    for (std::size_t k = 0; k < density_.size(); ++k) {
-      density_[k] = densityScale_[k / 3] * u[k];
+    if (densityScale_.empty()) {
+      std::copy(u.begin(), u.end(), density_.begin());
+    } else {
+      for (std::size_t k = 0; k < density_.size(); ++k) {
+        density_[k] = densityScale_[k / unknownsPerNode_] * u[k];
+      }
     }
     {
       Teuchos::TimeMonitor guard(*timer_);
@@ -48,7 +57,8 @@ void SecondKindOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ET
     const auto x = X.getData(v);
     auto y = Y.getDataNonConst(v);
     for (std::size_t k = 0; k < numOwned; ++k) {
-      const double Au = x[k] - rowScale_[k / 3] * rows_[k];
+      const double scale = rowScale_[k / unknownsPerNode_];
+      const double Au = scale == 0.0 ? x[k] : x[k] - scale * rows_[k];
       y[k] = (beta == 0.0 ? 0.0 : beta * y[k]) + alpha * Au;
     }
   }

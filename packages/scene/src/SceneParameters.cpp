@@ -1,13 +1,9 @@
 #include "capsula/scene/SceneParameters.hpp"
 
-#include "capsula/scene/StiffSolverParameters.hpp"
-
 #include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
 #include <capsula/mesh/RedistributionParameters.hpp>
-#include <capsula/operators/OperatorParameters.hpp>
-#include <capsula/timeint/TimeIntegrationParameters.hpp>
 
 #include <cctype>
 
@@ -31,38 +27,6 @@ bool isCellSublistName(const std::string& name)
     }
   }
   return digits.size() == 1 || digits[0] != '0';
-}
-
-void declareWallShearStressParameters(Teuchos::ParameterList& wall)
-{
-  core::declareBool(wall, "Enabled", false,
-                    "Compute the principal shear stress on a grid on the wall around the cells at "
-                    "every output (thesis eqs 3.59-3.63) and the areas above Threshold upstream and "
-                    "downstream of the cell (Figs 5.17-5.22). Needs 'Wall/Enabled'. Costs one "
-                    "boundary-integral evaluation per grid node per output.");
-  core::declareReal(wall, "Upstream extent", 6.0,
-                    "Length of wall covered upstream of (behind) the centroid of the cells, in cell "
-                    "radii.",
-                    core::atLeast(0.0));
-  core::declareReal(wall, "Downstream extent", 6.0,
-                    "Length of wall covered downstream of (ahead of) the centroid of the cells.",
-                    core::atLeast(0.0));
-  core::declareReal(wall, "Half width", 4.0,
-                    "Half the width of the covered strip across the flow (z), centred on the cells.",
-                    core::atLeast(0.0));
-  core::declareReal(wall, "Spacing", 0.25, "Grid spacing on the wall, in cell radii.",
-                    core::greaterThan(0.0));
-  core::declareReal(wall, "Threshold", 1.05,
-                    "Elevated stress: at least this multiple of the ambient wall stress (1 in units "
-                    "of mu k); the thesis uses 5% above ambient.",
-                    core::greaterThan(0.0));
-  core::declareRealArray(wall, "Isolated range", {}, 0,
-                         "{smallest, largest} wall stress of an isolated cell at the same height "
-                         "(wall_stress_min, wall_stress_max of its run); when given, metrics.csv "
-                         "gets the wall areas below and above that range (thesis Figs 6.6, 6.12: "
-                         "what a pair of cells does to the wall that one cell does not). Empty: "
-                         "no comparison.",
-                         core::atLeast(0.0));
 }
 
 } // namespace
@@ -109,46 +73,9 @@ void declareCellParameters(Teuchos::ParameterList& cell)
                     "5.1): the cell's mean vertical velocity is removed from all its nodes.");
 }
 
-void declareOutputParameters(Teuchos::ParameterList& output)
+void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck)
 {
-  core::declareString(output, "Directory", "cell3d-output",
-                      "Directory for metrics.csv, summary.json, snapshots, checkpoint.h5, deck.xml "
-                      "and run.json. --output overrides it.");
-  core::declareReal(output, "Interval", 0.25,
-                    "Time between outputs (metrics, snapshots, checkpoint); 0: only the start and "
-                    "the end.",
-                    core::atLeast(0.0));
-  core::declareBool(output, "Snapshots", true,
-                    "Write HDF5 snapshots of the cell surfaces (positions, velocities, loads, "
-                    "tensions) with an XDMF index for ParaView.");
-  core::declareInt(output, "Snapshot stride", 1,
-                   "Write a snapshot at every n-th output only (metrics are written at every "
-                   "output).",
-                   1);
-  core::declareBool(output, "Checkpoint", true,
-                    "Write checkpoint.h5 at every output, so --restart can continue the run.");
-  core::declareInt(output, "Progress steps", 20,
-                   "Print a progress line every this many accepted steps (and at every output).", 1);
-  core::declareRealArray(output, "Flow probes", {}, 0,
-                         "Points (x1, y1, z1, x2, y2, z2, ...) where the fluid velocity is written "
-                         "to probes.csv at every output (empty: none).");
-  declareWallShearStressParameters(
-    core::declareSublist(output, "Wall shear stress", "Principal shear stress on the wall."));
-  auto& stability = core::declareSublist(
-    output, "Stability", "Bounds on the diagnostics of every output (docs/stability.md).");
-  core::declareReal(stability, "Minimum angle", 5.0,
-                    "Stop the run with an error (keeping the last good checkpoint and outputs) when "
-                    "an element's smallest corner angle falls below this many degrees at an "
-                    "output: the mesh has degraded past what its quadrature resolves (0: never).",
-                    core::atLeast(0.0), core::lessThan(60.0));
-}
-
-Teuchos::RCP<const Teuchos::ParameterList> validSceneParameters(const Teuchos::ParameterList& deck,
-                                                                const std::string& appName)
-{
-  auto valid = Teuchos::rcp(new Teuchos::ParameterList(appName));
-
-  auto& flow = core::declareSublist(*valid, "Flow", "The undisturbed simple shear u = (k y, 0, 0).");
+  auto& flow = core::declareSublist(valid, "Flow", "The undisturbed simple shear u = (k y, 0, 0).");
   core::declareReal(flow, "Capillary number", 0.3,
                     "Ca = mu k a / G: shear rate k times external viscosity mu times cell radius a "
                     "over the membrane shear modulus G (eq 3.16).",
@@ -159,12 +86,12 @@ Teuchos::RCP<const Teuchos::ParameterList> validSceneParameters(const Teuchos::P
                     "GMRES solve.",
                     core::greaterThan(0.0));
 
-  auto& wall = core::declareSublist(*valid, "Wall", "The plane wall y = 0 below the flow.");
+  auto& wall = core::declareSublist(valid, "Wall", "The plane wall y = 0 below the flow.");
   core::declareBool(wall, "Enabled", true,
                     "true: the flow is bounded by the wall y = 0 (Blake's kernel, App. B); false: "
                     "unbounded shear (free-space kernel).");
 
-  auto& cells = core::declareSublist(*valid, "Cells", "One sublist per cell: Cell 0, Cell 1, ...");
+  auto& cells = core::declareSublist(valid, "Cells", "One sublist per cell: Cell 0, Cell 1, ...");
   declareMinimumGap(cells);
   bool anyCell = false;
   if (deck.isSublist("Cells")) {
@@ -180,19 +107,14 @@ Teuchos::RCP<const Teuchos::ParameterList> validSceneParameters(const Teuchos::P
   if (!anyCell) {
     declareCellParameters(core::declareSublist(cells, cellSublistName(0), "A cell."));
   }
+}
 
-  timeint::declareTimeIntegrationParameters(
-    core::declareSublist(*valid, "Time integration", "Runge-Kutta time stepping (Section 3.10)."), /*stabilityLimitDefault=*/true);
-  operators::declareOperatorParameters(*valid);
-  declareStiffSolverParameters(core::declareSublist(
-    valid->sublist("Solver"), "Stiff",
-    "The linear solves of the stiff time integrators (Time integration/Method ROS34PW2, ROS2, Auto)."));
+void declareMeshEvolutionParameters(Teuchos::ParameterList& valid)
+{
   mesh::declareRedistributionParameters(core::declareSublist(
-    *valid, "Mesh regularisation", "Tangential redistribution of the nodes of a running cell (docs/stability.md)."));
+    valid, "Mesh regularisation", "Tangential redistribution of the nodes of a running cell (docs/stability.md)."));
   mesh::declareAdaptionParameters(core::declareSublist(
-    *valid, "Mesh adaption", "Curvature-driven refinement of a running cell's mesh (thesis eq 4.3, docs/stability.md)."));
-  declareOutputParameters(core::declareSublist(*valid, "Output", "What is written, where and when."));
-  return valid;
+    valid, "Mesh adaption", "Curvature-driven refinement of a running cell's mesh (thesis eq 4.3, docs/stability.md)."));
 }
 
 } // namespace capsula::scene

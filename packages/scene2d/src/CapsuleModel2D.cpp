@@ -53,6 +53,40 @@ void CapsuleModel2D::restoreGmresWarmStart(const std::vector<double>& rightHandS
                                                           solutions);
 }
 
+std::vector<std::string> CapsuleModel2D::terms() const
+{
+  std::vector<std::string> terms{"single layer, " + kernelName() + " Green's function, log-singular rule"};
+  if (flow_.conditions.viscosityRatio != 1.0) {
+    terms.emplace_back("double layer (subtracted) with Belos GMRES, lambda != 1");
+  }
+  if (discretisation_.nearSingularDistance > 0.0) {
+    terms.emplace_back("near-singular subdivision");
+  }
+  return terms;
+}
+
+void CapsuleModel2D::save(io::Checkpoint& checkpoint) const
+{
+  checkpoint.reals["run cell prestress"] = cell_.prestress;
+  if (warmStart_ && !warmStart_->empty()) {   // the next solve's start
+    checkpoint.arrays["run gmres warm start rhs"] = warmStart_->rightHandSides();
+    checkpoint.arrays["run gmres warm start solutions"] = warmStart_->solutions();
+  }
+}
+
+void CapsuleModel2D::load(const io::Checkpoint& checkpoint, const std::string& source)
+{
+  const double prestress = io::requiredReal(checkpoint, "run cell prestress", source);
+  core::require<core::InputError>(prestress == cell_.prestress, "The checkpoint ", source,
+                                  " was written with Cell/Prestress = ", prestress, " but the deck has ",
+                                  cell_.prestress, ": the membrane's reference would change; restart with the run's deck.");
+  const auto* rhs = io::optionalArray(checkpoint, "run gmres warm start rhs");
+  const auto* solutions = io::optionalArray(checkpoint, "run gmres warm start solutions");
+  if (rhs && solutions) {   // the next solve starts where it would have
+    restoreGmresWarmStart(*rhs, *solutions);
+  }
+}
+
 std::vector<double> CapsuleModel2D::initialState() const
 {
   return std::vector<double>(referenceNodes_.data(), referenceNodes_.data() + referenceNodes_.size());

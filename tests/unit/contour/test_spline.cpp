@@ -220,6 +220,54 @@ TEST(ContourSpline, ClampedAndNotAKnotAreExactForCubics)
   }
 }
 
+TEST(ContourSpline, InterpolatingIsTheLineOrParabolaThroughFewSamples)
+{
+  const CubicSpline two = CubicSpline::interpolating({1.0, 3.0}, {2.0, 6.0});
+  EXPECT_DOUBLE_EQ(two.derivative(3.0), 2.0);
+  EXPECT_DOUBLE_EQ(two.value(2.0), 4.0);
+  // Parabola f = t^2 through three uneven samples: slope 2t everywhere (1e-14: round-off
+  // of the divided differences of O(1) values).
+  const CubicSpline three = CubicSpline::interpolating({0.0, 0.5, 2.0}, {0.0, 0.25, 4.0});
+  EXPECT_NEAR(three.derivative(2.0), 4.0, 1e-14);
+  EXPECT_NEAR(three.derivative(0.0), 0.0, 1e-14);
+  EXPECT_NEAR(three.derivative(1.0), 2.0, 1e-14);
+  EXPECT_NEAR(three.value(1.0), 1.0, 1e-14);
+  // From four samples on it is the not-a-knot spline.
+  const std::vector<double> knots{0.0, 0.3, 0.45, 1.1, 1.2};
+  const std::vector<double> values{0.5, -0.1, 0.2, 0.9, 0.4};
+  const CubicSpline notAKnot = CubicSpline::notAKnot(knots, values);
+  std::vector<CubicPiece> pieces;
+  for (int k = 0; k < notAKnot.numberOfPieces(); ++k) {
+    pieces.push_back(notAKnot.piece(k));
+  }
+  expectSamePieces(CubicSpline::interpolating(knots, values), pieces);
+  EXPECT_THROW(CubicSpline::interpolating({0.0}, {1.0}), capsula::core::InputError);
+  EXPECT_THROW(CubicSpline::interpolating({0.0, 1.0}, {1.0, NAN}), capsula::core::InputError);
+}
+
+TEST(ContourSpline, InterpolatingEndSlopeConvergesAtThirdOrder)
+{
+  // The slope at the LAST sample is what the centroid velocity uses at the newest output
+  // time. For a smooth f the not-a-knot end slope error is O(h^3): halving h divides it
+  // by ~8.
+  std::vector<double> errors;
+  for (int n : {8, 16, 32, 64}) {
+    std::vector<double> t, f;
+    for (int k = 0; k <= n; ++k) {
+      t.push_back(2.0 * k / n);
+      f.push_back(std::sin(3.0 * t.back()));
+    }
+    const CubicSpline spline = CubicSpline::interpolating(t, f);
+    errors.push_back(std::abs(spline.derivative(2.0) - 3.0 * std::cos(6.0)));
+  }
+  for (std::size_t k = 1; k < errors.size(); ++k) {
+    const double order = std::log2(errors[k - 1] / errors[k]);
+    EXPECT_GT(order, 2.7) << "refinement " << k;   // asymptotically 3
+  }
+  // Size: h^3 |f''''| = (1/32)^3 * 81 = 2.5e-3 times a constant well below 1.
+  EXPECT_LT(errors.back(), 5e-4);
+}
+
 TEST(ContourSpline, NaturalIsExactForLinesAndHasZeroEndCurvature)
 {
   std::mt19937 generator(9);

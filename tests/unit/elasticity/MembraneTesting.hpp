@@ -1,6 +1,9 @@
 #pragma once
 // Small helpers shared by the 3D membrane tests: mapping a configuration node by node,
-// a smooth non-affine deformation, and the observed order of convergence.
+// a smooth non-affine deformation; the observed order of convergence comes from
+// capsula/testing/ConvergenceOrder.hpp.
+#include "capsula/testing/ConvergenceOrder.hpp"
+
 #include <capsula/mesh/Vec3.hpp>
 
 #include <cmath>
@@ -32,21 +35,6 @@ inline Vec3 smoothDeformation(const Vec3& X)
 {
   return Vec3(1.25 * X[0] + 0.15 * X[1] * X[2], 0.85 * X[1] + 0.1 * X[0] * X[0],
               X[2] * (1.0 + 0.2 * X[0]) - 0.05 * X[1]);
-}
-
-/// Least-squares slope p of log2|error| = c - p * level (the mesh size halves per level).
-inline double observedOrder(const std::vector<int>& levels, const std::vector<double>& errors)
-{
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  const double n = static_cast<double>(levels.size());
-  for (std::size_t i = 0; i < levels.size(); ++i) {
-    const double x = levels[i], y = std::log2(std::abs(errors[i]));
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return -(n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
 } // namespace capsula::elasticity::testing

@@ -19,7 +19,7 @@ namespace {
 
 using namespace capsula::elasticity;
 using capsula::elasticity::testing::mapNodes;
-using capsula::elasticity::testing::observedOrder;
+using capsula::testing::orderOverLevels;
 using capsula::elasticity::testing::smoothDeformation;
 using capsula::mesh::SurfaceMesh;
 
@@ -134,7 +134,7 @@ TEST(MembraneContour, TorqueOfThePiecewiseConstantLoadConverges)
     torques.push_back(m.loadTorque().norm() / scale);
     std::printf("  %5d  %.3e\n", level, torques.back());
   }
-  const double order = observedOrder(levels, torques);
+  const double order = orderOverLevels(levels, torques);
   std::printf("  observed order %.2f\n", order);
   // Measured: order 2.0, 3.3e-5 at level 3.
   EXPECT_GT(order, 1.8);

@@ -25,7 +25,7 @@ namespace {
 
 using namespace capsula::elasticity;
 using capsula::elasticity::testing::mapNodes;
-using capsula::elasticity::testing::observedOrder;
+using capsula::testing::orderOverLevels;
 using capsula::elasticity::testing::smoothDeformation;
 using capsula::mesh::SurfaceMesh;
 
@@ -136,7 +136,7 @@ TEST(MembraneEnergy, PowerBalanceConvergesUnderRefinement)
       errors.push_back(std::abs(work - rate) / std::abs(rate));
       std::printf("  %5d  %12.6f  %12.6f  %12.3e\n", level, rate, work, errors.back());
     }
-    const double order = observedOrder(levels, errors);
+    const double order = orderOverLevels(levels, errors);
     std::printf("  observed order %.2f\n", order);
     EXPECT_LT(errors[1], errors[0]) << law->name();
     EXPECT_LT(errors[2], errors[1]) << law->name();

@@ -21,7 +21,7 @@ namespace {
 
 using namespace capsula::elasticity;
 using capsula::elasticity::testing::mapNodes;
-using capsula::elasticity::testing::observedOrder;
+using capsula::testing::orderOverLevels;
 using capsula::elasticity::testing::smoothDeformation;
 using capsula::mesh::SurfaceMesh;
 
@@ -80,8 +80,8 @@ TEST(MembraneRedistribution, NodesStayMaterialPointsAndTheEnergyIsKept)
   // reference (a missed update) is off by its displacement (0.04-0.3), a reference
   // interpolated on other maps than the membrane's by O(h^2) (order 2): the bounds catch
   // both.
-  EXPECT_GT(observedOrder(levels, materialErrors), 2.5);
+  EXPECT_GT(orderOverLevels(levels, materialErrors), 2.5);
   EXPECT_LT(materialErrors.back(), 3e-4);
-  EXPECT_GT(observedOrder(levels, energyErrors), 2.5);
+  EXPECT_GT(orderOverLevels(levels, energyErrors), 2.5);
   EXPECT_LT(std::abs(energyErrors.back()), 1e-4);
 }

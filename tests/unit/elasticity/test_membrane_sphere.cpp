@@ -23,7 +23,7 @@ namespace {
 
 using namespace capsula::elasticity;
 using capsula::elasticity::testing::mapNodes;
-using capsula::elasticity::testing::observedOrder;
+using capsula::testing::orderOverLevels;
 using capsula::mesh::SurfaceMesh;
 
 constexpr double G = 0.7;
@@ -166,7 +166,7 @@ TEST(MembraneSphere, ElementLoadsConvergeToTheLaplaceLoad)
     mean.push_back(sum / mesh.numElements());
     std::printf("  %5d  %8d   %18.4e   %18.4e\n", level, mesh.numElements(), largest, mean.back());
   }
-  const double order = observedOrder(levels, worst);
+  const double order = orderOverLevels(levels, worst);
   std::printf("  observed order of the max error: %.2f\n", order);
   // Acceptance bound 1% at level 3 (measured 6.6e-4); second order in h (the node
   // normals, the interpolated tension and the curved edges all carry O(h^2) errors).

@@ -22,7 +22,7 @@ namespace {
 
 using namespace capsula::elasticity;
 using capsula::elasticity::testing::mapNodes;
-using capsula::elasticity::testing::observedOrder;
+using capsula::testing::orderOverLevels;
 using capsula::elasticity::testing::smoothDeformation;
 using capsula::mesh::SurfaceMesh;
 using capsula::mesh::Vec3;
@@ -140,7 +140,7 @@ TEST(MembraneVirtualWork, LaplaceLawOnAnInflatedSphereConverges)
     }
     // The load is the L2 projection of a second-derivative quantity of a quadratic
     // surface: first order in h at the nodes at least.
-    EXPECT_GT(observedOrder(levels, errors), 0.9) << law->name();
+    EXPECT_GT(orderOverLevels(levels, errors), 0.9) << law->name();
     EXPECT_LT(errors.back(), 0.05) << law->name();
   }
 }
@@ -169,7 +169,7 @@ TEST(MembraneVirtualWork, AgreesWithTheContourIntegralOnASmoothDeformation)
     differences.push_back(std::sqrt(numerator / denominator));
     std::printf("level %d: relative L2 difference of element loads %.3e\n", level, differences.back());
   }
-  EXPECT_GT(observedOrder(levels, differences), 0.9);
+  EXPECT_GT(orderOverLevels(levels, differences), 0.9);
   EXPECT_LT(differences.back(), 0.05);
 }
 

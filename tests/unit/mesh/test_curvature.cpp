@@ -2,7 +2,7 @@
 // exact identities of the kernels, the exact ellipsoid curvature, convergence of the
 // three node-curvature methods on a sphere, and their accuracy table on the prolate
 // ellipsoid b/a = 0.5, c/a = 2 of Fig. 5.23.
-#include "ConvergenceFit.hpp"
+#include "capsula/testing/ConvergenceOrder.hpp"
 
 #include <capsula/core/Error.hpp>
 #include <capsula/mesh/Curvature.hpp>
@@ -23,7 +23,7 @@
 #include <vector>
 
 using namespace capsula::mesh;
-using capsula::mesh::testing::observedOrder;
+using capsula::testing::orderOverLevels;
 
 namespace {
 
@@ -236,9 +236,9 @@ TEST(NodeCurvature, AllMethodsConvergeOnASphere)
     // Every method is at least second order: the quadratic element map and the
     // paraboloid both miss the r^4 term of the sphere.
     std::printf("  %-16s observed order %.2f (kappa), %.2f (K)\n", method.name.c_str(),
-                observedOrder(levels, meanErrors), observedOrder(levels, gaussianErrors));
-    EXPECT_GT(observedOrder(levels, meanErrors), 1.8) << method.name;
-    EXPECT_GT(observedOrder(levels, gaussianErrors), 1.8) << method.name;
+                orderOverLevels(levels, meanErrors), orderOverLevels(levels, gaussianErrors));
+    EXPECT_GT(orderOverLevels(levels, meanErrors), 1.8) << method.name;
+    EXPECT_GT(orderOverLevels(levels, gaussianErrors), 1.8) << method.name;
     // Level 4 (N_E = 5120): < 0.5% everywhere; the measured values are ~2e-3 (element
     // average), ~1e-3 (quadratic fit) and ~1e-5 (degree-4 jet).
     EXPECT_LT(meanErrors.back(), 5e-3) << method.name;
@@ -285,7 +285,7 @@ TEST(NodeCurvature, ProlateEllipsoidTableOfFig5_23)
     for (std::size_t l = 1; l < levels.size(); ++l) {
       e.push_back(errors[m][l].mean);
     }
-    return observedOrder(fine, e);
+    return orderOverLevels(fine, e);
   };
   std::printf("  observed order (levels 2-4): %.2f, %.2f, %.2f\n", order(0), order(1), order(2));
   EXPECT_GT(order(0), 1.6);

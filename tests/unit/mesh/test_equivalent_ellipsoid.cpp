@@ -1,6 +1,6 @@
 // Inertia tensor, equivalent ellipsoid and Taylor deformation parameters (thesis
 // Section 3.11.1, eqs 3.51-3.53, ERRATA fix of eq 3.52).
-#include "ConvergenceFit.hpp"
+#include "capsula/testing/ConvergenceOrder.hpp"
 
 #include <capsula/mesh/EquivalentEllipsoid.hpp>
 #include <capsula/mesh/Measures.hpp>
@@ -15,7 +15,7 @@
 #include <vector>
 
 using namespace capsula::mesh;
-using capsula::mesh::testing::observedOrder;
+using capsula::testing::orderOverLevels;
 
 namespace {
 const double pi = std::acos(-1.0);
@@ -39,7 +39,7 @@ TEST(MeshEquivalentEllipsoid, SemiAxesOfAnEllipsoidMeshConvergeToItsOwn)
       EXPECT_NEAR(d12, (1.5 - 1.0) / (1.5 + 1.0), 1e-4);
     }
   }
-  EXPECT_GT(observedOrder(levels, errors), 3.7); // measured 3.96: volume-like integrals
+  EXPECT_GT(orderOverLevels(levels, errors), 3.7); // measured 3.96: volume-like integrals
   EXPECT_LT(errors.back(), 1e-6);                // measured 3.8e-7 at level 4
 }
 

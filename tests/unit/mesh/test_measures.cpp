@@ -1,7 +1,7 @@
 // Area, volume, centroid, reduced volume and projected areas (thesis Section 3.11,
 // ERRATA): convergence to exact values under refinement, exactness where the
 // integrand is polynomial, invariance under rigid motions.
-#include "ConvergenceFit.hpp"
+#include "capsula/testing/ConvergenceOrder.hpp"
 
 #include <capsula/mesh/Icosphere.hpp>
 #include <capsula/mesh/Measures.hpp>
@@ -17,7 +17,7 @@
 #include <vector>
 
 using namespace capsula::mesh;
-using capsula::mesh::testing::observedOrder;
+using capsula::testing::orderOverLevels;
 
 namespace {
 
@@ -76,8 +76,8 @@ TEST(MeshMeasures, SphereAreaAndVolumeConvergeAtFourthOrder)
     std::printf("  %5d %6d  %12.4e  %12.4e\n", level, mesh.numElements(), areaErrors.back(),
                 volumeErrors.back());
   }
-  const double areaOrder = observedOrder(levels, areaErrors);
-  const double volumeOrder = observedOrder(levels, volumeErrors);
+  const double areaOrder = orderOverLevels(levels, areaErrors);
+  const double volumeOrder = orderOverLevels(levels, volumeErrors);
   std::printf("  observed orders: area %.3f, volume %.3f\n", areaOrder, volumeOrder);
   // Quadratic elements on nodes exactly on the sphere: errors fall 16-fold per level
   // (measured 3.96 and 3.98 over levels 1-4); a linear-element or misplaced-midside
@@ -105,8 +105,8 @@ TEST(MeshMeasures, EllipsoidAreaAndVolumeConvergeToExact)
     volumeErrors.push_back(enclosedVolume(mesh) / exactVolume - 1.0);
     std::printf("  %5d  %12.4e  %12.4e\n", level, areaErrors.back(), volumeErrors.back());
   }
-  const double areaOrder = observedOrder(levels, areaErrors);
-  const double volumeOrder = observedOrder(levels, volumeErrors);
+  const double areaOrder = orderOverLevels(levels, areaErrors);
+  const double volumeOrder = orderOverLevels(levels, volumeErrors);
   std::printf("  observed orders: area %.3f, volume %.3f\n", areaOrder, volumeOrder);
   // The affine map keeps the sphere's fourth order (measured 3.98 and 4.00).
   EXPECT_GT(areaOrder, 3.8);
@@ -192,7 +192,7 @@ TEST(MeshMeasures, ProjectedAreasOfSphereAndPlatelet)
     levels.push_back(level);
     errors.push_back((pa / (4.0 * pi) - Vec3::Ones()).cwiseAbs().maxCoeff());
   }
-  EXPECT_GT(observedOrder(levels, errors), 1.8); // measured 2.05 (N_Q = 7)
+  EXPECT_GT(orderOverLevels(levels, errors), 1.8); // measured 2.05 (N_Q = 7)
   EXPECT_LT(errors.back(), 1e-4);                // measured 5.4e-5 at level 4
 
   const Vec3 platelet = projectedAreas(makeSpheroid(4, 1.5, 0.25));

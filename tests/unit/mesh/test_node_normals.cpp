@@ -1,5 +1,5 @@
 // Area-weighted node-averaged normals (thesis Section 3.5.2).
-#include "ConvergenceFit.hpp"
+#include "capsula/testing/ConvergenceOrder.hpp"
 
 #include <capsula/mesh/NodeNormals.hpp>
 #include <capsula/mesh/Shapes.hpp>
@@ -11,7 +11,7 @@
 #include <vector>
 
 using namespace capsula::mesh;
-using capsula::mesh::testing::observedOrder;
+using capsula::testing::orderOverLevels;
 
 namespace {
 
@@ -46,8 +46,8 @@ TEST(MeshNodeNormals, ConvergeToTheExactNormal)
   // The element normal at a node is only first-order accurate in general; area averaging
   // cancels the leading error. Measured orders over levels 1-4: sphere 2.98 (symmetric
   // neighbourhoods), ellipsoid 1.69, rising towards 2 (the last ratio is 3.8).
-  EXPECT_GT(observedOrder(levels, sphere), 2.7);
-  EXPECT_GT(observedOrder(levels, ellipsoid), 1.5);
+  EXPECT_GT(orderOverLevels(levels, sphere), 2.7);
+  EXPECT_GT(orderOverLevels(levels, ellipsoid), 1.5);
   EXPECT_LT(ellipsoid.back(), 5e-3); // measured 2.7e-3 at level 4
 }
 

@@ -1,6 +1,9 @@
 #pragma once
 // Helpers shared by the operator tests: solvers on one rank, element-averaged loads from
-// a field on the surface, and the observed order of convergence under refinement.
+// a field on the surface, and a report of the observed order of convergence under
+// refinement (capsula/testing/ConvergenceOrder.hpp).
+#include "capsula/testing/ConvergenceOrder.hpp"
+
 #include <capsula/mesh/ElementGeometry.hpp>
 #include <capsula/mesh/Shapes.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
@@ -94,22 +97,6 @@ std::vector<double> nodalField(const CellSurfaces& surfaces, Field&& g)
   return values;
 }
 
-/// Least-squares slope of -log2(error) against the mesh level (h halves per level).
-inline double observedOrder(const std::vector<int>& levels, const std::vector<double>& errors)
-{
-  const double n = static_cast<double>(levels.size());
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  for (std::size_t i = 0; i < levels.size(); ++i) {
-    const double x = levels[i];
-    const double y = std::log2(std::abs(errors[i]));
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return -(n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 /// Prints "label: level l error e ..." and the fitted order; returns the order.
 inline double reportConvergence(const std::string& label, const std::vector<int>& levels,
                                 const std::vector<double>& errors)
@@ -118,7 +105,7 @@ inline double reportConvergence(const std::string& label, const std::vector<int>
   for (std::size_t i = 0; i < levels.size(); ++i) {
     std::printf("  n=%d %.3e", levels[i], errors[i]);
   }
-  const double order = observedOrder(levels, errors);
+  const double order = capsula::testing::orderOverLevels(levels, errors);
   std::printf("  order %.2f\n", order);
   return order;
 }

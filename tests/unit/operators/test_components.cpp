@@ -415,4 +415,40 @@ TEST(SecondKindOperator, HonoursAlphaBetaAndRejectsTranspose)
   EXPECT_EQ(A.applications(), 2);
 }
 
+TEST(SecondKindOperator, TwoUnknownsPerNodeWithAPrescribedRow)
+{
+  // The 2D form: no density scale, row scale c everywhere but 0 at node 1 (a tether),
+  // whose two rows are then the identity.
+  using MV = Tpetra::MultiVector<double>;
+  const auto comm = ot::serialComm();
+  const int numNodes = 3;
+  auto map = Teuchos::rcp(new Tpetra::Map<>(2 * numNodes, 0, comm));
+  const auto layer = [](const double* u, double* rows) {
+    double sum = 0.0;
+    for (int k = 0; k < 2 * numNodes; ++k) {
+      sum += u[k];
+    }
+    for (int k = 0; k < 2 * numNodes; ++k) {
+      rows[k] = sum + k;   // differs per row, so a wrong row index shows
+    }
+  };
+  const SecondKindOperator A(map, layer, {}, {0.25, 0.0, 0.25}, 2);
+  MV x(map, 1), y(map, 1);
+  {
+    auto data = x.getDataNonConst(0);
+    for (int k = 0; k < 2 * numNodes; ++k) {
+      data[k] = k + 1.0;   // sum 21
+    }
+  }
+  A.apply(x, y);
+  const auto data = y.getData(0);
+  for (int k = 0; k < 2 * numNodes; ++k) {
+    const double expected = (k / 2 == 1) ? k + 1.0 : (k + 1.0) - 0.25 * (21.0 + k);
+    EXPECT_DOUBLE_EQ(data[k], expected) << "row " << k;
+  }
+  // One factor per owned node, and 2 or 3 unknowns per node.
+  EXPECT_THROW(SecondKindOperator(map, layer, {}, {0.25, 0.25}, 2), core::Error);
+  EXPECT_THROW(SecondKindOperator(map, layer, {}, {0.25, 0.25, 0.25}, 4), core::Error);
+}
+
 } // namespace

@@ -7,6 +7,7 @@
 //   on the circle (-2 pi a ln a from -ln r: int_0^2pi ln(2 sin(theta/2)) = 0; pi a from the
 //   chord term, whose direction turns through pi while theta runs through 2 pi).
 #include "Contour2DTesting.hpp"
+#include "capsula/testing/ConvergenceOrder.hpp"
 
 #include <capsula/operators/LayerPotentials2D.hpp>
 
@@ -24,7 +25,7 @@ using operators::DoubleLayerForm;
 using operators::LayerPotentials2D;
 using operators::testing2d::circle;
 using operators::testing2d::ellipse;
-using operators::testing2d::observedOrder;
+using capsula::testing::fittedOrder;
 
 const auto normalLoad = [](const contour::ContourPoint& p, int, double) -> Eigen::Vector2d { return p.normal; };
 
@@ -193,8 +194,8 @@ TEST(LayerPotentials2D, SingleLayerOfUnitDensityOnACircleConvergesAtFourthOrder)
         std::max({std::abs(cx[0] - exact), std::abs(cx[1]), std::abs(cy[0]), std::abs(cy[1] - exact)}));
       nodeErrors.push_back(errNode);
     }
-    EXPECT_GT(observedOrder(sizes, nodeErrors), 3.8) << "a = " << a;
-    EXPECT_GT(observedOrder(sizes, centreErrors), 3.8) << "a = " << a;
+    EXPECT_GT(fittedOrder(sizes, nodeErrors), 3.8) << "a = " << a;
+    EXPECT_GT(fittedOrder(sizes, centreErrors), 3.8) << "a = " << a;
     EXPECT_LT(nodeErrors.back(), 1e-6 * std::abs(exact)) << "a = " << a; // measured 8e-9 .. 5e-8
   }
 }

@@ -1,5 +1,7 @@
 // Log-weighted Gauss rules, int_0^1 -ln(x) f(x) dx: exactness against the closed forms
 // int_0^1 -ln(x) x^k dx = 1/(k+1)^2, and convergence for smooth non-polynomial f.
+#include "capsula/testing/ConvergenceOrder.hpp"
+
 #include <capsula/quadrature/LogWeightedGauss.hpp>
 
 #include <capsula/core/Error.hpp>
@@ -157,18 +159,13 @@ TEST(LogWeightedGauss, GeometricRateForAPoleAtMinusOne)
   // bends the line slightly over n = 2..8).
   const double pi = std::acos(-1.0);
   const double exact = pi * pi / 12.0;
-  double sn = 0, se = 0, snn = 0, sne = 0;
-  int count = 0;
+  std::vector<double> points, logErrors;
   for (int n = 2; n <= 8; ++n) {
     const double value = apply(logWeightedGauss(n), [](double x) { return 1.0 / (1.0 + x); });
-    const double logError = std::log(std::abs(value - exact));
-    sn += n;
-    se += logError;
-    snn += n * n;
-    sne += n * logError;
-    ++count;
+    points.push_back(n);
+    logErrors.push_back(std::log(std::abs(value - exact)));
   }
-  const double slope = (count * sne - sn * se) / (count * snn - sn * sn);
+  const double slope = capsula::testing::leastSquaresSlope(points, logErrors);
   const double expected = -2.0 * std::log(3.0 + std::sqrt(8.0));
   EXPECT_NEAR(slope, expected, 0.1 * std::abs(expected)) << "fitted slope " << slope;
   const double value20 = apply(logWeightedGauss(20), [](double x) { return 1.0 / (1.0 + x); });

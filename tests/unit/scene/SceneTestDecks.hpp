@@ -1,11 +1,14 @@
 #pragma once
-// Small validated decks for the scene tests (level-0/1 spheres, short runs), and the
-// scene one of them describes.
+// Small validated decks for the scene tests (level-0/1 spheres), and the scene one of them
+// describes. The run tests add the keys of a run (run/SceneRunFixture.hpp).
 #include <capsula/core/Deck.hpp>
+#include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
+#include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/scene/Scene.hpp>
 #include <capsula/scene/SceneDescription.hpp>
 #include <capsula/scene/SceneParameters.hpp>
+#include <capsula/scene/StiffSolverParameters.hpp>
 
 #include <Tpetra_Core.hpp>
 
@@ -24,9 +27,8 @@ inline Teuchos::Array<double> realArray(const std::vector<double>& values)
 }
 
 /// A deck with one sphere of the given mesh level at height `height` (centre y), wall on
-/// or off, the other keys at their defaults unless `tweak` changes them. Validated.
-template <typename Tweak>
-Teuchos::RCP<Teuchos::ParameterList> smallDeck(int level, double height, bool wall, Tweak&& tweak)
+/// or off, not validated yet.
+inline Teuchos::RCP<Teuchos::ParameterList> sphereDeck(int level, double height, bool wall)
 {
   auto deck = Teuchos::rcp(new Teuchos::ParameterList("test"));
   deck->sublist("Flow").set("Capillary number", 0.3);
@@ -36,12 +38,27 @@ Teuchos::RCP<Teuchos::ParameterList> smallDeck(int level, double height, bool wa
   cell.set("Mesh level", level);
   // The thesis practice (no adaptive near-singular integration) keeps the tests fast.
   deck->sublist("Discretisation").set("Near-singular distance", 0.0);
-  deck->sublist("Time integration").set("End time", 0.2);
-  deck->sublist("Time integration").set("Initial step", 0.02);
-  deck->sublist("Time integration").set("Tolerance", 1e-4);
-  deck->sublist("Output").set("Interval", 0.1);
+  return deck;
+}
+
+/// The keys of the physical model (what a Scene reads) for `deck`.
+inline Teuchos::RCP<const Teuchos::ParameterList> validModelParameters(const Teuchos::ParameterList& deck)
+{
+  auto valid = Teuchos::rcp(new Teuchos::ParameterList("test"));
+  declareSceneParameters(*valid, deck);
+  operators::declareOperatorParameters(*valid);
+  declareStiffSolverParameters(core::declareSublist(valid->sublist("Solver"), "Stiff", "The stiff solves."));
+  declareMeshEvolutionParameters(*valid);
+  return valid;
+}
+
+/// sphereDeck, the other keys at their defaults unless `tweak` changes them. Validated.
+template <typename Tweak>
+Teuchos::RCP<Teuchos::ParameterList> smallDeck(int level, double height, bool wall, Tweak&& tweak)
+{
+  auto deck = sphereDeck(level, height, wall);
   tweak(*deck);
-  core::validateDeck(*deck, *validSceneParameters(*deck, "test"), "test deck");
+  core::validateDeck(*deck, *validModelParameters(*deck), "test deck");
   return deck;
 }
 

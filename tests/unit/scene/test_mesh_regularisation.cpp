@@ -1,7 +1,6 @@
 // Mesh regularisation in a scene ('Mesh regularisation' sublist, Scene::regulariseMeshes):
 // off it changes nothing; on it redistributes a degraded cell along its own surface, keeps
-// its volume and its material points; runs with it restart bit for bit.
-#include "SceneRunFixture.hpp"
+// its volume and its material points (runs with it: run/test_mesh_events.cpp).
 #include "SceneTestDecks.hpp"
 
 #include <capsula/core/Error.hpp>
@@ -117,80 +116,4 @@ TEST(MeshRegularisation, RedistributesADegradedCellAlongItsSurface)
   for (const double v : u) {
     ASSERT_TRUE(std::isfinite(v));
   }
-}
-
-TEST(MeshRegularisation, TriggerMustBeAboveTheStopAngle)
-{
-  try {
-    scene::describeScene(*smallDeck(1, 0.0, false, [](Teuchos::ParameterList& d) {
-      enabled(4.0)(d);   // below the default stop at 5 degrees
-    }));
-    FAIL() << "accepted a trigger below the stop angle";
-  } catch (const core::InputError& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("Mesh regularisation/Minimum angle"), std::string::npos) << what;
-    EXPECT_NE(what.find("Output/Stability/Minimum angle"), std::string::npos) << what;
-  }
-}
-
-class MeshRegularisationRun : public scene::testing::SceneRunFixture {};
-
-// The redistributions of a run happen again, at the same steps, after a restart: the
-// checkpoint carries the reference shapes they left. Free shear at Ca = 0.9, level 1 with
-// a trigger of 53 degrees, so that the cell is redistributed before and after the split
-// (at t = 0.2, an output time: 2 x 0.1 is exact in binary).
-TEST_F(MeshRegularisationRun, RestartReproducesTheRunBitForBit)
-{
-  const auto tweak = [](double end) {
-    return [end](Teuchos::ParameterList& d) {
-      enabled(53.0)(d);
-      d.sublist("Flow").set("Capillary number", 0.9);
-      d.sublist("Time integration").set("End time", end);
-      d.sublist("Output").set("Snapshots", false);
-    };
-  };
-  run(*smallDeck(1, 0.0, false, tweak(0.6)), "whole");
-  const std::string summary = read("whole/summary.json");
-  const auto at = summary.find("\"mesh regularisations\": ");
-  ASSERT_NE(at, std::string::npos);
-  EXPECT_GE(std::stoi(summary.substr(at + 24)), 2);
-
-  run(*smallDeck(1, 0.0, false, tweak(0.2)), "split");
-  const std::string first = read("split/summary.json");
-  const auto early = first.find("\"mesh regularisations\": ");
-  ASSERT_NE(early, std::string::npos);
-  EXPECT_GE(std::stoi(first.substr(early + 24)), 1);   // some before the split
-  run(*smallDeck(1, 0.0, false, tweak(0.6)), "split", "split");
-  EXPECT_EQ(read("split/metrics.csv"), read("whole/metrics.csv"));
-}
-
-// Mesh adaption during a run: the cell is refined where it curves (its element count grows
-// and the snapshots get a new mesh version), and a restart from a checkpoint written after
-// a refinement continues on the refined mesh, bit for bit. Level 1 in free shear at
-// Ca = 0.9, threshold 0.17 (the level-1 sphere's elements start at Q = 0.157), checked
-// every 2 steps.
-TEST_F(MeshRegularisationRun, AdaptionRefinesDuringTheRunAndRestartsBitForBit)
-{
-  const auto tweak = [](double end) {
-    return [end](Teuchos::ParameterList& d) {
-      d.sublist("Mesh adaption").set("Enabled", true);
-      d.sublist("Mesh adaption").set("Threshold", 0.17);
-      d.sublist("Mesh adaption").set("Check interval", 2);
-      d.sublist("Flow").set("Capillary number", 0.9);
-      d.sublist("Time integration").set("End time", end);
-    };
-  };
-  run(*smallDeck(1, 0.0, false, tweak(0.4)), "whole");
-  const std::string summary = read("whole/summary.json");
-  const auto at = summary.find("\"mesh adaptions\": ");
-  ASSERT_NE(at, std::string::npos);
-  EXPECT_GE(std::stoi(summary.substr(at + 18)), 1);
-  EXPECT_EQ(summary.find("\"elements per cell\": [80]"), std::string::npos) << "not refined";
-
-  run(*smallDeck(1, 0.0, false, tweak(0.2)), "split");
-  const std::string first = read("split/summary.json");
-  EXPECT_EQ(first.find("\"elements per cell\": [80]"), std::string::npos) << "not refined before the split";
-  run(*smallDeck(1, 0.0, false, tweak(0.4)), "split", "split");
-  EXPECT_EQ(read("split/metrics.csv"), read("whole/metrics.csv"));
-  EXPECT_EQ(read("split/snapshots.xdmf"), read("whole/snapshots.xdmf"));
 }

@@ -7,8 +7,6 @@
 #include <capsula/scene/CellKinematics.hpp>
 #include <capsula/scene/Scene.hpp>
 #include <capsula/scene/SceneDescription.hpp>
-#include <capsula/scene/WallShearStressMap.hpp>
-#include <capsula/operators/WallShearStress.hpp>
 
 #include <Tpetra_Core.hpp>
 #include <gtest/gtest.h>
@@ -138,67 +136,6 @@ TEST(Scene, FixedHeightHoldsTheCentroidStill)
   EXPECT_GT(std::abs(freeRate[1]), 1e-4);       // there is something to remove
   EXPECT_NEAR(heldRate[1], 0.0, 1e-14);
   EXPECT_NEAR(heldRate[0], freeRate[0], 1e-14);
-}
-
-TEST(Scene, WallShearStressConvergesAtFourthOrderAndMatchesTheOperators)
-{
-  // A stretched prestressed cell at h/a = 1.6 disturbs the wall stress. The stencil is
-  // fourth order: halving the step h (0.04, 0.02, 0.01) divides the change by 16 in the
-  // limit; with the top stencil point at a quarter of the gap the next term still counts
-  // (measured 11.1), and a third-order stencil would give 8: > 10 required. Without the
-  // adaptive near-singular quadrature (distance 0) the operators' own stencil (which also
-  // evaluates u(0) = 0) must agree to the truncation error at h = 0.02, measured below
-  // 1e-5: 5e-5 allowed.
-  auto s = makeScene(*smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) {
-    d.sublist("Cells").sublist("Cell 0").set("Prestress", 0.05);
-  }));
-  std::vector<double> x = s.initialPositions();
-  for (std::size_t i = 0; i < x.size(); i += 3) {   // stretch it so it disturbs the flow
-    x[i] *= 1.2;
-  }
-  const auto fields = s.evaluate(0.0, x);
-  const auto grid = scene::WallGrid::around(0.0, 0.0, 2.0, 2.0, 1.0, 0.5);
-  const auto at = [&](double step) {
-    return scene::wallShearStressOnGrid(s.solver(), grid, step, capsula::operators::LoadDensity(fields.loadDensity.data()),
-                                        fields.solverVelocities.data(), s.flow());
-  };
-  const auto coarse = at(0.04), medium = at(0.02), fine = at(0.01);
-  double firstChange = 0.0, secondChange = 0.0;
-  for (std::size_t k = 0; k < fine.magnitude.size(); ++k) {
-    firstChange = std::max(firstChange, std::abs(coarse.dudy[k] - medium.dudy[k]));
-    secondChange = std::max(secondChange, std::abs(medium.dudy[k] - fine.dudy[k]));
-  }
-  EXPECT_GT(firstChange / secondChange, 10.0) << firstChange << " then " << secondChange;
-  std::vector<double> wallPoints;
-  for (const auto& p : grid.nodes()) {
-    wallPoints.insert(wallPoints.end(), {p[0], p[2]});
-  }
-  const auto theirs = capsula::operators::wallShearStress(s.solver(), wallPoints, 0.02, capsula::operators::LoadDensity(fields.loadDensity.data()),
-                                                          fields.solverVelocities.data(), s.flow());
-  double lowest = HUGE_VAL, highest = 0.0;
-  for (std::size_t k = 0; k < fine.magnitude.size(); ++k) {
-    EXPECT_NEAR(fine.dudy[k], theirs.dudy[k], 5e-5);
-    EXPECT_NEAR(fine.dwdy[k], theirs.dwdy[k], 5e-5);
-    lowest = std::min(lowest, fine.magnitude[k]);
-    highest = std::max(highest, fine.magnitude[k]);
-  }
-  // The cell does disturb the wall stress (ambient 1): not a vacuous comparison.
-  EXPECT_LT(lowest, 0.99);
-  EXPECT_GT(highest, 1.01);
-}
-
-TEST(Scene, WallShearStressOfTheUndisturbedFlowIsOne)
-{
-  // An unstressed cell carries no load: the flow is u = (y, 0, 0) and the stencil is exact
-  // for it (fourth order, linear field), so sigma = 1 to round-off.
-  auto s = makeScene(*smallDeck(1, 1.6, true));
-  const auto fields = s.evaluate(0.0, s.initialPositions());
-  const auto grid = scene::WallGrid::around(0.0, 0.0, 1.0, 1.0, 1.0, 0.5);
-  const auto stress = scene::wallShearStressOnGrid(s.solver(), grid, 0.03, capsula::operators::LoadDensity(fields.loadDensity.data()),
-                                                   fields.solverVelocities.data(), s.flow());
-  for (double sigma : stress.magnitude) {
-    EXPECT_NEAR(sigma, 1.0, 1e-10);
-  }
 }
 
 TEST(Scene, RejectsCellsThatCrossTheWallOrOverlap)

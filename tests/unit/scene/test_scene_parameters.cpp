@@ -48,7 +48,6 @@ TEST(SceneParameters, DeclaresOneSublistPerCellOfTheDeck)
   EXPECT_FALSE(description.anyFixedHeight());
   // Every default is filled in: the deck is a complete record.
   EXPECT_TRUE(deck->sublist("Cells").sublist("Cell 1").isParameter("Area dilation C"));
-  EXPECT_TRUE(deck->sublist("Time integration").isParameter("Method"));
   EXPECT_TRUE(deck->sublist("Discretisation").isParameter("Singular quadrature points"));
 }
 
@@ -96,20 +95,6 @@ TEST(SceneDescription, RejectsInconsistentScenes)
   EXPECT_NE(described([](Teuchos::ParameterList& d) { d.sublist("Cells").sublist("Cell 0").set("Fixed height", true); },
                       false)
               .find("'Cells/Cell 0/Fixed height' is true but 'Wall/Enabled' is false"),
-            std::string::npos);
-  EXPECT_NE(described([](Teuchos::ParameterList& d) {
-              d.sublist("Output").set("Flow probes", scene::testing::realArray({1.0, 2.0, 3.0, 4.0}));
-            }).find("'Output/Flow probes' has 4 numbers"),
-            std::string::npos);
-  EXPECT_NE(described([](Teuchos::ParameterList& d) {
-              d.sublist("Output").set("Flow probes", scene::testing::realArray({1.0, -2.0, 3.0}));
-            }).find("not in the fluid"),
-            std::string::npos);
-  EXPECT_NE(described([](Teuchos::ParameterList& d) {
-              d.sublist("Output").sublist("Wall shear stress").set("Enabled", true);
-            },
-                      false)
-              .find("there is no wall"),
             std::string::npos);
 }
 

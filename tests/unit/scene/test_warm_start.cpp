@@ -1,11 +1,8 @@
 // GMRES's warm start (Solver/Warm start, lambda != 1): the scene starts each right-hand
-// side's solve from its last solutions (operators::WarmStartHistory), outputs start cold,
-// and the checkpoint carries the history so that a restarted run repeats the uninterrupted
-// one bit for bit.
-#include "SceneRunFixture.hpp"
+// side's solve from its last solutions (operators::WarmStartHistory) and outputs start cold
+// (the checkpoint carries the history: run/test_mesh_events.cpp).
 #include "SceneTestDecks.hpp"
 
-#include <capsula/io/Checkpoint.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/scene/Scene.hpp>
 #include <capsula/scene/SceneDescription.hpp>
@@ -75,33 +72,6 @@ TEST(SceneWarmStart, VelocityKeepsItsSolutionsAndOutputsStartCold)
   std::vector<double> v;
   off.velocity(0.0, off.initialPositions(), v);
   EXPECT_EQ(off.gmresWarmStart(), nullptr);
-}
-
-class SceneWarmStartRun : public scene::testing::SceneRunFixture {};
-
-TEST_F(SceneWarmStartRun, RestartReproducesTheUninterruptedRunAtLambdaFive)
-{
-  const auto deck = lambdaFiveDeck(true);
-  run(*deck, "whole");
-  const auto half = smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) {
-    d.sublist("Flow").set("Viscosity ratio", 5.0);
-    d.sublist("Solver").set("Warm start", true);
-    d.sublist("Time integration").set("End time", 0.1);
-  });
-  run(*half, "split");
-  // The checkpoint holds the next solve's start: the last 6 pairs (a step has 6 stages).
-  const auto checkpoint = capsula::io::readCheckpoint((root_ / "split" / "checkpoint.h5").string());
-  const auto rhs = checkpoint.arrays.find("scene.gmresWarmStart.rhs");
-  const auto solutions = checkpoint.arrays.find("scene.gmresWarmStart.solutions");
-  ASSERT_NE(rhs, checkpoint.arrays.end());
-  ASSERT_NE(solutions, checkpoint.arrays.end());
-  EXPECT_EQ(rhs->second.size(), 6 * checkpoint.arrays.at("timeint.state").size());
-  EXPECT_EQ(solutions->second.size(), rhs->second.size());
-  const auto result = run(*deck, "split", "split");
-  EXPECT_EQ(result.status, "finished");
-  // Bit for bit: the tables are the same text (a cold first solve after the restart moves
-  // the positions by ~1e-10 and shows in the 17-digit columns).
-  EXPECT_EQ(read("split/metrics.csv"), read("whole/metrics.csv"));
 }
 
 } // namespace

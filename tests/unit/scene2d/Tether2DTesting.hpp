@@ -1,7 +1,7 @@
 #pragma once
-// A validated tether2d deck for tests: the defaults, small sizes, and overrides.
+// A validated deck of the 2D model for tests: the defaults, small sizes, and overrides.
 #include <capsula/core/Deck.hpp>
-#include <capsula/scene2d/Tether2DDeck.hpp>
+#include <capsula/scene2d/ModelParameters2D.hpp>
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -10,16 +10,23 @@
 
 namespace capsula::scene2d::testing {
 
-/// The defaults with `overrides` ("List/Key=value") applied, validated.
-inline Teuchos::ParameterList tether2dDeck(const std::vector<std::string>& overrides)
+/// `valid`'s defaults with `overrides` ("List/Key=value") applied, validated.
+inline Teuchos::ParameterList deckWith(const Teuchos::ParameterList& valid, const std::vector<std::string>& overrides)
 {
-  const auto valid = validTether2DParameters();
-  Teuchos::ParameterList deck("tether2d");
+  Teuchos::ParameterList deck(valid.name());
   for (const auto& assignment : overrides) {
-    core::applyOverride(deck, *valid, assignment);
+    core::applyOverride(deck, valid, assignment);
   }
-  core::validateDeck(deck, *valid, "test deck");
+  core::validateDeck(deck, valid, "test deck");
   return deck;
+}
+
+/// The model's keys (no Time integration, no Output) with `overrides` applied, validated.
+inline Teuchos::ParameterList modelDeck2D(const std::vector<std::string>& overrides)
+{
+  Teuchos::ParameterList valid("tether2d");
+  declareModelParameters2D(valid);
+  return deckWith(valid, overrides);
 }
 
 } // namespace capsula::scene2d::testing

@@ -16,7 +16,7 @@
 
 using namespace capsula;
 using namespace capsula::scene2d;
-using scene2d::testing::tether2dDeck;
+using scene2d::testing::modelDeck2D;
 
 namespace {
 
@@ -33,9 +33,9 @@ CapsuleModel2D modelOf(const Teuchos::ParameterList& deck)
 TEST(CapsuleModel2DPrestress, InitialContourIsTheDeckShapeUnderUniformTension)
 {
   const double alpha = 0.2;
-  const CapsuleModel2D plain = modelOf(tether2dDeck({"Cell/Number of points=64", "Cell/Aspect ratio=0.5"}));
+  const CapsuleModel2D plain = modelOf(modelDeck2D({"Cell/Number of points=64", "Cell/Aspect ratio=0.5"}));
   const CapsuleModel2D model =
-      modelOf(tether2dDeck({"Cell/Number of points=64", "Cell/Aspect ratio=0.5", "Cell/Prestress=0.2"}));
+      modelOf(modelDeck2D({"Cell/Number of points=64", "Cell/Aspect ratio=0.5", "Cell/Prestress=0.2"}));
   // The same initial state as without prestress (bit for bit: the state is the deck's ellipse).
   EXPECT_EQ(model.initialState(), plain.initialState());
   const contour::Contour initial = model.contour(model.initialState());
@@ -57,7 +57,7 @@ TEST(CapsuleModel2DPrestress, InitialContourIsTheDeckShapeUnderUniformTension)
 TEST(CapsuleModel2DPrestress, DeckRejectsANegativePrestressByName)
 {
   try {
-    tether2dDeck({"Cell/Prestress=-0.1"});
+    modelDeck2D({"Cell/Prestress=-0.1"});
     FAIL() << "a negative prestress was accepted";
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("Prestress"), std::string::npos) << e.what();

@@ -1,5 +1,5 @@
 #pragma once
-// Small ODEs with exact solutions, and the fitted order of convergence.
+// Small ODEs with exact solutions and the error between two states.
 #include "capsula/timeint/TimeIntegrator.hpp"
 
 #include <cmath>
@@ -68,22 +68,6 @@ inline double maxError(const std::vector<double>& a, const std::vector<double>& 
     e = std::max(e, std::abs(a[i] - b[i]));
   }
   return e;
-}
-
-/// Least-squares slope of log(error) against log(x).
-inline double fittedSlope(const std::vector<double>& x, const std::vector<double>& error)
-{
-  const double n = static_cast<double>(x.size());
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double lx = std::log(x[i]);
-    const double ly = std::log(error[i]);
-    sx += lx;
-    sy += ly;
-    sxx += lx * lx;
-    sxy += lx * ly;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
 } // namespace capsula::timeint::testing

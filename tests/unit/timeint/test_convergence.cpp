@@ -1,6 +1,6 @@
 // Fixed-step convergence orders and adaptive error control.
 #include "TestProblems.hpp"
-
+#include "capsula/testing/ConvergenceOrder.hpp"
 #include "capsula/timeint/TimeIntegrator.hpp"
 
 #include <gtest/gtest.h>
@@ -42,7 +42,7 @@ void expectFixedStepOrder(ti::Method method, int expectedOrder)
       h.push_back(endTime / steps);
       error.push_back(fixedStepError(method, problem, steps, endTime));
     }
-    const double order = ti::testing::fittedSlope(h, error);
+    const double order = capsula::testing::logLogSlope(h, error);
     std::printf("%-16s %-14s errors %.3e %.3e %.3e %.3e  order %.3f\n",
                 ti::toString(method).c_str(), problem.name.c_str(), error[0], error[1], error[2],
                 error[3], order);
@@ -95,7 +95,7 @@ void expectErrorFollowsTolerance(ti::Method method)
   }
   // Error ~ tol^p with p near 1 (a local error per step held near tol, and the step
   // count growing like tol^(-1/5)).
-  const double slope = ti::testing::fittedSlope(tolerances, errors);
+  const double slope = capsula::testing::logLogSlope(tolerances, errors);
   std::printf("  fitted slope d log(error) / d log(tol) = %.3f\n", slope);
   EXPECT_GT(slope, 0.6);
   EXPECT_LT(slope, 1.3);
@@ -134,7 +134,7 @@ TEST(Convergence, RKF45WithLocalExtrapolationConvergesAtOrder5)
     h.push_back(s.initialStep);
     error.push_back(ti::testing::maxError(state.y, problem.exact(s.endTime)));
   }
-  EXPECT_NEAR(ti::testing::fittedSlope(h, error), 5.0, 0.2);
+  EXPECT_NEAR(capsula::testing::logLogSlope(h, error), 5.0, 0.2);
 }
 
 TEST(AdaptiveControl, RKF45GlobalErrorFollowsTheTolerance)

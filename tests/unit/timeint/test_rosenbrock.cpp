@@ -3,6 +3,8 @@
 // and, as W-methods, with a wrong Jacobian; adaptive steps, failure handling and restart.
 #include "TestProblems.hpp"
 
+#include "capsula/testing/ConvergenceOrder.hpp"
+
 #include "capsula/core/Error.hpp"
 #include "capsula/timeint/DenseLinearisedSystem.hpp"
 #include "capsula/timeint/RosenbrockTableau.hpp"
@@ -15,7 +17,7 @@
 #include <vector>
 
 namespace ti = capsula::timeint;
-using ti::testing::fittedSlope;
+using capsula::testing::logLogSlope;
 using ti::testing::maxError;
 
 namespace {
@@ -176,7 +178,7 @@ TEST(Rosenbrock, ObservedOrderOnAStiffLinearSystem)
       steps.push_back(h);
       errors.push_back(maxError(integrateTo(integrator, y0, 2.0), stiffLinearExact(2.0)));
     }
-    EXPECT_NEAR(fittedSlope(steps, errors), design, 0.2) << ti::toString(method);
+    EXPECT_NEAR(logLogSlope(steps, errors), design, 0.2) << ti::toString(method);
   }
 }
 
@@ -204,7 +206,7 @@ TEST(Rosenbrock, KeepsItsOrderWithAnApproximateJacobian)
       steps.push_back(1.0 / n);
       errors.push_back(maxError(integrateTo(integrator, {1.0, 0.3}, 1.0), reference));
     }
-    EXPECT_NEAR(fittedSlope(steps, errors), 3.0, 0.2) << "Jacobian " << k;
+    EXPECT_NEAR(logLogSlope(steps, errors), 3.0, 0.2) << "Jacobian " << k;
   }
 }
 

@@ -52,6 +52,12 @@ public:
                              double startSlope, double endSlope);
   /// Not-a-knot spline: exact for cubics without any end data. Needs n >= 3 pieces.
   static CubicSpline notAKnot(std::vector<double> knots, const std::vector<double>& values);
+  /// The interpolant of samples in time (thesis Section 3.11.2: the centroid velocity as
+  /// the derivative of a spline through the centroid history): the not-a-knot spline from
+  /// 3 pieces on, whose slope at the newest sample is O(h^3) accurate; below that what it
+  /// degenerates to, the interpolating line (1 piece) or parabola (2 pieces). Needs n >= 1
+  /// piece and finite values.
+  static CubicSpline interpolating(std::vector<double> knots, const std::vector<double>& values);
 
   SplineEnds ends() const { return ends_; }
   int numberOfPieces() const { return static_cast<int>(pieces_.size()); }

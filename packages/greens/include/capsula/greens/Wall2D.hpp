@@ -14,7 +14,8 @@
 // its pressure is P^SD_j = 2 s_j (delta_j2 / R^2 - 2 X_j X_2 / R^4), which T^SD above
 // includes (derived symbolically; pinned by the tests: T = -P delta + grad G + grad G^T,
 // momentum balance, traction identities). "2" is the normal axis (index 1 here).
-// Normalisation and index roles as in FreeSpace2D.hpp.
+// Normalisation and index roles as in FreeSpace2D.hpp; the image terms are shared with
+// Wall3D.hpp (PlaneWall.hpp).
 #include <capsula/greens/FreeSpace2D.hpp>
 #include <capsula/greens/PlaneWall.hpp>
 
@@ -25,76 +26,40 @@ namespace capsula::greens {
 /// G^W_ij(x, x0) above the wall y = 0; needs x0[1] > 0, x[1] >= 0, x != x0.
 inline void stokesletWall2D(const double x[2], const double x0[2], double G[2][2])
 {
-  const double h = x0[wallNormalAxis];
-  const double xh[2] = {x[0] - x0[0], x[1] - x0[1]};
-  const double X[2] = {x[0] - x0[0], x[1] + x0[1]};
-  const double Xn = X[wallNormalAxis];
+  double xh[2], X[2];
+  poleAndImageSeparations<2>(x, x0, xh, X);
   const double R2 = X[0] * X[0] + X[1] * X[1];
   const double invR2 = 1.0 / R2;
   const double invR4 = invR2 * invR2;
   const double minusLogR = -0.5 * std::log(R2);
 
   stokesletFreeSpace2D(xh, G);
-  for (int i = 0; i < 2; ++i) {
-    for (int j = 0; j < 2; ++j) {
-      const double s = imageSign(j);
-      const double dij = (i == j) ? 1.0 : 0.0;
-      const double imageStokeslet = dij * minusLogR + X[i] * X[j] * invR2;
-      const double dipole = s * (dij * invR2 - 2.0 * X[i] * X[j] * invR4);
-      const double doublet = Xn * dipole
-                             + s * ((j == wallNormalAxis ? X[i] : 0.0)
-                                    - (i == wallNormalAxis ? X[j] : 0.0)) * invR2;
-      G[i][j] += -imageStokeslet + 2.0 * h * h * dipole - 2.0 * h * doublet;
-    }
-  }
+  addStokesletImages<2>(X, x0[wallNormalAxis], minusLogR, invR2, invR4, G);
 }
 
 /// T^W_ijk(x, x0) above the wall y = 0 (stress sigma_ik at x, force along j at x0).
 inline void stressletWall2D(const double x[2], const double x0[2], double T[2][2][2])
 {
-  const double h = x0[wallNormalAxis];
-  const double xh[2] = {x[0] - x0[0], x[1] - x0[1]};
-  const double X[2] = {x[0] - x0[0], x[1] + x0[1]};
-  const double Xn = X[wallNormalAxis];
+  double xh[2], X[2];
+  poleAndImageSeparations<2>(x, x0, xh, X);
   const double R2 = X[0] * X[0] + X[1] * X[1];
   const double invR4 = 1.0 / (R2 * R2);
   const double invR6 = invR4 / R2;
 
   stressletFreeSpace2D(xh, T);
-  for (int i = 0; i < 2; ++i) {
-    for (int j = 0; j < 2; ++j) {
-      const double s = imageSign(j);
-      for (int k = 0; k < 2; ++k) {
-        const double Xijk = X[i] * X[j] * X[k];
-        const double deltaTerms = (i == k ? X[j] : 0.0) + (i == j ? X[k] : 0.0)
-                                  + (k == j ? X[i] : 0.0);
-        const double imageStresslet = -4.0 * Xijk * invR4;
-        const double dipole = 4.0 * s * (-deltaTerms * invR4 + 4.0 * Xijk * invR6);
-        const double doublet = Xn * dipole
-                               + 4.0 * s * ((i == k ? X[j] * Xn : 0.0)
-                                            - (j == wallNormalAxis ? X[i] * X[k] : 0.0)) * invR4;
-        T[i][j][k] += -imageStresslet + 2.0 * h * h * dipole - 2.0 * h * doublet;
-      }
-    }
-  }
+  addStressletImages<2>(X, x0[wallNormalAxis], invR4, invR6, T);
 }
 
 /// P^W_j(x, x0) = P^FS_j(xh) - P^FS_j(X) - 2 h P^SD_j(X) (the potential dipole has none).
 inline void pressureWall2D(const double x[2], const double x0[2], double P[2])
 {
-  const double h = x0[wallNormalAxis];
-  const double xh[2] = {x[0] - x0[0], x[1] - x0[1]};
-  const double X[2] = {x[0] - x0[0], x[1] + x0[1]};
-  const double Xn = X[wallNormalAxis];
+  double xh[2], X[2];
+  poleAndImageSeparations<2>(x, x0, xh, X);
   const double invR2 = 1.0 / (X[0] * X[0] + X[1] * X[1]);
   const double invR4 = invR2 * invR2;
 
   pressureFreeSpace2D(xh, P);
-  for (int j = 0; j < 2; ++j) {
-    const double doublet = 2.0 * imageSign(j)
-                           * ((j == wallNormalAxis ? invR2 : 0.0) - 2.0 * X[j] * Xn * invR4);
-    P[j] += -2.0 * X[j] * invR2 - 2.0 * h * doublet;
-  }
+  addPressureImages<2>(X, x0[wallNormalAxis], invR2, invR4, P);
 }
 
 /// Kernel policy for operators templated on the Green's function.

@@ -16,7 +16,8 @@
 // includes the doublet's pressure P^SD_j = 2 s_j (delta_j2 / R^3 - 3 X_j X_2 / R^5). Both
 // were derived symbolically and are pinned by the tests (T = -P delta + grad G + grad G^T,
 // momentum balance, traction identities). "2" above is the normal axis (index 1 here).
-// Normalisation and index roles as in FreeSpace3D.hpp. The wall pole correction at x = x0,
+// Normalisation and index roles as in FreeSpace3D.hpp; the image terms are shared with
+// Wall2D.hpp (PlaneWall.hpp). The wall pole correction at x = x0,
 // G^W - G^FS = -3/(4h) tangential, -3/(2h) normal, is the classical 9/16 and 9/8 a/h law.
 #include <capsula/greens/FreeSpace3D.hpp>
 #include <capsula/greens/PlaneWall.hpp>
@@ -28,77 +29,41 @@ namespace capsula::greens {
 /// G^W_ij(x, x0) above the wall y = 0; needs x0[1] > 0, x[1] >= 0, x != x0.
 inline void stokesletWall3D(const double x[3], const double x0[3], double G[3][3])
 {
-  const double h = x0[wallNormalAxis];
-  const double xh[3] = {x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]};
-  const double X[3] = {x[0] - x0[0], x[1] + x0[1], x[2] - x0[2]};
-  const double Xn = X[wallNormalAxis];
+  double xh[3], X[3];
+  poleAndImageSeparations<3>(x, x0, xh, X);
   const double R2 = X[0] * X[0] + X[1] * X[1] + X[2] * X[2];
   const double invR = 1.0 / std::sqrt(R2);
   const double invR3 = invR / R2;
   const double invR5 = invR3 / R2;
 
   stokesletFreeSpace3D(xh, G);
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      const double s = imageSign(j);
-      const double dij = (i == j) ? 1.0 : 0.0;
-      const double imageStokeslet = dij * invR + X[i] * X[j] * invR3;
-      const double dipole = s * (dij * invR3 - 3.0 * X[i] * X[j] * invR5);
-      const double doublet = Xn * dipole
-                             + s * ((j == wallNormalAxis ? X[i] : 0.0)
-                                    - (i == wallNormalAxis ? X[j] : 0.0)) * invR3;
-      G[i][j] += -imageStokeslet + 2.0 * h * h * dipole - 2.0 * h * doublet;
-    }
-  }
+  addStokesletImages<3>(X, x0[wallNormalAxis], invR, invR3, invR5, G);
 }
 
 /// T^W_ijk(x, x0) above the wall y = 0 (stress sigma_ik at x, force along j at x0).
 inline void stressletWall3D(const double x[3], const double x0[3], double T[3][3][3])
 {
-  const double h = x0[wallNormalAxis];
-  const double xh[3] = {x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]};
-  const double X[3] = {x[0] - x0[0], x[1] + x0[1], x[2] - x0[2]};
-  const double Xn = X[wallNormalAxis];
+  double xh[3], X[3];
+  poleAndImageSeparations<3>(x, x0, xh, X);
   const double R2 = X[0] * X[0] + X[1] * X[1] + X[2] * X[2];
   const double invR5 = 1.0 / (R2 * R2 * std::sqrt(R2));
   const double invR7 = invR5 / R2;
 
   stressletFreeSpace3D(xh, T);
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      const double s = imageSign(j);
-      for (int k = 0; k < 3; ++k) {
-        const double Xijk = X[i] * X[j] * X[k];
-        const double deltaTerms = (i == k ? X[j] : 0.0) + (i == j ? X[k] : 0.0)
-                                  + (k == j ? X[i] : 0.0);
-        const double imageStresslet = -6.0 * Xijk * invR5;
-        const double dipole = 6.0 * s * (-deltaTerms * invR5 + 5.0 * Xijk * invR7);
-        const double doublet = Xn * dipole
-                               + 6.0 * s * ((i == k ? X[j] * Xn : 0.0)
-                                            - (j == wallNormalAxis ? X[i] * X[k] : 0.0)) * invR5;
-        T[i][j][k] += -imageStresslet + 2.0 * h * h * dipole - 2.0 * h * doublet;
-      }
-    }
-  }
+  addStressletImages<3>(X, x0[wallNormalAxis], invR5, invR7, T);
 }
 
 /// P^W_j(x, x0) = P^FS_j(xh) - P^FS_j(X) - 2 h P^SD_j(X) (the potential dipole has none).
 inline void pressureWall3D(const double x[3], const double x0[3], double P[3])
 {
-  const double h = x0[wallNormalAxis];
-  const double xh[3] = {x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]};
-  const double X[3] = {x[0] - x0[0], x[1] + x0[1], x[2] - x0[2]};
-  const double Xn = X[wallNormalAxis];
+  double xh[3], X[3];
+  poleAndImageSeparations<3>(x, x0, xh, X);
   const double R2 = X[0] * X[0] + X[1] * X[1] + X[2] * X[2];
   const double invR3 = 1.0 / (R2 * std::sqrt(R2));
   const double invR5 = invR3 / R2;
 
   pressureFreeSpace3D(xh, P);
-  for (int j = 0; j < 3; ++j) {
-    const double doublet = 2.0 * imageSign(j)
-                           * ((j == wallNormalAxis ? invR3 : 0.0) - 3.0 * X[j] * Xn * invR5);
-    P[j] += -2.0 * X[j] * invR3 - 2.0 * h * doublet;
-  }
+  addPressureImages<3>(X, x0[wallNormalAxis], invR3, invR5, P);
 }
 
 /// Kernel policy for operators templated on the Green's function.

@@ -5,17 +5,17 @@
 //             + (1-lambda)/(2 pi (1+lambda)) DL_j[u](x0)
 // with SL and DL as in LayerPotentials2D (DL subtracted: -2 pi u(x0) at a smooth point),
 // Delta f = (sigma_ext - sigma_int) . n, n outward. lambda = 1: explicit; otherwise Belos
-// GMRES on SecondKindOperator2D (App. A.7 used LAPACK's dense LU on one CPU).
+// GMRES on SecondKindOperator (App. A.7 used LAPACK's dense LU on one CPU).
 // Nodes listed as fixed (the tether) get u = 0: their rows become u = 0, so the double
 // layer sees the constrained velocity.
 //
 // Distribution: every rank holds the whole contour and evaluates the rows of its own
-// nodes (NodeDistribution2D); the velocities are gathered to every rank. They do not
+// nodes (NodeDistribution, 2 unknowns per node); the velocities are gathered to every rank. They do not
 // depend on the number of ranks beyond round-off (bit for bit when lambda = 1: every row
 // is summed in the same order whoever owns it).
 #include <capsula/operators/ContourDiscretisation2D.hpp>
 #include <capsula/operators/DoubleLayerForm.hpp>
-#include <capsula/operators/NodeDistribution2D.hpp>
+#include <capsula/operators/NodeDistribution.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/operators/WarmStartHistory.hpp>
 
@@ -68,7 +68,7 @@ public:
 
   /// The Green's function's name ("free-space 2D", "plane wall 2D").
   virtual std::string kernelName() const = 0;
-  virtual const NodeDistribution2D& distribution() const = 0;
+  virtual const NodeDistribution& distribution() const = 0;
 
   /// Node velocities of `contour` under `load` (collective). Throws core::InputError if a
   /// node lies below the wall, core::NumericalError if GMRES does not converge. With a

@@ -1,4 +1,8 @@
 #pragma once
+// (Length: one class template per Green's function, instantiated in BuiltInKernels.cpp; the
+// regular sums, the singular and near-singular corrections and the geometry they share are
+// members that the hot loops inline across, so they stay in one header.)
+//
 // The single- and double-layer integrals of eq 3.38 for one Green's function (a kernel
 // policy, KernelTraits.hpp), on the nodes this rank owns and at arbitrary points.
 //

@@ -1,4 +1,8 @@
 #pragma once
+// (Length: one class template per Green's function, instantiated in InterfaceVelocity2D.cpp;
+// its geometry cache, pair classification and the layer sums share the members that the
+// hot loops inline across, so they stay in one header.)
+//
 // The single- and double-layer integrals of the 2D boundary-integral equation (thesis
 // eq A.35) over a cubic-spline contour, for one Green's function policy (greens::FreeSpace2D,
 // greens::Wall2D), at the nodes this rank owns and at arbitrary points.

@@ -1,11 +1,16 @@
 #pragma once
-// The left-hand side of the boundary-integral equation when some viscosity ratio is not
-// 1 (thesis eq 3.15, Section 3.8), applied matrix-free for Belos:
+// The left-hand side of the boundary-integral equation when a viscosity ratio is not 1,
+// applied matrix-free for Belos, in 2D (thesis eq A.35, App. A.7) and 3D (eq 3.15,
+// Section 3.8) alike:
 //   (A u)(x_t) = u(x_t) - rowScale_t * DL[densityScale . u](x_t),
 // DL the double layer with singularity subtraction at the owned nodes, densityScale the
-// factor (1 - lambda_d) of the cell each node belongs to, rowScale_t = 1 / (4 pi (1 + lambda_c))
-// for the cell of target t. apply() gathers the distributed u into a locally replicated
-// copy (every row integrates over every node) with an Import built once.
+// factor of the node each density value belongs to, rowScale the factor of the row's node:
+//   3D  densityScale = 1 - lambda_d of the node's cell, rowScale = 1 / (4 pi (1 + lambda_c)),
+//   2D  no densityScale (1), rowScale = (1 - lambda) / (2 pi (1 + lambda)), and 0 at a node
+//       whose velocity is prescribed (the tether: (A u)(x_t) = u(x_t), right-hand side 0).
+// A row scale of exactly 0 leaves the row the identity. apply() gathers the distributed u
+// into a locally replicated copy (every row integrates over every node) with an Import
+// built once. `unknownsPerNode` (2 or 3) is the stride of the map: GID d g + i.
 #include <Teuchos_RCP.hpp>
 #include <Teuchos_Time.hpp>
 #include <Tpetra_Import.hpp>
@@ -22,14 +27,15 @@ class SecondKindOperator final : public Tpetra::Operator<double> {
 public:
   using Map = Tpetra::Map<>;
   using MultiVector = Tpetra::MultiVector<double>;
-  /// Writes the double layer of `density` (3 per node, all nodes) at the owned nodes
-  /// (3 per owned node, in map order).
+  /// Writes the double layer of `density` (unknownsPerNode per node, all nodes) at the
+  /// owned nodes (unknownsPerNode per owned node, in map order).
   using DoubleLayerRows = std::function<void(const double* density, double* ownedRows)>;
 
-  /// `map` holds 3 unknowns per node (GID 3 g + i). densityScale: one factor per node of
-  /// the whole scene; rowScale: one factor per owned node.
+  /// `map` holds `unknownsPerNode` unknowns per node, whole nodes per rank. densityScale:
+  /// one factor per node of the whole problem, or empty for none; rowScale: one factor per
+  /// owned node.
   SecondKindOperator(Teuchos::RCP<const Map> map, DoubleLayerRows doubleLayer,
-                     std::vector<double> densityScale, std::vector<double> rowScale);
+                     std::vector<double> densityScale, std::vector<double> rowScale, int unknownsPerNode = 3);
 
   Teuchos::RCP<const Map> getDomainMap() const override { return map_; }
   Teuchos::RCP<const Map> getRangeMap() const override { return map_; }
@@ -50,6 +56,7 @@ private:
   DoubleLayerRows doubleLayer_;
   std::vector<double> densityScale_;
   std::vector<double> rowScale_;
+  std::size_t unknownsPerNode_;
   mutable std::vector<double> density_, rows_;
   mutable int applications_ = 0;
   Teuchos::RCP<Teuchos::Time> timer_; // "Double-layer application": its count is the GMRES work

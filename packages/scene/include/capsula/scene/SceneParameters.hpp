@@ -1,6 +1,5 @@
 #pragma once
-// The deck of a scene: the flow, the wall, N cells, time integration, discretisation
-// and outputs.
+// The deck keys of a scene's physical model:
 //
 //   Flow/             Capillary number (Ca = mu k a / G), Viscosity ratio (lambda)
 //   Wall/             Enabled
@@ -9,10 +8,11 @@
 //                     Prestress, Fixed height
 //   Cells/Cell 1/     ... one sublist per cell, numbered from 0
 //   Cells/            Minimum gap (between cell surfaces: touching at the start, stop of a run)
-//   Time integration/ (capsula::timeint)
-//   Discretisation/, Solver/   (capsula::operators)
-//   Output/           Directory, Interval, Snapshots, Checkpoint, Progress steps,
-//                     Flow probes, Wall shear stress/ (Enabled, extents, Spacing, Threshold)
+//   Mesh regularisation/, Mesh adaption/   (capsula::mesh)
+//
+// The run adds Time integration (capsula::timeint), Discretisation and Solver
+// (capsula::operators) and Output (run/SceneOutputSettings.hpp); run/SceneRunDeck.hpp
+// assembles the whole deck of cell3d and twocell3d.
 //
 // The valid list depends on the deck: it declares one "Cell k" sublist for every
 // "Cell k" the deck has (Cell 0 if none), so a deck with any number of cells validates,
@@ -28,16 +28,15 @@ namespace capsula::scene {
 void declareCellParameters(Teuchos::ParameterList& cell);
 
 /// Declares 'Minimum gap' in the "Cells" sublist (read by describeScene; used by the
-/// Scene at the start and by runScene after every step).
+/// Scene at the start and by the run after every step).
 void declareMinimumGap(Teuchos::ParameterList& cells);
 
-/// Declares the "Output" sublist.
-void declareOutputParameters(Teuchos::ParameterList& output);
+/// Declares the sublists Flow, Wall and Cells (with a "Cell k" sublist for every one
+/// `deck` has) in `valid`.
+void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck);
 
-/// The complete valid parameter list for `deck` (a core::ValidParameterBuilder), named
-/// `appName`.
-Teuchos::RCP<const Teuchos::ParameterList> validSceneParameters(const Teuchos::ParameterList& deck,
-                                                                const std::string& appName);
+/// Declares the sublists Mesh regularisation and Mesh adaption in `valid`.
+void declareMeshEvolutionParameters(Teuchos::ParameterList& valid);
 
 /// "Cell 0", "Cell 1", ...
 std::string cellSublistName(int index);

@@ -7,12 +7,18 @@
 // from the last solutions (operators/WarmStartHistory.hpp); the history is part of the run's
 // state (gmresWarmStart(), restored from checkpoints) and is dropped at tethering, when the
 // nodes are relabelled.
+//
+// Its checkpoint section holds the warm start ("run gmres warm start rhs", "... solutions")
+// and the prestress the membrane's reference was built with ("run cell prestress"): the
+// reference is rebuilt from the deck on restart, so a deck with another prestress is
+// refused. The regridded markers and the tether are the tether procedure's to save.
 #include "capsula/scene2d/CellContour2D.hpp"
 #include "capsula/scene2d/FlowModel2D.hpp"
 
 #include <capsula/contour/Contour.hpp>
 #include <capsula/elasticity/ElasticMembrane2D.hpp>
 #include <capsula/elasticity/MembraneState2D.hpp>
+#include <capsula/io/CheckpointSection.hpp>
 #include <capsula/operators/ContourDiscretisation2D.hpp>
 #include <capsula/operators/InterfaceVelocity2D.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
@@ -28,7 +34,7 @@
 
 namespace capsula::scene2d {
 
-class CapsuleModel2D {
+class CapsuleModel2D final : public io::CheckpointSection {
 public:
   CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const CellSettings2D& cell,
                  const FlowSettings2D& flow, const operators::ContourDiscretisation2D& discretisation,
@@ -39,6 +45,8 @@ public:
   const FlowSettings2D& flow() const { return flow_; }
   const operators::ContourDiscretisation2D& discretisation() const { return discretisation_; }
   std::string kernelName() const { return velocity_->kernelName(); }
+  /// The terms built, one line each (the run log and summary.json print them).
+  std::vector<std::string> terms() const;
 
   /// The initial contour in the free (preparation) labelling (unstressed unless
   /// Cell/Prestress > 0).
@@ -89,6 +97,11 @@ public:
   /// rightHandSides() and solutions()).
   const operators::WarmStartHistory* gmresWarmStart() const { return warmStart_ ? &*warmStart_ : nullptr; }
   void restoreGmresWarmStart(const std::vector<double>& rightHandSides, const std::vector<double>& solutions);
+
+  void save(io::Checkpoint& checkpoint) const override;
+  /// Throws core::InputError if the checkpoint was written with another Cell/Prestress.
+  /// Loads after the tether (tethering drops the warm start).
+  void load(const io::Checkpoint& checkpoint, const std::string& source) override;
 
 private:
   CellSettings2D cell_;

@@ -45,7 +45,9 @@
 #include "capsula/timeint/StepControllers.hpp"
 
 #include <functional>
+#include <initializer_list>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -123,10 +125,21 @@ using Observer = std::function<void(const IntegrationState& state, OutputReason 
 
 /// Output k (k = 1, 2, ...) is due at state.outputOrigin + k * interval, and the last at
 /// the end time; interval 0 means the end time only. Start: output 0, at the first call
-/// on a fresh state.
+/// on a fresh state. A run whose outputs fall elsewhere (a stage timed from its own origin
+/// in a scaled time) gives their times instead: `times(k)` for k >= 1, increasing, the
+/// last one at `endTime`, where the integration then ends instead of at the settings' end
+/// time.
 struct OutputSchedule {
+  OutputSchedule() = default;
+  OutputSchedule(double outputInterval, bool observeTheStart = true)
+    : interval(outputInterval), observeStart(observeTheStart)
+  {
+  }
+
   double interval = 0.0;
   bool observeStart = true;
+  std::function<double(std::int64_t index)> times;   ///< empty: origin + k * interval
+  std::optional<double> endTime;                      ///< empty: TimeIntegrationSettings::endTime
 };
 
 /// What one accepted step did.
@@ -145,7 +158,30 @@ struct StepReport {
   std::string switchReason;
 };
 
-enum class StopReason { EndTime, SteadyState };
+/// Requested: an IntegrationObserver ended the integration (after a step or an output).
+enum class StopReason { EndTime, SteadyState, Requested };
+
+/// What an IntegrationObserver tells integrate(): go on, or end the integration here.
+enum class ObserverVerdict { Continue, Stop };
+
+/// A part of a run that integrate() keeps informed: the outputs, and whatever a run does
+/// between them (a mesh regularisation after a step, a stop when two cells meet, progress
+/// lines, the events of a tether procedure). Every member has a default that does nothing.
+class IntegrationObserver {
+public:
+  virtual ~IntegrationObserver() = default;
+  /// A time after state.time that the next step must land on besides the output times (an
+  /// event of the run, e.g. a check of a criterion), or +infinity for none.
+  virtual double nextEvent(const IntegrationState& state);
+  /// After every accepted step, before the output due at its time (`atOutputTime`). May
+  /// change the state (call stateChangedOutside after changing y). Stop ends the
+  /// integration at once: the observers after this one are not called, and no output
+  /// follows.
+  virtual ObserverVerdict afterStep(IntegrationState& state, const StepReport& report, bool atOutputTime);
+  /// At output times. Every observer sees the output; if one says Stop, the integration
+  /// ends after it.
+  virtual ObserverVerdict atOutput(const IntegrationState& state, OutputReason reason);
+};
 
 class TimeIntegrator {
 public:
@@ -180,15 +216,22 @@ public:
   /// only through a rejection).
   StepReport step(IntegrationState& state, double tStop);
 
-  /// Steps from state.time to settings().endTime, landing exactly on every output time
-  /// and calling the observers there (never inside a step). Stops early, after one more
-  /// observation, when steady state is detected. Continuing from a copy of the state
-  /// that an observer received reproduces the uninterrupted run bit for bit.
+  /// The time loop of every run: steps from state.time to the end time (settings() or
+  /// the schedule's), landing exactly on every output time and every observer's next
+  /// event, and calling the observers after each step and at each output (never inside a
+  /// step). Stops early, after one more observation, when steady state is detected, and
+  /// when an observer says so. Continuing from a copy of the state that an observer
+  /// received at an output reproduces the uninterrupted run bit for bit.
+  StopReason integrate(IntegrationState& state, const OutputSchedule& schedule,
+                       std::initializer_list<IntegrationObserver*> observers);
+  /// The same with observers that only watch the outputs.
   StopReason integrate(IntegrationState& state, const OutputSchedule& schedule,
                        const std::vector<Observer>& observers);
 
   /// The time of output `index` under `schedule` for a run started at `origin`.
   double outputTime(double origin, std::int64_t index, const OutputSchedule& schedule) const;
+  /// Where integrate() ends under `schedule`.
+  double endTime(const OutputSchedule& schedule) const;
 
 private:
   void evaluate(double t, const std::vector<double>& y, std::vector<double>& dydt,
@@ -198,6 +241,8 @@ private:
   // attempt of that size, which on failure leaves the state as it was and reports a step
   // size of 0.
   StepReport attemptLinearlyImplicit(IntegrationState& state, double tStop, double trialStep = 0.0);
+  StopReason integrateWith(IntegrationState& state, const OutputSchedule& schedule,
+                           const std::vector<IntegrationObserver*>& observers);
   void estimateStabilityStep(IntegrationState& state);
   bool usesStiffMethod(const IntegrationState& state) const;
   // MethodSwitch.cpp: Auto's decisions, before and after a step.

@@ -1,0 +1,32 @@
+#pragma once
+// The layout of metrics.csv (SceneRun.hpp): which columns, in which order, and one row of
+// them from the samples of an output. One cell: the cell's metrics with a "cell" column
+// after the first 13 (the layout predates the others), gmres_iterations, the wall stress
+// columns, the stability diagnostics last. Several cells: a column "NAME_c" per metric and
+// cell, the pair columns, the wall stress, the stability diagnostics per cell and each
+// pair's gap per element size. Columns are only ever appended, so readers of the leading
+// ones keep working.
+#include "capsula/run/OutputMetrics.hpp"
+#include "capsula/run/PairMetrics.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace capsula::run {
+
+/// The metrics.csv columns of one cell; the wall-shear-stress ones only when that output is
+/// on; the stability diagnostics last.
+std::vector<std::string> metricsColumns(bool wallShearStress);
+/// The metrics.csv columns of `numCells` cells (the one-cell layout for numCells = 1); with
+/// `isolatedRange` (and the wall stress) also wall_area_below_isolated,
+/// wall_area_above_isolated ('Output/Wall shear stress/Isolated range').
+std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange = false);
+
+/// One row in the order of metricsColumns: time, accepted steps, last step size, the cells'
+/// samples, their pairs, and `wallValues` (the wall stress columns in force, possibly none).
+std::vector<double> metricsRow(double time, std::int64_t acceptedSteps, double lastStep,
+                               const std::vector<CellSample>& samples, const std::vector<PairSample>& pairs,
+                               const std::vector<double>& wallValues);
+
+} // namespace capsula::run

@@ -1,0 +1,72 @@
+#pragma once
+// The metrics of every cell at every output time (thesis Sections 3.11, 5.2-5.4), with
+// the memory they need across outputs: the centroid history for the spline velocity
+// (Section 3.11.2) and the values at t = 0 for the drifts and the stress increase
+// (eq 3.58). The memory goes into checkpoints, so a restarted run writes the same rows.
+#include <capsula/io/Checkpoint.hpp>
+#include <capsula/scene/CellMetrics.hpp>
+#include <capsula/scene/CellStability.hpp>
+#include <capsula/scene/Scene.hpp>
+
+#include <string>
+#include <vector>
+
+namespace capsula::run {
+
+/// One cell at one output time.
+struct CellSample {
+  scene::CellShape shape;
+  scene::MembraneStress stress;
+  mesh::Vec3 splineVelocity = mesh::Vec3::Zero();   ///< dx_c/dt from the cubic spline in time
+  mesh::Vec3 instantVelocity = mesh::Vec3::Zero();  ///< dx_c/dt from the surface velocity
+  /// dx_c/dt from the boundary-integral velocity before any constraint: for a cell held at
+  /// a fixed height, its y-component is the migration velocity the constraint removes
+  /// (thesis Fig 5.14); for a free cell it equals instantVelocity.
+  mesh::Vec3 unconstrainedVelocity = mesh::Vec3::Zero();
+  mesh::Vec3 rotation = mesh::Vec3::Zero();         ///< rigid-body fit Omega
+  double shapeChangeRate = 0.0;  ///< RMS over nodes of (u_i - dx_c/dt) . n_i
+  double volumeChange = 0.0;     ///< V / V(0) - 1
+  double areaChange = 0.0;       ///< S / S(0) - 1
+  double meanStressIncrease = 0.0;      ///< mean sigma_SS - its value at t = 0 (eq 3.58)
+  double maximumStressIncrease = 0.0;
+  int gmresIterations = 0;
+  scene::CellStability stability;       ///< mesh quality, compression, wall gap (CellStability.hpp)
+
+  /// u_slip = k y_c - dx_c/dt (eq 3.55, k = 1), and u_migr = dy_c/dt, from the spline.
+  double slipVelocity() const { return shape.centroid[1] - splineVelocity[0]; }
+  double migrationVelocity() const { return splineVelocity[1]; }
+};
+
+class OutputMetrics {
+public:
+  explicit OutputMetrics(int numCells);
+
+  /// Measures every cell of `scene` (positioned at `fields` by Scene::evaluate) at time
+  /// t, appends the centroids to the history and returns the samples. The first call
+  /// fixes the t = 0 references.
+  std::vector<CellSample> record(double t, const scene::Scene& scene, const scene::SceneFields& fields);
+
+  int numOutputs() const { return static_cast<int>(times_.size()); }
+
+  /// Adds the history and references to a checkpoint (names prefixed "metrics.").
+  void save(io::Checkpoint& checkpoint) const;
+  /// Restores them; throws core::IoError naming the missing entry.
+  void load(const io::Checkpoint& checkpoint, const std::string& source);
+
+private:
+  int numCells_;
+  std::vector<double> times_;
+  std::vector<std::vector<double>> centroids_;   // per cell: x, y, z per output
+  std::vector<double> initialVolume_, initialArea_, initialMeanStress_, initialMaximumStress_;
+};
+
+/// The root-mean-square over the nodes of (u_i - v) . n_i: how fast the shape of a cell
+/// changes, in the frame moving with its centroid velocity v. Tangential (tank-treading)
+/// motion of the membrane does not count: a steady tank-treading cell scores ~0. The mean
+/// square, not the maximum, because single nodes of a Lagrangian mesh jitter (the
+/// maximum stays ~0.03 at level 2 in the Lac & Barthes-Biesel case where the RMS falls
+/// well below 1e-2).
+double shapeChangeRate(const double* nodeVelocities, const std::vector<mesh::Vec3>& nodeNormals,
+                       const mesh::Vec3& centroidVelocity);
+
+} // namespace capsula::run

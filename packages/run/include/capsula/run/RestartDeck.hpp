@@ -1,0 +1,16 @@
+#pragma once
+// A restart continues the run its checkpoint was written by: the deck must describe the
+// same run. Only 'Time integration/End time' (where to stop) and 'Output/Directory'
+// (where to write) may change.
+#include <Teuchos_ParameterList.hpp>
+
+#include <string>
+
+namespace capsula::run {
+
+/// Throws core::InputError naming the checkpoint and the first key whose value differs
+/// (or that only one deck has) between `current` and the deck stored in the checkpoint.
+void requireSameRun(const Teuchos::ParameterList& current, const std::string& checkpointDeckXml,
+                    const std::string& checkpointPath);
+
+} // namespace capsula::run

@@ -1,0 +1,13 @@
+#pragma once
+// The command-line program around a scene run, shared by the apps that differ only in
+// their name, description and examples (cell3d, twocell3d): parse the command line, read
+// and validate the deck against validSceneParameters, run it with the built-in kernels
+// (runScene), report errors (core::runApplication).
+#include <capsula/core/Application.hpp>
+
+namespace capsula::run {
+
+/// The exit status of the whole program (0 on success, see core::runApplication).
+int runSceneApplication(int argc, char** argv, const core::AppDescription& app);
+
+} // namespace capsula::run

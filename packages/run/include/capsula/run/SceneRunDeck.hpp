@@ -1,0 +1,21 @@
+#pragma once
+// The deck of the 3D scene apps (cell3d, twocell3d), assembled from the declarations of the
+// components that read each sublist:
+//   Flow, Wall, Cells          scene/SceneParameters.hpp
+//   Time integration           timeint/TimeIntegrationParameters.hpp
+//   Discretisation, Solver     operators/OperatorParameters.hpp
+//   Mesh regularisation, Mesh adaption   scene/SceneParameters.hpp (capsula::mesh)
+//   Output                     SceneOutputSettings.hpp
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include <string>
+
+namespace capsula::run {
+
+/// The complete valid parameter list for `deck` (one "Cells/Cell k" sublist for every one
+/// the deck has), named `appName`.
+Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos::ParameterList& deck,
+                                                                   const std::string& appName);
+
+} // namespace capsula::run

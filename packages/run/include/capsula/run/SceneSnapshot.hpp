@@ -1,0 +1,22 @@
+#pragma once
+// What a snapshot of a scene holds (io::Snapshot, XDMF Triangle_6 for ParaView): one
+// block per cell, "cell0", "cell1", ..., with
+//   node fields  velocity (3), tension_major, tension_minor (eq 3.30), stretch_major,
+//                stretch_minor
+//   cell fields  load <Delta f>_m (3), shear_stress |<Delta f>_m| (eq 3.57)
+// and, when the wall shear stress is computed, a block "wall" (2DSMesh) with the fields
+// shear_stress (eq 3.63), dudy and dwdy.
+#include <capsula/io/Snapshot.hpp>
+#include <capsula/operators/WallShearStress.hpp>
+#include <capsula/scene/Scene.hpp>
+#include <capsula/run/WallShearStressMap.hpp>
+
+#include <cstdint>
+
+namespace capsula::run {
+
+io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& fields, double time, std::int64_t step);
+
+io::SnapshotBlock wallSnapshotBlock(const WallGrid& grid, const operators::WallShearStress& stress);
+
+} // namespace capsula::run

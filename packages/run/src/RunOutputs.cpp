@@ -1,0 +1,114 @@
+#include "capsula/run/RunOutputs.hpp"
+
+#include "capsula/run/Collective.hpp"
+
+#include <capsula/core/Error.hpp>
+
+#include <filesystem>
+
+namespace capsula::run {
+
+namespace fs = std::filesystem;
+
+RunOutputs::RunOutputs(Teuchos::RCP<const Teuchos::Comm<int>> comm, std::string directory,
+                       std::optional<std::string> restartDirectory)
+  : comm_(std::move(comm)), directory_(std::move(directory)), restartDirectory_(std::move(restartDirectory))
+{
+}
+
+std::string RunOutputs::path(const std::string& file) const
+{
+  return (fs::path(directory_) / file).string();
+}
+
+void RunOutputs::onRoot(const std::function<void()>& action) const
+{
+  if (writing()) {
+    run::onRoot(*comm_, action);
+  }
+}
+
+void RunOutputs::open(const Teuchos::ParameterList& validatedDeck, const io::RunMetadata& metadata)
+{
+  onRoot([&] {
+    try {
+      output_.emplace(directory_);
+    } catch (const core::IoError& e) {
+      throw core::InputError(core::message("The output directory '", directory_, "' cannot be used (", e.what(),
+                                           "). Choose another with --output DIR or 'Output/Directory'."));
+    }
+    output_->writeRunMetadata(validatedDeck, metadata);
+  });
+}
+
+void RunOutputs::carryOver(const std::string& file) const
+{
+  if (!restartDirectory_ || fs::path(*restartDirectory_) == fs::path(directory_)) {
+    return;
+  }
+  const fs::path from = fs::path(*restartDirectory_) / file;
+  if (fs::exists(from)) {
+    fs::copy_file(from, path(file), fs::copy_options::overwrite_existing);
+  }
+}
+
+void RunOutputs::openTable(const std::string& file, const std::vector<std::string>& columns,
+                           std::optional<double> resumeAfter)
+{
+  onRoot([&] {
+    tables_.erase(file);
+    if (resumeAfter) {
+      carryOver(file);
+      tables_.emplace(file, io::MetricsCsv::resume(path(file), columns, *resumeAfter));
+    } else {
+      tables_.emplace(file, io::MetricsCsv(path(file), columns));
+    }
+  });
+}
+
+void RunOutputs::appendRow(const std::string& file, const std::vector<double>& row)
+{
+  onRoot([&] { tables_.at(file).appendRow(row); });
+}
+
+void RunOutputs::openSnapshots(const std::string& base, std::optional<double> resumeAfter)
+{
+  onRoot([&] {
+    series_.erase(base);
+    if (resumeAfter) {
+      series_.emplace(base, io::SnapshotSeries::resume(directory_, base, *resumeAfter,
+                                                       restartDirectory_ ? *restartDirectory_ : ""));
+    } else {
+      series_.emplace(base, io::SnapshotSeries(directory_, base));
+    }
+  });
+}
+
+void RunOutputs::writeSnapshot(const std::string& base, const std::function<io::Snapshot()>& snapshot)
+{
+  onRoot([&] { series_.at(base).write(snapshot()); });
+}
+
+void RunOutputs::writeCheckpoint(const std::function<io::Checkpoint()>& checkpoint)
+{
+  onRoot([&] { io::writeCheckpoint(path("checkpoint.h5"), checkpoint()); });
+}
+
+void RunOutputs::writeSummary(const std::function<io::JsonValue()>& summary)
+{
+  onRoot([&] { io::writeJsonFile(path("summary.json"), summary()); });
+}
+
+void RunOutputs::writeSummaryAfterFailure(const std::function<io::JsonValue()>& summary) noexcept
+{
+  if (!writing() || comm_->getRank() != 0 || !output_) {
+    return;
+  }
+  try {
+    io::writeJsonFile(path("summary.json"), summary());
+  } catch (...) {
+    // The original error is the one to report.
+  }
+}
+
+} // namespace capsula::run

@@ -1,0 +1,30 @@
+#include "capsula/run/SceneApplication.hpp"
+
+#include "capsula/run/SceneRunDeck.hpp"
+#include "capsula/run/SceneRun.hpp"
+
+#include <capsula/operators/KernelRegistry.hpp>
+
+#include <string>
+
+namespace capsula::run {
+
+int runSceneApplication(int argc, char** argv, const core::AppDescription& app)
+{
+  const std::string name = app.name;
+  const auto run = [name](core::RunContext& context) {
+    SceneRunOptions options;
+    options.application = name;
+    options.deckSource = context.deckName;
+    options.outputDirectory = context.options.outputDirectory;
+    options.restartDirectory = context.options.restartDirectory;
+    options.log = context.out;
+    const auto kernels = operators::builtInKernels();
+    runScene(*context.deck, context.comm, options, kernels);
+  };
+  return core::runApplication(
+    argc, argv, app, [name](const Teuchos::ParameterList& deck) { return validSceneRunParameters(deck, name); },
+    run);
+}
+
+} // namespace capsula::run

@@ -1,0 +1,304 @@
+#include "capsula/run/SceneOutputs.hpp"
+
+#include "capsula/run/MetricsTable.hpp"
+#include "capsula/run/SceneSnapshot.hpp"
+#include "capsula/run/SummaryJson.hpp"
+
+#include <capsula/core/Deck.hpp>
+#include <capsula/core/Error.hpp>
+#include <capsula/core/Timers.hpp>
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace capsula::run {
+
+namespace core = capsula::core;
+using mesh::Vec3;
+
+namespace {
+
+constexpr const char* kSnapshotBase = "snapshots";   // snapshots.h5 + snapshots.xdmf
+
+std::vector<std::string> probeColumns(std::size_t probes)
+{
+  std::vector<std::string> columns{"time"};
+  for (std::size_t p = 0; p < probes; ++p) {
+    for (const char* axis : {"u", "v", "w"}) {
+      columns.push_back("probe" + std::to_string(p) + "_" + axis);
+    }
+  }
+  return columns;
+}
+
+} // namespace
+
+struct SceneOutputs::WallSample {
+  WallGrid grid;
+  operators::WallShearStress stress;
+};
+
+SceneOutputs::SceneOutputs(RunScene& live, const scene::SceneDescription& description,
+                           const SceneOutputSettings& settings, RunOutputs& files, double steadyTolerance)
+  : live_(live),
+    description_(description),
+    settings_(settings),
+    files_(files),
+    steadyTolerance_(steadyTolerance),
+    metrics_(description.numCells())
+{
+}
+
+std::vector<std::string> SceneOutputs::terms() const
+{
+  std::vector<std::string> terms;
+  if (settings_.wallShearStress.enabled) {
+    const auto& wall = settings_.wallShearStress;
+    std::ostringstream line;
+    line << "output: wall shear stress on a grid of spacing " << wall.spacing << " (" << wall.upstream
+         << " upstream, " << wall.downstream << " downstream, half width " << wall.halfWidth << "), threshold "
+         << wall.threshold;
+    terms.push_back(line.str());
+  }
+  if (!settings_.flowProbes.empty()) {
+    terms.push_back("output: fluid velocity at " + std::to_string(settings_.flowProbes.size()) + " flow probes");
+  }
+  if (settings_.snapshots) {
+    terms.push_back("output: snapshots every " + std::to_string(settings_.snapshotStride) + " output(s)");
+  }
+  if (settings_.checkpoint) {
+    terms.push_back("output: checkpoint at every output");
+  }
+  return terms;
+}
+
+void SceneOutputs::open(std::optional<double> resumeAfter)
+{
+  const auto& wall = settings_.wallShearStress;
+  files_.openTable("metrics.csv", metricsColumns(wall.enabled, description_.numCells(), wall.isolatedRange),
+                   resumeAfter);
+  if (!settings_.flowProbes.empty()) {
+    files_.openTable("probes.csv", probeColumns(settings_.flowProbes.size()), resumeAfter);
+  }
+  if (settings_.snapshots) {
+    files_.openSnapshots(kSnapshotBase, resumeAfter);
+  }
+}
+
+timeint::ObserverVerdict SceneOutputs::atOutput(const timeint::IntegrationState& state, timeint::OutputReason)
+{
+  steady_ = observe(state);
+  return steady_ ? timeint::ObserverVerdict::Stop : timeint::ObserverVerdict::Continue;
+}
+
+// Wall shear stress on a grid that follows the cells (collective).
+std::optional<SceneOutputs::WallSample> SceneOutputs::sampleWallStress(const timeint::IntegrationState& state,
+                                                                       const scene::SceneFields& fields,
+                                                                       const std::vector<CellSample>& samples)
+{
+  const auto& wallOutput = settings_.wallShearStress;
+  if (!wallOutput.enabled) {
+    return std::nullopt;
+  }
+  Vec3 centre = Vec3::Zero();
+  for (const auto& s : samples) {
+    centre += s.shape.centroid / static_cast<double>(samples.size());
+  }
+  WallGrid grid = WallGrid::around(centre[0], centre[2], wallOutput.upstream, wallOutput.downstream,
+                                   wallOutput.halfWidth, wallOutput.spacing);
+  // Stencil step: 1/20 of the gap under the lowest node (the stencil reaches 4 steps up,
+  // a fifth of the gap), never more than a fifth of the grid spacing.
+  double gap = HUGE_VAL;
+  for (std::size_t k = 1; k < state.y.size(); k += 3) {
+    gap = std::min(gap, state.y[k]);
+  }
+  const double step = std::min(gap / 20.0, wallOutput.spacing / 5.0);
+  scene::Scene& scene = live_.scene();
+  operators::WallShearStress stress =
+    wallShearStressOnGrid(scene.solver(), grid, step, operators::LoadDensity(fields.loadDensity.data()),
+                          fields.solverVelocities.data(), scene.flow());
+  lastWallAreas_ = elevatedStressAreas(grid, stress.magnitude, centre[0], wallOutput.threshold);
+  if (wallOutput.isolatedRange) {
+    lastOutsideIsolated_ =
+      areasOutsideRange(grid, stress.magnitude, wallOutput.isolatedMinimum, wallOutput.isolatedMaximum);
+  }
+  return WallSample{std::move(grid), std::move(stress)};
+}
+
+// Updates the extremes and the last samples; returns why the mesh is past the quality
+// bound, or "".
+std::string SceneOutputs::recordSamples(double t, const std::vector<CellSample>& samples)
+{
+  std::string degraded;
+  for (std::size_t c = 0; c < samples.size(); ++c) {
+    const CellSample& s = samples[c];
+    maxVolumeDrift_ = std::max(maxVolumeDrift_, std::abs(s.volumeChange));
+    smallestAngle_ = std::min(smallestAngle_, s.stability.minAngleDegrees);
+    largestEdgeRatio_ = std::max(largestEdgeRatio_, s.stability.maxEdgeRatio);
+    mostCompressiveTension_ = std::min(mostCompressiveTension_, s.stability.mostCompressiveTension);
+    smallestWallGap_ = std::min(smallestWallGap_, s.stability.wallGapPerElementSize);
+    // The angle is checked at outputs only (an observer): between outputs the integrator's
+    // own floors (non-finite state, step collapse, a node at the wall) catch a blow-up.
+    if (degraded.empty() && !(s.stability.minAngleDegrees >= settings_.minimumAngle)) {
+      std::ostringstream reason;
+      reason << std::setprecision(6) << "At t = " << t << ", the mesh of '" << description_.cells[c].path
+             << "' degraded: its smallest element angle is " << s.stability.minAngleDegrees
+             << " degrees, below 'Output/Stability/Minimum angle' = " << settings_.minimumAngle
+             << " (largest edge ratio " << s.stability.maxEdgeRatio << "). The metrics row of this time is "
+             << "written; the last good checkpoint and outputs are in " << files_.directory()
+             << ". Refine the mesh, lower 'Time integration/Tolerance', or stop earlier.";
+      degraded = reason.str();
+    }
+  }
+  return degraded;
+}
+
+bool SceneOutputs::observe(const timeint::IntegrationState& state)
+{
+  Teuchos::TimeMonitor metricsGuard(*core::timer("Outputs"));
+  scene::Scene& scene = live_.scene();
+  const double t = state.time;
+  const scene::SceneFields fields = scene.evaluate(t, state.y);
+  const std::vector<CellSample> samples = metrics_.record(t, scene, fields);
+  const std::vector<PairSample> pairs = pairSamples(scene, fields.positions, samples);
+  const std::optional<WallSample> wall = sampleWallStress(state, fields, samples);
+  std::vector<double> probeVelocities;
+  if (!settings_.flowProbes.empty()) {
+    std::vector<double> points;
+    for (const auto& p : settings_.flowProbes) {
+      points.insert(points.end(), {p[0], p[1], p[2]});
+    }
+    probeVelocities = scene.solver().flowVelocity(points, operators::LoadDensity(fields.loadDensity.data()),
+                                                  fields.solverVelocities.data(), scene.flow());
+  }
+
+  double shapeRate = 0.0;
+  for (const CellSample& s : samples) {
+    shapeRate = std::max(shapeRate, s.shapeChangeRate);
+  }
+  const std::string degraded = recordSamples(t, samples);
+  const bool steady = steadyTolerance_ > 0.0 && t > state.outputOrigin && shapeRate < steadyTolerance_;
+  lastSamples_ = samples;
+  lastPairs_ = pairs;
+  lastTime_ = t;
+  if (steady) {
+    steadySamples_ = samples;
+    steadyPairs_ = pairs;
+  }
+  const bool snapshotDue = settings_.snapshots && outputsWritten_ % settings_.snapshotStride == 0;
+  ++outputsWritten_;
+
+  Teuchos::TimeMonitor filesGuard(*core::timer("Output files"));
+  std::vector<double> wallValues;
+  if (lastWallAreas_ && wall) {
+    wallValues = {lastWallAreas_->minimum, lastWallAreas_->maximum, lastWallAreas_->upstream,
+                  lastWallAreas_->downstream};
+    if (lastOutsideIsolated_) {
+      wallValues.insert(wallValues.end(), {lastOutsideIsolated_->below, lastOutsideIsolated_->above});
+    }
+  }
+  files_.appendRow("metrics.csv", metricsRow(t, state.statistics.acceptedSteps, state.statistics.lastStep, samples,
+                                             pairs, wallValues));
+  if (!settings_.flowProbes.empty()) {
+    std::vector<double> probeRow{t};
+    probeRow.insert(probeRow.end(), probeVelocities.begin(), probeVelocities.end());
+    files_.appendRow("probes.csv", probeRow);
+  }
+  if (snapshotDue && degraded.empty()) {
+    files_.writeSnapshot(kSnapshotBase, [&] {
+      io::Snapshot snapshot = sceneSnapshot(scene, fields, t, state.statistics.acceptedSteps);
+      if (wall) {
+        snapshot.blocks.push_back(wallSnapshotBlock(wall->grid, wall->stress));
+      }
+      return snapshot;
+    });
+  }
+  if (!degraded.empty()) {
+    throw core::NumericalError(degraded);   // the run records it in summary.json
+  }
+  if (settings_.checkpoint) {
+    files_.writeCheckpoint([&] { return checkpoint(state); });
+  }
+  return steady;
+}
+
+io::Checkpoint SceneOutputs::checkpoint(const timeint::IntegrationState& state) const
+{
+  io::Checkpoint checkpoint;
+  checkpoint.time = state.time;
+  checkpoint.step = state.statistics.acceptedSteps;
+  checkpoint.stepSize = state.statistics.lastStep;
+  checkpoint.deckXml = core::deckToXml(live_.deck(), false);
+  io::saveSections(checkpoint, checkpointSections_);
+  return checkpoint;
+}
+
+void SceneOutputs::save(io::Checkpoint& checkpoint) const
+{
+  metrics_.save(checkpoint);
+  checkpoint.integers["scene.outputs"] = outputsWritten_;
+}
+
+void SceneOutputs::load(const io::Checkpoint& checkpoint, const std::string& source)
+{
+  metrics_.load(checkpoint, source);
+  const auto outputs = checkpoint.integers.find("scene.outputs");
+  outputsWritten_ = outputs == checkpoint.integers.end() ? 0 : outputs->second;
+}
+
+void SceneOutputs::addResults(io::JsonValue& summary) const
+{
+  const scene::Scene& scene = live_.scene();
+  summary["max volume drift"] = maxVolumeDrift_;
+  if (scene.regularisesMeshes()) {
+    summary["mesh regularisations"] = static_cast<long long>(live_.regularisations());
+  }
+  if (scene.adaptsMeshes()) {
+    summary["mesh adaptions"] = static_cast<long long>(live_.adaptions());
+    for (int c = 0; c < scene.numCells(); ++c) {
+      summary["elements per cell"].append(scene.cell(c).numElements());
+    }
+  }
+  if (std::isfinite(smallestAngle_)) {   // extremes over the outputs of this process
+    summary["stability"]["smallest angle (degrees)"] = smallestAngle_;
+    summary["stability"]["largest edge ratio"] = largestEdgeRatio_;
+    summary["stability"]["most compressive tension"] = mostCompressiveTension_;
+    if (description_.wall) {   // without a wall the column measures from the plane y = 0
+      summary["stability"]["smallest wall gap per element size"] = smallestWallGap_;
+    }
+    summary["stability"]["minimum angle bound"] = settings_.minimumAngle;
+  }
+  for (std::size_t c = 0; c < lastSamples_.size(); ++c) {
+    io::JsonValue cell = io::JsonValue::object();
+    cell["name"] = description_.cells[c].path;
+    cell["final"] = sampleJson(lastSamples_[c], description_.wall);
+    if (!steadySamples_.empty()) {
+      cell["steady"] = sampleJson(steadySamples_[c], description_.wall);
+    }
+    summary["cells"].append(cell);
+  }
+  for (std::size_t k = 0; k < lastPairs_.size(); ++k) {
+    io::JsonValue pair = io::JsonValue::object();
+    pair["cells"].append(description_.cells[static_cast<std::size_t>(lastPairs_[k].first)].path);
+    pair["cells"].append(description_.cells[static_cast<std::size_t>(lastPairs_[k].second)].path);
+    pair["final"] = pairJson(lastPairs_[k]);
+    if (k < steadyPairs_.size()) {
+      pair["steady"] = pairJson(steadyPairs_[k]);
+    }
+    summary["pairs"].append(pair);
+  }
+  summary["minimum gap"] = description_.minimumGap;
+  if (lastWallAreas_) {
+    summary["wall shear stress"]["minimum"] = lastWallAreas_->minimum;
+    summary["wall shear stress"]["maximum"] = lastWallAreas_->maximum;
+    summary["wall shear stress"]["elevated area upstream"] = lastWallAreas_->upstream;
+    summary["wall shear stress"]["elevated area downstream"] = lastWallAreas_->downstream;
+  }
+  if (lastOutsideIsolated_) {
+    summary["wall shear stress"]["area below the isolated cell's minimum"] = lastOutsideIsolated_->below;
+    summary["wall shear stress"]["area above the isolated cell's maximum"] = lastOutsideIsolated_->above;
+  }
+}
+
+} // namespace capsula::run

@@ -1,0 +1,340 @@
+#include "capsula/run/SceneRun.hpp"
+
+#include "capsula/run/Collective.hpp"
+#include "capsula/run/IntegrationStateSection.hpp"
+#include "capsula/run/PairMetrics.hpp"
+#include "capsula/run/RestartDeck.hpp"
+#include "capsula/run/RunOutputs.hpp"
+#include "capsula/run/RunScene.hpp"
+#include "capsula/run/RunSummary.hpp"
+#include "capsula/run/SceneOutputSettings.hpp"
+#include "capsula/run/SceneOutputs.hpp"
+#include "capsula/run/WallClock.hpp"
+
+#include <capsula/core/Error.hpp>
+#include <capsula/core/Timers.hpp>
+#include <capsula/io/Checkpoint.hpp>
+#include <capsula/scene/SceneDescription.hpp>
+#include <capsula/scene/VelocityJacobian.hpp>
+#include <capsula/timeint/TimeIntegrationParameters.hpp>
+#include <capsula/timeint/TimeIntegrator.hpp>
+
+#include <Teuchos_oblackholestream.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <memory>
+#include <ostream>
+#include <sstream>
+
+namespace capsula::run {
+
+namespace core = capsula::core;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kCheckpointFile = "checkpoint.h5";
+
+std::string outputDirectory(const SceneRunOptions& options, const SceneOutputSettings& settings)
+{
+  const std::string directory = options.outputDirectory    ? *options.outputDirectory
+                                : options.restartDirectory ? *options.restartDirectory
+                                                           : settings.directory;
+  core::require<core::InputError>(!directory.empty(),
+                                  "No output directory: set 'Output/Directory' or give --output DIR.");
+  return directory;
+}
+
+// The settings of the integrator: the deck's, but steady state is judged on the shape at
+// output times (SceneOutputs.hpp), not on the raw node positions, which keep moving as the
+// membrane tank-treads.
+timeint::TimeIntegrationSettings integrationSettings(const Teuchos::ParameterList& deck)
+{
+  auto settings = timeint::timeIntegrationSettings(deck.sublist("Time integration"));
+  settings.steadyCriterion = timeint::SteadyStateCriterion::Off;
+  return settings;
+}
+
+/// The run of a scene: builds the parts, restores them from a checkpoint, runs the time
+/// loop with them as observers, and watches the gap between the cells and the progress.
+class SceneRunner final : public timeint::IntegrationObserver {
+public:
+  SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+              const SceneRunOptions& options, const operators::KernelRegistry& kernels);
+
+  SceneRunResult execute();
+
+  timeint::ObserverVerdict afterStep(timeint::IntegrationState& state, const timeint::StepReport& report,
+                                     bool atOutputTime) override;
+  timeint::ObserverVerdict atOutput(const timeint::IntegrationState& state, timeint::OutputReason reason) override;
+
+private:
+  std::ostream& log() { return *log_; }
+  void restore();
+  void attachJacobian();
+  bool cellsTooClose(const timeint::IntegrationState& state);
+  void progress(const timeint::IntegrationState& state);
+  io::JsonValue summary(const std::string& status, const std::string& note) const;
+  void report(const std::string& status);
+
+  const Teuchos::ParameterList& deck_;
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  SceneRunOptions options_;
+  const operators::KernelRegistry& kernels_;
+  Teuchos::oblackholestream quiet_;
+  std::ostream* log_;
+  scene::SceneDescription description_;
+  SceneOutputSettings settings_;
+  timeint::TimeIntegrator integrator_;
+  timeint::IntegrationState state_;
+  RunOutputs files_;
+  RunScene live_;
+  SceneOutputs outputs_;
+  IntegrationStateSection stateSection_;
+  RunSummary summary_;
+  // The stiff methods' Jacobian, built for the scene it belongs to (again after an adaption).
+  std::shared_ptr<scene::VelocityJacobian> jacobian_;
+  const scene::Scene* jacobianScene_ = nullptr;
+  std::vector<std::pair<double, std::string>> methodSwitches_;   // Auto's, this process's
+  bool restarted_ = false;
+  bool tooClose_ = false;
+  std::string stopReason_;
+  std::chrono::steady_clock::time_point wallStart_;
+  double simulatedStart_ = 0.0;
+};
+
+SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                         const SceneRunOptions& options, const operators::KernelRegistry& kernels)
+  : deck_(deck),
+    comm_(comm),
+    options_(options),
+    kernels_(kernels),
+    log_(options.log && comm->getRank() == 0 ? options.log : &quiet_),
+    description_(scene::describeScene(deck)),
+    settings_(readSceneOutputSettings(deck, description_)),
+    // The scene is looked up at every call: a mesh adaption replaces it during the run.
+    integrator_(integrationSettings(deck),
+                [this](double t, const std::vector<double>& y, std::vector<double>& dydt) {
+                  live_.scene().velocity(t, y, dydt);
+                }),
+    files_(comm, outputDirectory(options, settings_), options.restartDirectory),
+    live_(description_, deck, comm, kernels, state_, *log_),
+    outputs_(live_, description_, settings_, files_, integrator_.settings().steadyTolerance),
+    stateSection_(state_, "timeint."),
+    summary_(options.application, deck, comm->getSize())
+{
+  // Loaded in this order: the scene's meshes take their positions from the state.
+  if (options_.restartDirectory) {
+    restore();
+  }
+  live_.build();
+  outputs_.setCheckpointSections({&stateSection_, &outputs_, &live_});
+  if (live_.scene().hasConstraints()) {
+    integrator_.setStageConstraint([this](double, const std::vector<double>& y, std::vector<double>& dydt) {
+      live_.scene().constrain(y, dydt);
+    });
+  }
+  std::vector<std::string> terms = live_.scene().terms();
+  for (auto& term : outputs_.terms()) {
+    terms.push_back(std::move(term));
+  }
+  terms.push_back(timeint::describeTimeIntegration(integrator_.settings()));
+  attachJacobian();
+  if (jacobian_) {
+    terms.push_back(jacobian_->describe());
+  }
+  summary_.setTerms(std::move(terms));
+}
+
+// The stiff methods' Jacobian of the scene as it is now (a mesh adaption replaces the scene).
+void SceneRunner::attachJacobian()
+{
+  if (!timeint::needsLinearisedSystem(integrator_.settings().method) || jacobianScene_ == &live_.scene()) {
+    return;
+  }
+  jacobian_ = std::make_shared<scene::VelocityJacobian>(live_.scene(), deck_, kernels_);
+  jacobianScene_ = &live_.scene();
+  integrator_.setLinearisedSystem(jacobian_);
+}
+
+void SceneRunner::restore()
+{
+  const std::string path = (fs::path(*options_.restartDirectory) / kCheckpointFile).string();
+  // Every rank reads the (small) checkpoint itself: no broadcast of its contents needed.
+  io::Checkpoint checkpoint;
+  try {
+    checkpoint = io::readCheckpoint(path);
+  } catch (const core::IoError& e) {
+    throw core::InputError(core::message("--restart ", *options_.restartDirectory, ": ", e.what()));
+  }
+  requireSameRun(deck_, checkpoint.deckXml, path);
+  io::loadSections(checkpoint, path, {&stateSection_, &outputs_, &live_});
+  restarted_ = true;
+}
+
+// After every step: if two cell surfaces are closer than 'Cells/Minimum gap', records the
+// state as an output (metrics row, snapshot, checkpoint) and the reason. Every rank holds
+// the same state, so every rank takes the same decision.
+bool SceneRunner::cellsTooClose(const timeint::IntegrationState& state)
+{
+  if (live_.scene().numCells() < 2) {
+    return false;
+  }
+  ClosestPair closest;
+  {
+    Teuchos::TimeMonitor guard(*core::timer("Cell gap"));
+    closest = closestPair(live_.scene(), state.y);
+  }
+  if (closest.gap >= description_.minimumGap) {
+    return false;
+  }
+  std::ostringstream reason;
+  reason << std::setprecision(6) << "Stopped at t = " << state.time << ": the surfaces of '"
+         << description_.cells[static_cast<std::size_t>(closest.first)].path << "' and '"
+         << description_.cells[static_cast<std::size_t>(closest.second)].path << "' are " << closest.gap
+         << " apart, less than 'Cells/Minimum gap' = " << description_.minimumGap
+         << ". The outputs and the checkpoint at this time are in " << files_.directory() << ".";
+  stopReason_ = reason.str();
+  outputs_.observe(state);
+  progress(state);
+  files_.writeSummary([&] { return summary("too close", stopReason_); });
+  log() << stopReason_ << "\n";
+  return true;
+}
+
+timeint::ObserverVerdict SceneRunner::afterStep(timeint::IntegrationState& state, const timeint::StepReport& report,
+                                                bool atOutputTime)
+{
+  if (!report.switchReason.empty()) {
+    methodSwitches_.emplace_back(state.time, report.switchReason);
+    log() << std::setprecision(6) << "t = " << state.time << ": " << report.switchReason << "\n";
+  }
+  attachJacobian();   // RunScene, observed first, may have rebuilt the scene
+  tooClose_ = cellsTooClose(state);
+  if (tooClose_) {
+    return timeint::ObserverVerdict::Stop;
+  }
+  if (state.statistics.acceptedSteps % settings_.progressSteps == 0 && !atOutputTime) {
+    progress(state);
+  }
+  return timeint::ObserverVerdict::Continue;
+}
+
+// After the outputs (SceneOutputs observes first): summary.json and a progress line.
+timeint::ObserverVerdict SceneRunner::atOutput(const timeint::IntegrationState& state, timeint::OutputReason)
+{
+  files_.writeSummary([&] { return summary(outputs_.steady() ? "steady" : "running", ""); });
+  progress(state);
+  return timeint::ObserverVerdict::Continue;
+}
+
+void SceneRunner::progress(const timeint::IntegrationState& state)
+{
+  const double end = integrator_.settings().endTime;
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart_).count();
+  std::ostringstream line;
+  line << std::setprecision(4) << "t = " << state.time << " / " << end << " (" << std::setprecision(3)
+       << 100.0 * state.time / end << "%)  step " << state.statistics.acceptedSteps << "  dt " << std::scientific
+       << std::setprecision(2) << state.statistics.lastStep << std::defaultfloat << std::setprecision(4) << "  D12 "
+       << outputs_.lastD12() << "  ETA " << wallClock(timeLeft(elapsed, simulatedStart_, state.time, end));
+  if (jacobian_) {   // the stiff methods: which one runs, and the Krylov work so far
+    const auto& stats = state.statistics;
+    line << "  [" << integrator_.activeMethodName(state) << std::setprecision(3) << ", "
+         << (stats.linearSolves > 0 ? static_cast<double>(stats.linearIterations) / static_cast<double>(stats.linearSolves)
+                                    : 0.0)
+         << " GMRES it/solve]";
+  }
+  log() << line.str() << std::endl;
+}
+
+// `note`: the failure message (status "failed") or why the run stopped early.
+io::JsonValue SceneRunner::summary(const std::string& status, const std::string& note) const
+{
+  return summary_.json(status, note, outputs_.lastTime(), state_.statistics, [this](io::JsonValue& json) {
+    json["time integration"]["method"] = timeint::toString(integrator_.settings().method);
+    json["time integration"]["in use"] = integrator_.activeMethodName(state_);
+    for (const auto& [time, reason] : methodSwitches_) {
+      io::JsonValue change = io::JsonValue::object();
+      change["time"] = time;
+      change["reason"] = reason;
+      json["time integration"]["switches"].append(change);
+    }
+    outputs_.addResults(json);
+  });
+}
+
+SceneRunResult SceneRunner::execute()
+{
+  wallStart_ = std::chrono::steady_clock::now();
+  summary_.begin(state_.statistics, restarted_);
+  files_.open(deck_, {options_.application, options_.deckSource, comm_->getSize()});
+  log() << "Output directory: " << files_.directory() << "\n";
+  summary_.printTerms(log());
+  outputs_.open(restarted_ ? std::optional<double>(state_.time) : std::nullopt);
+
+  timeint::OutputSchedule schedule;
+  schedule.interval = settings_.interval;
+  try {
+    if (!restarted_) {
+      state_ = integrator_.start(0.0, live_.scene().initialPositions());
+    } else {
+      log() << "Restarted from " << *options_.restartDirectory << " at t = " << state_.time << ", step "
+            << state_.statistics.acceptedSteps << "\n";
+    }
+    // The start is observed (never steady: the test needs t > 0); the ETA counts from after it.
+    simulatedStart_ = state_.time;
+    integrator_.integrate(state_, schedule, {&live_, &outputs_, this});
+  } catch (const std::exception& e) {
+    // Record the failure next to the last good outputs, then let the app report it.
+    files_.writeSummaryAfterFailure([&] { return summary("failed", e.what()); });
+    throw;
+  }
+  const std::string status = tooClose_ ? "too close" : outputs_.steady() ? "steady" : "finished";
+  files_.writeSummary([&] { return summary(status, stopReason_); });
+  report(status);
+  SceneRunResult result;
+  result.status = status;
+  result.time = state_.time;
+  result.acceptedSteps = state_.statistics.acceptedSteps;
+  result.outputDirectory = files_.directory();
+  result.terms = summary_.terms();
+  return result;
+}
+
+// The key results of the last output, and how to look at the files.
+void SceneRunner::report(const std::string& status)
+{
+  if (outputs_.steady()) {
+    log() << "Steady state at t = " << state_.time << ": the shape changes slower than "
+          << integrator_.settings().steadyTolerance << "\n";
+  }
+  log() << "Done: " << status << " at t = " << state_.time << " after " << state_.statistics.acceptedSteps
+        << " steps (" << state_.statistics.rejectedSteps << " rejected); outputs in " << files_.directory() << "\n";
+  const auto& samples = outputs_.lastSamples();
+  for (std::size_t c = 0; c < samples.size(); ++c) {
+    const CellSample& sample = samples[c];
+    log() << "  " << description_.cells[c].path << ": D12 " << sample.shape.deformation.D12 << ", centroid ("
+          << sample.shape.centroid[0] << ", " << sample.shape.centroid[1] << ", " << sample.shape.centroid[2]
+          << "), u_slip " << sample.slipVelocity() << ", u_migr " << sample.migrationVelocity()
+          << ", volume change " << sample.volumeChange << ", mean shear stress " << sample.stress.mean << "\n";
+  }
+  log() << "  metrics.csv (one row per output), summary.json (final and steady values)";
+  if (settings_.snapshots) {
+    log() << "; ParaView: open " << files_.directory() << "/snapshots.xdmf";
+  }
+  log() << "\n";
+}
+
+} // namespace
+
+SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck,
+                        const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const SceneRunOptions& options,
+                        const operators::KernelRegistry& kernels)
+{
+  SceneRunner run(validatedDeck, comm, options, kernels);
+  return run.execute();
+}
+
+} // namespace capsula::run

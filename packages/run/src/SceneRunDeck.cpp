@@ -1,0 +1,30 @@
+#include "capsula/run/SceneRunDeck.hpp"
+
+#include "capsula/run/SceneOutputSettings.hpp"
+
+#include <capsula/core/ParameterDeclaration.hpp>
+#include <capsula/operators/OperatorParameters.hpp>
+#include <capsula/scene/SceneParameters.hpp>
+#include <capsula/scene/StiffSolverParameters.hpp>
+#include <capsula/timeint/TimeIntegrationParameters.hpp>
+
+namespace capsula::run {
+
+Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos::ParameterList& deck,
+                                                                   const std::string& appName)
+{
+  auto valid = Teuchos::rcp(new Teuchos::ParameterList(appName));
+  scene::declareSceneParameters(*valid, deck);
+  timeint::declareTimeIntegrationParameters(
+    core::declareSublist(*valid, "Time integration", "Time stepping (Section 3.10; docs/stiff-integration.md)."),
+    /*stabilityLimitDefault=*/true);
+  operators::declareOperatorParameters(*valid);
+  scene::declareStiffSolverParameters(core::declareSublist(
+    valid->sublist("Solver"), "Stiff",
+    "The linear solves of the stiff time integrators (Time integration/Method ROS34PW2, ROS2, Auto)."));
+  scene::declareMeshEvolutionParameters(*valid);
+  declareSceneOutputParameters(core::declareSublist(*valid, "Output", "What is written, where and when."));
+  return valid;
+}
+
+} // namespace capsula::run

@@ -1,0 +1,83 @@
+#include "capsula/run/SceneSnapshot.hpp"
+
+#include <cmath>
+
+namespace capsula::run {
+
+namespace {
+
+std::vector<double> slice(const std::vector<double>& values, std::size_t first, std::size_t count)
+{
+  return std::vector<double>(values.begin() + static_cast<std::ptrdiff_t>(first),
+                             values.begin() + static_cast<std::ptrdiff_t>(first + count));
+}
+
+// Entry `which` of the pairs of nodes [first, first + count).
+std::vector<double> component(const std::vector<double>& pairs, std::size_t first, std::size_t count, int which)
+{
+  std::vector<double> values(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    values[i] = pairs[2 * (first + i) + static_cast<std::size_t>(which)];
+  }
+  return values;
+}
+
+} // namespace
+
+io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& fields, double time, std::int64_t step)
+{
+  io::Snapshot snapshot;
+  snapshot.time = time;
+  snapshot.step = step;
+  for (int c = 0; c < scene.numCells(); ++c) {
+    const mesh::SurfaceMesh& cell = scene.cell(c);
+    const auto nodes = static_cast<std::size_t>(cell.numNodes());
+    const auto elements = static_cast<std::size_t>(cell.numElements());
+    const auto firstNode = static_cast<std::size_t>(scene.nodeOffset(c));
+    const auto firstElement = static_cast<std::size_t>(scene.elementOffset(c));
+    io::SnapshotBlock block;
+    block.name = "cell" + std::to_string(c);
+    block.topology = io::Topology::QuadraticTriangles;
+    block.dimension = 3;
+    block.positions = slice(fields.positions, 3 * firstNode, 3 * nodes);
+    block.connectivity.reserve(6 * elements);
+    for (const auto& element : cell.elements()) {
+      block.connectivity.insert(block.connectivity.end(), element.begin(), element.end());
+    }
+    block.nodeFields.push_back({"velocity", 3, slice(fields.velocities, 3 * firstNode, 3 * nodes)});
+    // Pairs as separate scalars: ParaView reads 3-component vectors, not 2.
+    block.nodeFields.push_back({"tension_major", 1, component(fields.principalTensions, firstNode, nodes, 0)});
+    block.nodeFields.push_back({"tension_minor", 1, component(fields.principalTensions, firstNode, nodes, 1)});
+    block.nodeFields.push_back({"stretch_major", 1, component(fields.stretches, firstNode, nodes, 0)});
+    block.nodeFields.push_back({"stretch_minor", 1, component(fields.stretches, firstNode, nodes, 1)});
+    const std::vector<double> loads = slice(fields.elementLoads, 3 * firstElement, 3 * elements);
+    std::vector<double> magnitude(elements);
+    for (std::size_t e = 0; e < elements; ++e) {
+      magnitude[e] = std::sqrt(loads[3 * e] * loads[3 * e] + loads[3 * e + 1] * loads[3 * e + 1] +
+                               loads[3 * e + 2] * loads[3 * e + 2]);
+    }
+    block.cellFields.push_back({"load", 3, loads});
+    block.cellFields.push_back({"shear_stress", 1, magnitude});
+    snapshot.blocks.push_back(std::move(block));
+  }
+  return snapshot;
+}
+
+io::SnapshotBlock wallSnapshotBlock(const WallGrid& grid, const operators::WallShearStress& stress)
+{
+  io::SnapshotBlock block;
+  block.name = "wall";
+  block.topology = io::Topology::StructuredGrid;
+  block.dimension = 3;
+  // Row-major with the x index fastest: shape (nz, nx), as WallGrid::index numbers them.
+  block.gridShape = {grid.nz, grid.nx};
+  for (const auto& p : grid.nodes()) {
+    block.positions.insert(block.positions.end(), {p[0], p[1], p[2]});
+  }
+  block.nodeFields.push_back({"shear_stress", 1, stress.magnitude});
+  block.nodeFields.push_back({"dudy", 1, stress.dudy});
+  block.nodeFields.push_back({"dwdy", 1, stress.dwdy});
+  return block;
+}
+
+} // namespace capsula::run

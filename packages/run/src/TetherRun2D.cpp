@@ -1,0 +1,146 @@
+#include "capsula/run/TetherRun2D.hpp"
+
+#include "capsula/run/IntegrationStateSection.hpp"
+#include "capsula/run/RunOutputs.hpp"
+#include "capsula/run/RunSummary.hpp"
+#include "capsula/run/TetherStages2D.hpp"
+
+#include <capsula/core/Deck.hpp>
+#include <capsula/core/Error.hpp>
+#include <capsula/io/Checkpoint.hpp>
+#include <capsula/operators/ContourDiscretisation2D.hpp>
+#include <capsula/scene2d/NodesInFluid2D.hpp>
+#include <capsula/timeint/TimeIntegrationParameters.hpp>
+#include <capsula/timeint/TimeIntegrator.hpp>
+
+#include <ostream>
+
+namespace capsula::run {
+
+namespace {
+
+/// The summary.json results of a tether2d run, after the common part (RunSummary.hpp).
+void addResults(io::JsonValue& summary, const TetherRunResult2D& result)
+{
+  summary["tethered"] = result.tethered;
+  summary["preparation time"] = result.preparationTime;
+  summary["final"]["time"] = result.finalTime;
+  const auto names = scene2d::metricColumns();
+  const auto values = scene2d::metricValues(result.final);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    summary["final"][names[i]] = values[i];
+  }
+  summary["max"]["tether_force"] = result.maxTetherForce;
+  summary["max"]["time_of_max_tether_force"] = result.timeOfMaxTetherForce;
+  summary["max"]["tether_force_after_transient"] = result.maxTetherForceAfterTransient;
+  summary["max"]["time_of_max_tether_force_after_transient"] = result.timeOfMaxTetherForceAfterTransient;
+  summary["max"]["contour_length_ratio"] = result.maxContourLengthRatio;
+  summary["max"]["cell_length"] = result.maxCellLength;
+  summary["max"]["abs_area_drift"] = result.maxAbsAreaDrift;
+}
+
+} // namespace
+
+TetherRun2D::TetherRun2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
+                         std::ostream* log, std::string deckSource)
+  : comm_(comm),
+    deck_(deck),
+    log_(log),
+    deckSource_(std::move(deckSource)),
+    tether_(scene2d::readTetherSettings2D(deck.sublist("Tether"))),
+    output_(readOutputSettings2D(deck.sublist("Output"))),
+    model_(comm, scene2d::readCellSettings2D(deck.sublist("Cell")),
+           scene2d::readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall")),
+           operators::readContourDiscretisation2D(deck.sublist("Discretisation")),
+           operators::readSolverParameters(deck.sublist("Solver")))
+{
+  core::require<core::InputError>(!tether_.enabled || model_.flow().wall,
+                                  "Tether/Enabled needs the wall (Wall/Enabled = true): the tether point is "
+                                  "held above it.");
+}
+
+TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
+                                   const std::optional<std::string>& restartDirectory)
+{
+  const timeint::TimeIntegrationSettings settings = timeint::timeIntegrationSettings(deck_.sublist("Time integration"));
+  const double endTau = settings.endTime;   // the tethered (or free) stage's duration in tau
+  timeint::TimeIntegrator integrator(settings, [this](double, const std::vector<double>& y, std::vector<double>& dydt) {
+    model_.rightHandSide(y, dydt);
+  });
+  // With the wall, a stage state or a step with a node on or below it is a rejected
+  // attempt (NodesInFluid2D.hpp), not a failure of the run.
+  if (model_.flow().wall) {
+    integrator.setDomainCheck(scene2d::requireNodesInFluid);
+  }
+
+  RunOutputs files(comm_, outputDirectory, restartDirectory);
+  files.open(deck_, {"tether2d", deckSource_, comm_->getSize()});
+  RunSummary summary("tether2d", deck_, comm_->getSize());
+  timeint::IntegrationState state;
+  TetherStages2D stages(model_, tether_, integrator, state, log_);
+  TetherOutputs2D outputs(model_, stages, output_, integrator.settings(), tether_.forceTransient, files, state,
+                          core::deckToXml(deck_, false), log_);
+  IntegrationStateSection stateSection(state, "");
+  // Loaded in this order: the stages rebuild the model's markers and tether, which drops
+  // the warm start the model then restores.
+  outputs.setCheckpointSections({&stateSection, &stages, &model_, &outputs});
+
+  if (restartDirectory) {
+    const std::string path = *restartDirectory + "/checkpoint.h5";
+    const io::Checkpoint checkpoint = io::readCheckpoint(path);
+    io::loadSections(checkpoint, path, {&stateSection, &stages, &model_, &outputs});
+    state.steady = false;   // a restart goes on from where the stopped run was
+    outputs.beginStage(checkpoint.time);
+    if (log_ != nullptr) {
+      *log_ << "Restarting from " << path << " at tau = " << checkpoint.time << " (step " << checkpoint.step
+            << ")\n";
+    }
+  } else {
+    state = integrator.start(0.0, model_.initialState());
+    stages.begin(tether_.enabled ? TetherStage::Preparation : TetherStage::Free);
+    outputs.beginStage();
+  }
+  std::vector<std::string> terms = model_.terms();
+  if (tether_.enabled) {
+    terms.emplace_back("tether constraint after a free preparation stage");
+  }
+  summary.setTerms(terms);
+  summary.begin(state.statistics, restartDirectory.has_value());
+  if (log_ != nullptr) {
+    summary.printTerms(*log_);
+  }
+
+  TetherRunResult2D result;
+  const auto summaryJson = [&](const std::string& status, const std::string& note) {
+    return summary.json(status, note, result.finalTime, state.statistics,
+                        [&](io::JsonValue& json) { addResults(json, result); });
+  };
+  try {
+    if (stages.preparing()) {
+      integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs});
+      // The preparation is over: its last state is an output, then the cell is tethered.
+      if (stages.stoppedAtOutputTime()) {
+        ++state.nextOutput;
+      }
+      outputs.observe(stages.lastStepSize(), stages.preparationRate(), true);
+      stages.tether();
+      outputs.beginStage();
+    }
+    integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs});
+    outputs.writeCheckpoint();
+  } catch (const std::exception& e) {
+    result = outputs.result();
+    files.writeSummaryAfterFailure([&] { return summaryJson("failed", e.what()); });
+    throw;
+  }
+
+  result = outputs.result();
+  result.tethered = stages.tethered();
+  result.steady = state.steady;
+  result.preparationTime = stages.preparationTime();
+  result.steps = static_cast<long long>(state.statistics.acceptedSteps);
+  files.writeSummary([&] { return summaryJson(result.steady ? "steady" : "finished", ""); });
+  return result;
+}
+
+} // namespace capsula::run

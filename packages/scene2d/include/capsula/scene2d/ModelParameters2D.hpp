@@ -1,0 +1,17 @@
+#pragma once
+// The deck keys of the 2D tethered-cell model, declared by the components that read them:
+//   Flow, Wall                 FlowModel2D.hpp
+//   Cell                       CellContour2D.hpp
+//   Tether                     TetherProcedure2D.hpp
+//   Discretisation             operators/ContourDiscretisation2D.hpp
+//   Solver                     operators/OperatorParameters.hpp (GMRES, lambda != 1)
+// The run adds Time integration and Output (run/Tether2DDeck.hpp assembles the deck of
+// tether2d).
+#include <Teuchos_ParameterList.hpp>
+
+namespace capsula::scene2d {
+
+/// Declares the sublists above in `valid`, in that order.
+void declareModelParameters2D(Teuchos::ParameterList& valid);
+
+} // namespace capsula::scene2d

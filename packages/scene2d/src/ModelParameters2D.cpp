@@ -1,0 +1,26 @@
+#include "capsula/scene2d/ModelParameters2D.hpp"
+
+#include "capsula/scene2d/CellContour2D.hpp"
+#include "capsula/scene2d/FlowModel2D.hpp"
+#include "capsula/scene2d/TetherProcedure2D.hpp"
+
+#include <capsula/core/ParameterDeclaration.hpp>
+#include <capsula/operators/ContourDiscretisation2D.hpp>
+#include <capsula/operators/OperatorParameters.hpp>
+
+namespace capsula::scene2d {
+
+void declareModelParameters2D(Teuchos::ParameterList& valid)
+{
+  using core::declareSublist;
+  declareFlowParameters2D(declareSublist(valid, "Flow", "The shear flow (thesis eq A.13)."));
+  declareWallParameters2D(declareSublist(valid, "Wall", "The plane wall y = 0."));
+  declareCellParameters2D(declareSublist(valid, "Cell", "The initial cell contour (thesis Fig. 4.1)."));
+  declareTetherParameters2D(declareSublist(valid, "Tether", "The tether procedure (thesis Section 4.1)."));
+  operators::declareContourDiscretisation2D(
+    declareSublist(valid, "Discretisation", "Quadrature of the contour integrals (thesis App. A.6)."));
+  operators::declareSolverParameters(
+    declareSublist(valid, "Solver", "GMRES for the viscosity-ratio equation (thesis App. A.7)."));
+}
+
+} // namespace capsula::scene2d
