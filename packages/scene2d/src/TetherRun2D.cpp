@@ -1,6 +1,7 @@
 #include "capsula/scene2d/TetherRun2D.hpp"
 
 #include "capsula/scene2d/NodesInFluid2D.hpp"
+#include "capsula/scene2d/VelocityJacobian2D.hpp"
 
 #include <capsula/contour/ContourMetrics.hpp>
 #include <capsula/core/Deck.hpp>
@@ -19,8 +20,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
+#include <memory>
 #include <optional>
 #include <ostream>
+#include <utility>
 
 namespace capsula::scene2d {
 
@@ -123,6 +127,46 @@ io::Snapshot snapshotOf(const contour::Contour& contour, const elasticity::Membr
   return snapshot;
 }
 
+// Stiff time integration: what a fresh integration state at new markers (a regrid, the
+// tethering) keeps of the old one, the stiff methods' counters and Auto's choice of method
+// (the counters belong to the run; the method suits the membrane, which is the same).
+void keepStiffProgress(const timeint::IntegrationState& from, timeint::IntegrationState& to)
+{
+  const timeint::IntegrationStatistics& a = from.statistics;
+  timeint::IntegrationStatistics& b = to.statistics;
+  b.stiffSteps = a.stiffSteps;
+  b.stiffRhsEvaluations = a.stiffRhsEvaluations;
+  b.linearisations = a.linearisations;
+  b.linearSolves = a.linearSolves;
+  b.linearIterations = a.linearIterations;
+  b.largestLinearIterations = a.largestLinearIterations;
+  b.failedLinearSolves = a.failedLinearSolves;
+  b.methodSwitches = a.methodSwitches;
+  to.stiffActive = from.stiffActive;
+  to.stiffAdvanceRate = from.stiffAdvanceRate;
+}
+
+// Stiff time integration: the integrator's counters in summary.json ("timings"), where a
+// stiff step was taken or the method switched.
+void writeStiffStatistics(const timeint::IntegrationStatistics& s, long long jacobianApplications,
+                          io::JsonValue& timings)
+{
+  if (s.stiffSteps == 0 && s.methodSwitches == 0) {
+    return;
+  }
+  timings["stiff_steps"] = static_cast<long long>(s.stiffSteps);
+  timings["rhs_evaluations_in_stiff_steps"] = static_cast<long long>(s.stiffRhsEvaluations);
+  timings["linearisations"] = static_cast<long long>(s.linearisations);
+  timings["linear_solves"] = static_cast<long long>(s.linearSolves);
+  timings["linear_iterations"] = static_cast<long long>(s.linearIterations);
+  timings["linear_iterations_per_stiff_step"] =
+    s.stiffSteps > 0 ? static_cast<double>(s.linearIterations) / static_cast<double>(s.stiffSteps) : 0.0;
+  timings["largest_linear_iterations"] = static_cast<long long>(s.largestLinearIterations);
+  timings["failed_linear_solves"] = static_cast<long long>(s.failedLinearSolves);
+  timings["method_switches"] = static_cast<long long>(s.methodSwitches);
+  timings["jacobian_applications_this_process"] = jacobianApplications;
+}
+
 } // namespace
 
 TetherRun2D::TetherRun2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
@@ -160,6 +204,28 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   if (model_.flow().wall) {
     integrator.setDomainCheck(requireNodesInFluid);
   }
+  // Stiff time integration: the Jacobian (VelocityJacobian2D.hpp) reads the model at every
+  // linearisation, so it follows the tethering and the regrids as it is.
+  std::shared_ptr<VelocityJacobian2D> jacobian;
+  if (timeint::needsLinearisedSystem(settings.method)) {
+    jacobian = std::make_shared<VelocityJacobian2D>(model_, comm_, deck_);
+    integrator.setLinearisedSystem(jacobian);
+  }
+  std::vector<std::string> timeIntegrationTerms{timeint::describeTimeIntegration(integrator.settings())};
+  if (jacobian) {
+    timeIntegrationTerms.push_back(jacobian->describe());
+  }
+  if (log_ != nullptr) {
+    for (const std::string& term : timeIntegrationTerms) {
+      *log_ << term << "\n";
+    }
+  }
+  struct MethodSwitch {
+    std::string stage;
+    double tau;
+    std::string reason;
+  };
+  std::vector<MethodSwitch> methodSwitches;   // Auto, this process
 
   const std::vector<std::string> columns = tableColumns();
   std::optional<io::OutputDirectory> directory;
@@ -209,6 +275,14 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
               << ": A/A0 = " << metrics.contourLengthRatio << ", L_cell = " << metrics.cellLength
               << ", F = " << metrics.tetherForce << ", D12 = " << metrics.D12
               << ", area drift = " << metrics.areaDrift;
+        if (jacobian) {   // stiff time integration: the method in use, the Krylov work so far
+          const timeint::IntegrationStatistics& stats = state.statistics;
+          *log_ << " [" << integrator.activeMethodName(state) << ", " << std::setprecision(3)
+                << (stats.linearSolves > 0
+                      ? static_cast<double>(stats.linearIterations) / static_cast<double>(stats.linearSolves)
+                      : 0.0)
+                << " GMRES it/solve]" << std::setprecision(6);
+        }
         // ETA of the stage from its wall time per unit tau so far (the preparation's end
         // depends on the shape, so it has none).
         if (progress.stage != Stage::Preparation && tau > stageTauStart && tau < endTau) {
@@ -439,6 +513,15 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     } else {
       const timeint::StepReport report = integrator.step(state, tTarget);
       ++progress.steps;
+      if (!report.switchReason.empty()) {   // Auto changed method
+        methodSwitches.push_back({progress.stage == Stage::Preparation ? "preparation"
+                                  : progress.stage == Stage::Tethered ? "tethered"
+                                                                      : "free",
+                                  tauOf(state.time), report.switchReason});
+        if (log_ != nullptr) {
+          *log_ << "tau = " << tauOf(state.time) << ": " << report.switchReason << "\n";
+        }
+      }
       const bool atOutput = state.time == tOut;
       if (atOutput) {
         ++progress.outputIndex;
@@ -499,8 +582,11 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
         progress.evaluations += state.statistics.rhsEvaluations;
         const double proposed = state.proposedStep;
         const long long accepted = state.statistics.acceptedSteps;
-        state = integrator.start(state.time, std::vector<double>(regrid.currentNodes.data(),
-                                                                 regrid.currentNodes.data() + regrid.currentNodes.size()));
+        timeint::IntegrationState regridded = integrator.start(
+          state.time, std::vector<double>(regrid.currentNodes.data(),
+                                          regrid.currentNodes.data() + regrid.currentNodes.size()));
+        keepStiffProgress(state, regridded);
+        state = std::move(regridded);
         state.proposedStep = proposed;
         state.statistics.acceptedSteps = accepted;
         const double interval = tether_.preparationRegridInterval;
@@ -545,7 +631,10 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     progress.evaluations += state.statistics.rhsEvaluations;
     const double proposed = state.proposedStep;
     const long long acceptedBefore = state.statistics.acceptedSteps;
-    state = integrator.start(state.time, std::vector<double>(tethered.data(), tethered.data() + tethered.size()));
+    timeint::IntegrationState fresh =
+      integrator.start(state.time, std::vector<double>(tethered.data(), tethered.data() + tethered.size()));
+    keepStiffProgress(state, fresh);
+    state = std::move(fresh);
     state.proposedStep = proposed;
     state.statistics.acceptedSteps = acceptedBefore;
     result.tethered = true;
@@ -587,7 +676,20 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     if (tether_.enabled) {
       terms.append("tether constraint after a free preparation stage");
     }
+    for (const std::string& term : timeIntegrationTerms) {
+      terms.append(term);
+    }
     summary["terms"] = terms;
+    summary["time_integration"]["method"] = timeint::toString(integrator.settings().method);
+    summary["time_integration"]["in_use"] = integrator.activeMethodName(state);
+    summary["time_integration"]["switches"] = io::JsonValue::array();
+    for (const MethodSwitch& methodSwitch : methodSwitches) {
+      io::JsonValue change = io::JsonValue::object();
+      change["stage"] = methodSwitch.stage;
+      change["tau"] = methodSwitch.tau;
+      change["reason"] = methodSwitch.reason;
+      summary["time_integration"]["switches"].append(change);
+    }
     summary["tethered"] = result.tethered;
     summary["steady"] = result.steady;
     summary["preparation_time"] = result.preparationTime;
@@ -611,6 +713,7 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     summary["timings"]["rhs_evaluations"] = evaluations;
     summary["timings"]["seconds_per_rhs_evaluation_this_process"] =
       wallSeconds / static_cast<double>(std::max(1LL, evaluations - evaluationsAtStart));
+    writeStiffStatistics(state.statistics, jacobian ? jacobian->applications() : 0, summary["timings"]);
     summary["steps"] = result.steps;
     summary["deck"] = core::deckToXml(deck_, false);
     io::writeJsonFile(directory->file("summary.json"), summary);
