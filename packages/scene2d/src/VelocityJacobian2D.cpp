@@ -264,6 +264,13 @@ timeint::LinearSolveReport VelocityJacobian2D::solve(double shift, const std::ve
   return report;
 }
 
+const Eigen::MatrixXf& VelocityJacobian2D::approximateJacobian() const
+{
+  core::require(!preconditioner_.is_null(), "VelocityJacobian2D: 'Solver/Stiff/Preconditioner' = None forms no "
+                "approximate Jacobian");
+  return preconditioner_->jacobian();
+}
+
 std::string VelocityJacobian2D::settingsHint() const
 {
   std::ostringstream hint;

@@ -68,12 +68,9 @@ public:
   std::string describe() const;
   /// Applications of J~ so far (each one single-layer evaluation).
   long long applications() const { return applications_; }
-  /// The dense approximation of J~ the preconditioner factorises (single precision; null
-  /// without a preconditioner).
-  const Eigen::MatrixXf* approximateJacobian() const
-  {
-    return preconditioner_.is_null() ? nullptr : &preconditioner_->jacobian();
-  }
+  /// The dense approximation of J~ the preconditioner factorises (single precision).
+  /// Throws core::Error without a preconditioner.
+  const Eigen::MatrixXf& approximateJacobian() const;
 
 private:
   Eigen::MatrixXf approximateJacobian(const contour::Contour& frozen);
