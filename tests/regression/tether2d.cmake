@@ -85,3 +85,64 @@ add_test(NAME regression_tether2d_ab0.25_tethered_at_sharp_end_above_wall
           area_drift=-1e-3:1e-3)
 set_tests_properties(regression_tether2d_ab0.25_tethered_at_sharp_end_above_wall PROPERTIES
   FIXTURES_REQUIRED tether2d_ab0.25_sharp_end LABELS "mpi;regression")
+
+# Stiff time integration (Time integration/Method ROS34PW2, Auto; docs/stiff-integration.md).
+# Golden numbers of adaptive ROS34PW2 runs at 32 points (tolerance 1e-6: its step choice is
+# deterministic, so only round-off and deliberate changes move them), the same tolerances as
+# the RK4 goldens above: the demo (lambda = 1) and the lambda = 5 deck (the Jacobian without
+# the double layer, GMRES on the second-kind equation in the right-hand side).
+set(_t2stiff --set "Cell/Number of points=32" --set "Tether/Minimum preparation time=0.1"
+             --set "Tether/Maximum preparation time=0.1")
+function(tether2d_stiff_regression name deck end)
+  set(dir ${_t2out}/${name})
+  capsula_add_mpi_command_test(regression_tether2d_${name}
+    COMMAND $<TARGET_FILE:tether2d> ${_t2decks}/${deck} --output ${dir} ${_t2stiff}
+            --set "Time integration/Method=ROS34PW2" --set "Time integration/End time=${end}"
+            --set "Output/Interval=${end}"
+    LABELS regression TIMEOUT 300)
+  set_tests_properties(regression_tether2d_${name} PROPERTIES FIXTURES_SETUP tether2d_${name})
+  add_test(NAME regression_tether2d_${name}_golden COMMAND check_metrics expect ${dir}/metrics.csv - ${ARGN})
+  set_tests_properties(regression_tether2d_${name}_golden PROPERTIES
+    FIXTURES_REQUIRED tether2d_${name} LABELS "mpi;regression")
+endfunction()
+tether2d_stiff_regression(stiff_demo demo.xml 0.05
+  tether_force=0.01110856830801584:1e-8 contour_length_ratio=1.0042056532323058:1e-8
+  cell_length=2.0226621964957974:1e-8 area=3.1412160335603168:1e-8 D12=0.07508438157982893:1e-8
+  leading_edge_velocity=1.1348953415346668:1e-7)
+tether2d_stiff_regression(stiff_ab0.5_lambda5 study/ab0.5_lambda5_ca0.1.xml 0.02
+  tether_force=0.09162954656197586:1e-8 contour_length_ratio=1.0445103122410173:1e-8
+  cell_length=1.9237554623659587:1e-8 area=3.141309738200854:1e-8 D12=0.39921857164791746:1e-8
+  leading_edge_velocity=12.162964302731591:1e-7)
+
+# Auto at Ca = 0.001, tolerance 1e-5 (RKF45 for the first 0.0074 tau of the preparation,
+# ROS34PW2 from there on, the tethered stage included): a run stopped at tau = 0.25 of the
+# tethered stage and continued from its checkpoint, and the same run on 2 ranks, give the
+# uninterrupted run's metrics.csv bit for bit (lambda = 1: the velocities and the Jacobian's
+# products are summed in one order on any rank count, and every rank runs the stage solves
+# on the whole vectors).
+set(_t2auto ${_t2stiff} --set "Flow/Capillary number=0.001" --set "Time integration/Tolerance=1e-5"
+            --set "Time integration/Method=Auto" --set "Output/Interval=0.125")
+add_test(NAME regression_tether2d_auto_whole
+  COMMAND tether2d ${_t2decks}/demo.xml --output ${_t2out}/auto_whole ${_t2auto} --set "Time integration/End time=0.5")
+set_tests_properties(regression_tether2d_auto_whole PROPERTIES
+  FIXTURES_SETUP tether2d_auto LABELS "mpi;regression")
+add_test(NAME regression_tether2d_auto_first_half
+  COMMAND tether2d ${_t2decks}/demo.xml --output ${_t2out}/auto_restarted ${_t2auto} --set "Time integration/End time=0.25")
+set_tests_properties(regression_tether2d_auto_first_half PROPERTIES
+  FIXTURES_SETUP tether2d_auto_half LABELS "mpi;regression")
+add_test(NAME regression_tether2d_auto_restarted
+  COMMAND tether2d ${_t2decks}/demo.xml --restart ${_t2out}/auto_restarted ${_t2auto} --set "Time integration/End time=0.5")
+set_tests_properties(regression_tether2d_auto_restarted PROPERTIES
+  FIXTURES_REQUIRED tether2d_auto_half FIXTURES_SETUP tether2d_auto LABELS "mpi;regression"
+  PASS_REGULAR_EXPRESSION "Restarting from")
+capsula_add_mpi_command_test(regression_tether2d_auto_two_ranks
+  COMMAND $<TARGET_FILE:tether2d> ${_t2decks}/demo.xml --output ${_t2out}/auto_two_ranks ${_t2auto}
+          --set "Time integration/End time=0.5"
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_tether2d_auto_two_ranks PROPERTIES FIXTURES_SETUP tether2d_auto)
+add_test(NAME regression_tether2d_auto_restart_agrees
+  COMMAND check_metrics same ${_t2out}/auto_whole/metrics.csv ${_t2out}/auto_restarted/metrics.csv 0)
+add_test(NAME regression_tether2d_auto_ranks_agree
+  COMMAND check_metrics same ${_t2out}/auto_whole/metrics.csv ${_t2out}/auto_two_ranks/metrics.csv 0)
+set_tests_properties(regression_tether2d_auto_restart_agrees regression_tether2d_auto_ranks_agree PROPERTIES
+  FIXTURES_REQUIRED tether2d_auto LABELS "mpi;regression")

@@ -147,12 +147,27 @@ private:
     core::require<core::InputError>(contour.numberOfNodes() == distribution_.numNodes(), "the contour has ",
                                     contour.numberOfNodes(), " nodes; the velocity evaluator was built for ",
                                     distribution_.numNodes());
+    // The geometry of the last call again (a stiff Jacobian applies one frozen contour many
+    // times): its pair classification and double-layer weights still hold.
+    if (geometrySet_ && sameGeometry(potentials_.contour(), contour)) {
+      return;
+    }
     potentials_.update(contour, distribution_.firstOwnedNode(), distribution_.numOwnedNodes());
+    geometrySet_ = true;
+  }
+
+  static bool sameGeometry(const contour::Contour& a, const contour::Contour& b)
+  {
+    const contour::ContourOptions& p = a.options();
+    const contour::ContourOptions& q = b.options();
+    return p.closure == q.closure && p.parametrisation == q.parametrisation && p.tetherEnds == q.tetherEnds &&
+           p.arcLengthPoints == q.arcLengthPoints && a.nodes() == b.nodes();
   }
 
   NodeDistribution distribution_;
   LayerPotentials2D<Kernel> potentials_;
   SolverParameters solver_;
+  bool geometrySet_ = false;
 };
 
 } // namespace

@@ -10,10 +10,13 @@
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/operators/ContourDiscretisation2D.hpp>
 #include <capsula/scene2d/NodesInFluid2D.hpp>
+#include <capsula/scene2d/VelocityJacobian2D.hpp>
 #include <capsula/timeint/TimeIntegrationParameters.hpp>
 #include <capsula/timeint/TimeIntegrator.hpp>
 
+#include <memory>
 #include <ostream>
+#include <vector>
 
 namespace capsula::run {
 
@@ -59,6 +62,40 @@ TetherRun2D::TetherRun2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, con
                                   "held above it.");
 }
 
+namespace {
+
+// Method Auto's switches: a log line each and summary.json's "time integration" (those of
+// this process, with the stage and its tau).
+class MethodSwitchLog2D final : public timeint::IntegrationObserver {
+public:
+  MethodSwitchLog2D(const TetherStages2D& stages, std::ostream* log) : stages_(stages), log_(log) {}
+
+  timeint::ObserverVerdict afterStep(timeint::IntegrationState& state, const timeint::StepReport& report,
+                                     bool) override
+  {
+    if (!report.switchReason.empty()) {
+      const double tau = stages_.tau(state.time);
+      io::JsonValue change = io::JsonValue::object();
+      change["stage"] = stages_.preparing() ? "preparation" : stages_.tethered() ? "tethered" : "free";
+      change["tau"] = tau;
+      change["reason"] = report.switchReason;
+      switches_.push_back(change);
+      if (log_ != nullptr) {
+        *log_ << "tau = " << tau << ": " << report.switchReason << "\n";
+      }
+    }
+    return timeint::ObserverVerdict::Continue;
+  }
+  const std::vector<io::JsonValue>& switches() const { return switches_; }
+
+private:
+  const TetherStages2D& stages_;
+  std::ostream* log_;
+  std::vector<io::JsonValue> switches_;
+};
+
+} // namespace
+
 TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
                                    const std::optional<std::string>& restartDirectory)
 {
@@ -71,6 +108,13 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   // attempt (NodesInFluid2D.hpp), not a failure of the run.
   if (model_.flow().wall) {
     integrator.setDomainCheck(scene2d::requireNodesInFluid);
+  }
+  // The stiff methods' Jacobian (VelocityJacobian2D.hpp) reads the model at every
+  // linearisation, so it follows the tethering and the regrids as it is.
+  std::shared_ptr<scene2d::VelocityJacobian2D> jacobian;
+  if (timeint::needsLinearisedSystem(settings.method)) {
+    jacobian = std::make_shared<scene2d::VelocityJacobian2D>(model_, comm_, deck_);
+    integrator.setLinearisedSystem(jacobian);
   }
 
   RunOutputs files(comm_, outputDirectory, restartDirectory);
@@ -104,6 +148,10 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   if (tether_.enabled) {
     terms.emplace_back("tether constraint after a free preparation stage");
   }
+  terms.push_back(timeint::describeTimeIntegration(integrator.settings()));
+  if (jacobian) {
+    terms.push_back(jacobian->describe());
+  }
   summary.setTerms(terms);
   summary.begin(state.statistics, restartDirectory.has_value());
   if (log_ != nullptr) {
@@ -111,13 +159,20 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   }
 
   TetherRunResult2D result;
+  MethodSwitchLog2D switches(stages, log_);
   const auto summaryJson = [&](const std::string& status, const std::string& note) {
-    return summary.json(status, note, result.finalTime, state.statistics,
-                        [&](io::JsonValue& json) { addResults(json, result); });
+    return summary.json(status, note, result.finalTime, state.statistics, [&](io::JsonValue& json) {
+      json["time integration"]["method"] = timeint::toString(integrator.settings().method);
+      json["time integration"]["in use"] = integrator.activeMethodName(state);
+      for (const io::JsonValue& change : switches.switches()) {
+        json["time integration"]["switches"].append(change);
+      }
+      addResults(json, result);
+    });
   };
   try {
     if (stages.preparing()) {
-      integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs});
+      integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs, &switches});
       // The preparation is over: its last state is an output, then the cell is tethered.
       if (stages.stoppedAtOutputTime()) {
         ++state.nextOutput;
@@ -126,7 +181,7 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
       stages.tether();
       outputs.beginStage();
     }
-    integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs});
+    integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs, &switches});
     outputs.writeCheckpoint();
   } catch (const std::exception& e) {
     result = outputs.result();

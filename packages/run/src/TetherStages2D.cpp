@@ -63,6 +63,9 @@ void TetherStages2D::restartWith(const double* y, std::size_t n, bool newStage)
   timeint::IntegrationState fresh = integrator_.start(state_.time, std::vector<double>(y, y + n));
   fresh.proposedStep = state_.proposedStep;
   fresh.statistics = state_.statistics;
+  // The stiff methods: Auto's choice and its trials carry over (the membrane is the same).
+  fresh.stiffActive = state_.stiffActive;
+  fresh.stiffTrialsFailed = state_.stiffTrialsFailed;
   if (!newStage) {   // the stage's outputs go on
     fresh.outputOrigin = state_.outputOrigin;
     fresh.nextOutput = state_.nextOutput;

@@ -2,6 +2,7 @@
 
 #include "capsula/scene2d/CellContour2D.hpp"
 #include "capsula/scene2d/FlowModel2D.hpp"
+#include "capsula/scene2d/StiffSolverParameters2D.hpp"
 #include "capsula/scene2d/TetherProcedure2D.hpp"
 
 #include <capsula/core/ParameterDeclaration.hpp>
@@ -19,8 +20,10 @@ void declareModelParameters2D(Teuchos::ParameterList& valid)
   declareTetherParameters2D(declareSublist(valid, "Tether", "The tether procedure (thesis Section 4.1)."));
   operators::declareContourDiscretisation2D(
     declareSublist(valid, "Discretisation", "Quadrature of the contour integrals (thesis App. A.6)."));
-  operators::declareSolverParameters(
-    declareSublist(valid, "Solver", "GMRES for the viscosity-ratio equation (thesis App. A.7)."));
+  auto& solver = declareSublist(valid, "Solver", "GMRES for the viscosity-ratio equation (thesis App. A.7).");
+  operators::declareSolverParameters(solver);
+  declareStiffSolverParameters2D(declareSublist(
+    solver, "Stiff", "The linear solves of the stiff time integrators (Time integration/Method ROS34PW2, ROS2, Auto)."));
 }
 
 } // namespace capsula::scene2d

@@ -117,9 +117,11 @@ std::string describeTimeIntegration(const TimeIntegrationSettings& s)
          << s.tolerance << "; stage solves to " << s.linearTolerance << " x tolerance";
     return line.str();
   case Method::Auto:
-    line << ": RKF45 with the stability limit, ROS34PW2 while the limit holds RKF45 more than "
-         << s.switchMargin << " x (the cost of a stiff step over that of an explicit one) below what its "
-         << "error estimate allows, for " << s.switchSteps << " steps; tolerance " << s.tolerance;
+    line << ": RKF45 with the stability limit; after " << s.switchSteps
+         << " steps held by the limit, ROS34PW2 if a trial step " << s.switchMargin
+         << " x (the cost of a stiff step over that of an explicit one) times the limit meets half the tolerance, "
+         << "and back when RKF45 advances " << s.switchMargin << " x further per operator application; tolerance "
+         << s.tolerance;
     return line.str();
   case Method::RKF45:
   case Method::DormandPrince45:

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -159,7 +160,10 @@ namespace {
 
 /// Runs a deck to tau = 0.5 of the tethered stage, and again in two parts with a restart at
 /// 0.25, and expects the same run bit for bit.
-void expectRestartReproducesTheRun(const std::vector<std::string>& extra, const std::string& name)
+// `mustContain`: text the uninterrupted run's summary.json must hold (a check that the
+// run went where the test means it to).
+void expectRestartReproducesTheRun(const std::vector<std::string>& extra, const std::string& name,
+                                   const std::string& mustContain = "")
 {
   // The first part ends at tau = 0.25 of the tethered stage, an output time of the whole
   // run too: outputs at k 0.125 are exact binary numbers, so both runs step onto the same
@@ -198,6 +202,11 @@ void expectRestartReproducesTheRun(const std::vector<std::string>& extra, const 
   for (std::size_t r = 0; r < a.rows.size(); ++r) {
     EXPECT_EQ(a.rows[r], b.rows[r]) << "row " << r;
   }
+  if (!mustContain.empty()) {
+    std::ifstream summary(whole + "/summary.json");
+    const std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find(mustContain), std::string::npos) << mustContain;
+  }
   std::filesystem::remove_all(whole);
   std::filesystem::remove_all(first);
 }
@@ -222,6 +231,26 @@ TEST(TetherRun2D, RestartAfterPreparationRegridsReproducesTheUninterruptedRun)
   // are both in the checkpoint, and the next regrid time too.
   expectRestartReproducesTheRun({"Tether/Regrid at tethering=true", "Tether/Preparation regrid interval=0.05"},
                                 "preparation_regrid");
+}
+
+TEST(TetherRun2D, StiffRestartReproducesTheUninterruptedRun)
+{
+  // ROS34PW2: the Jacobian is linearised afresh at every step, so the checkpointed state
+  // is all a resumed run needs; with the regrids the Jacobian follows the new markers.
+  expectRestartReproducesTheRun({"Time integration/Method=ROS34PW2"}, "stiff");
+  expectRestartReproducesTheRun({"Time integration/Method=ROS34PW2", "Tether/Regrid at tethering=true",
+                                 "Tether/Preparation regrid interval=0.05"},
+                                "stiff_regrid");
+}
+
+TEST(TetherRun2D, AutoRestartReproducesTheUninterruptedRun)
+{
+  // Auto at Ca = 0.0005, where the stability limit holds RKF45 and ROS34PW2's trial steps
+  // meet half the tolerance (it switches three times: in the preparation, back to RKF45 at
+  // tethering, and again): the method in use and Auto's counters are part of the checkpoint
+  // (IntegrationState).
+  expectRestartReproducesTheRun({"Time integration/Method=Auto", "Flow/Capillary number=0.0005"}, "auto",
+                                "switched to ROS34PW2");
 }
 
 TEST(TetherRun2D, PreparationRegridsNeedTheRegridAtTethering)

@@ -1,0 +1,38 @@
+#pragma once
+// The tether2d deck's "Solver/Stiff" sublist: the linear solves of the stiff time
+// integrators (Time integration/Method ROS34PW2, ROS2, Auto), read by VelocityJacobian2D.
+//
+//   <ParameterList name="Stiff">
+//     <Parameter name="Maximum iterations" type="int" value="200"/>
+//     <Parameter name="Restart" type="int" value="60"/>
+//     <Parameter name="Preconditioner" type="string" value="Point single layer"/>
+//     <Parameter name="Mobility factor" type="double" value="1"/>
+//     <Parameter name="Gauss-Legendre points" type="int" value="3"/>
+//   </ParameterList>
+#include <Teuchos_ParameterList.hpp>
+
+#include <string>
+
+namespace capsula::scene2d {
+
+/// What stands for the single layer in the stage preconditioner (StagePreconditioner2D.hpp).
+enum class StiffPreconditioner2D { PointSingleLayer, LocalMobility, None };
+
+struct StiffSolverSettings2D {
+  int maximumIterations = 200;  ///< GMRES iterations of one stage solve before it counts as failed
+  int restart = 60;             ///< Krylov vectors kept (Belos "Num Blocks")
+  StiffPreconditioner2D preconditioner = StiffPreconditioner2D::PointSingleLayer;
+  double mobilityFactor = 1.0;  ///< beta of the local mobility c beta l_i (StagePreconditioner2D.hpp)
+  int gaussLegendrePoints = 3;  ///< N_GL of J~'s single layer (0: Discretisation/Gauss-Legendre points)
+};
+
+/// Declares the keys of the "Stiff" sublist in `stiff`.
+void declareStiffSolverParameters2D(Teuchos::ParameterList& stiff);
+
+/// Settings from a validated "Stiff" sublist.
+StiffSolverSettings2D readStiffSolverSettings2D(const Teuchos::ParameterList& stiff);
+
+/// The deck spelling of a preconditioner ("Point single layer", "Local mobility", "None").
+std::string toString(StiffPreconditioner2D preconditioner);
+
+} // namespace capsula::scene2d

@@ -1,0 +1,308 @@
+#include "capsula/scene2d/VelocityJacobian2D.hpp"
+
+#include <capsula/core/Error.hpp>
+#include <capsula/core/Timers.hpp>
+#include <capsula/operators/ContourDiscretisation2D.hpp>
+#include <capsula/operators/GmresSolve.hpp>
+#include <capsula/operators/PointSingleLayer2D.hpp>
+
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace capsula::scene2d {
+
+namespace {
+
+// J~ v by fourth-order central differences of the load: e |v|_max = kDirectionalStep l_min
+// (see the header).
+constexpr double kDirectionalStep = 1e-3;
+
+// The preconditioner's load Jacobian by forward differences, e = kColumnStep l_min: its
+// error, 1e-6 relative, is far below what a preconditioner needs.
+constexpr double kColumnStep = 1e-6;
+
+// Nodes perturbed together for the preconditioner's load Jacobian are kColumnSpacing apart
+// along the contour, and each node's response is charged to the nearest perturbed node
+// (2 kColumnSpacing membrane evaluations in all, instead of 2N). The load reaches other
+// nodes through interpolating splines: the response falls from 110 at the node to 1.4,
+// 1e-3 and 1e-7 six, twelve and twenty nodes away (64 points, Ca = 0.01). Twelve nodes,
+// the nearest another perturbed node can be, keep K to 1e-5 of its entries; that matters
+// on the smooth modes, where K v is a near-cancellation of those entries (every rigid
+// motion has K v = 0): half the spacing gave O(1) errors there.
+constexpr int kColumnSpacing = 24;
+
+} // namespace
+
+VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                                       const Teuchos::ParameterList& deck)
+  : model_(model),
+    settings_(readStiffSolverSettings2D(deck.sublist("Solver").sublist("Stiff"))),
+    lineariseTimer_(core::timer("Stiff Jacobian 2D: linearise")),
+    applyTimer_(core::timer("Stiff Jacobian 2D: apply")),
+    preconditionerTimer_(core::timer("Stiff Jacobian 2D: preconditioner"))
+{
+  operators::ContourDiscretisation2D discretisation = model.discretisation();
+  if (settings_.gaussLegendrePoints > 0) {
+    discretisation.gaussLegendrePoints = settings_.gaussLegendrePoints;
+  }
+  const int n = model.numberOfNodes();
+  velocity_ = operators::makeInterfaceVelocity2D(model.flow().wall, comm, n, discretisation,
+                                                 operators::readSolverParameters(deck.sublist("Solver")));
+  map_ = Teuchos::rcp(
+    new Tpetra::Map<>(2 * static_cast<Tpetra::global_size_t>(n), 0, comm, Tpetra::LocallyReplicated));
+  stage_ = Teuchos::rcp(new operators::StageOperator(map_, [this](const double* x, double* y) { apply(x, y); }));
+  if (settings_.preconditioner != StiffPreconditioner2D::None) {
+    preconditioner_ = Teuchos::rcp(new StagePreconditioner2D(map_));
+  }
+  tetherEnabled_ = deck.sublist("Tether").get<bool>("Enabled");
+  const double lambda = model.flow().conditions.viscosityRatio;
+  coefficient_ = 1.0 / (2.0 * M_PI * (1.0 + lambda) * model.flow().conditions.capillaryNumber);
+  flowFactor_ = 2.0 / (1.0 + lambda);
+  gmres_.restart = settings_.restart;
+  gmres_.maximumIterations = settings_.maximumIterations;
+}
+
+void VelocityJacobian2D::linearise(double /*t*/, const std::vector<double>& y)
+{
+  Teuchos::TimeMonitor guard(*lineariseTimer_);
+  frozenState_ = y;
+  frozen_.emplace(model_.contour(y));
+  fixed_ = model_.tethered() ? std::vector<int>{0} : std::vector<int>{};
+  shortestSegment_ = frozen_->segmentLength(0);
+  for (int k = 1; k < frozen_->numberOfSegments(); ++k) {
+    shortestSegment_ = std::min(shortestSegment_, frozen_->segmentLength(k));
+  }
+  if (!preconditioner_.is_null()) {
+    preconditioner_->setJacobian(approximateJacobian(*frozen_));
+  }
+}
+
+Eigen::MatrixXf VelocityJacobian2D::approximateJacobian(const contour::Contour& frozen)
+{
+  const int n = model_.numberOfNodes();
+  const Eigen::Matrix2Xd base = model_.membrane(frozen).load();
+
+  // K = d(nodal load) / d(node positions). Group g perturbs the nodes p_m + g, p_m =
+  // floor(m N / M) spread evenly (M = N / kColumnSpacing of them, so that they lie at least
+  // kColumnSpacing apart): ceil(N / M) groups cover every node once. A node's response is
+  // charged to the group's member within kColumnSpacing / 2 of it (none for the odd node
+  // midway in a wider gap: its response is below 1e-5 of the local one).
+  std::vector<Eigen::Triplet<float>> entries;
+  const double step = kColumnStep * shortestSegment_;
+  const int members = std::max(1, n / kColumnSpacing);
+  std::vector<int> start(static_cast<std::size_t>(members) + 1);
+  for (int m = 0; m <= members; ++m) {
+    start[static_cast<std::size_t>(m)] = static_cast<int>((static_cast<long long>(m) * n) / members);
+  }
+  int groups = 0;
+  for (int m = 0; m < members; ++m) {
+    groups = std::max(groups, start[static_cast<std::size_t>(m) + 1] - start[static_cast<std::size_t>(m)]);
+  }
+  const int reach = members > 1 ? kColumnSpacing / 2 : n;
+  std::vector<int> group, owner(static_cast<std::size_t>(n));
+  std::vector<double> probe;
+  for (int g = 0; g < groups; ++g) {
+    group.clear();
+    for (int m = 0; m < members; ++m) {
+      if (start[static_cast<std::size_t>(m)] + g < start[static_cast<std::size_t>(m) + 1]) {
+        group.push_back(start[static_cast<std::size_t>(m)] + g);
+      }
+    }
+    std::fill(owner.begin(), owner.end(), -1);
+    for (int d = 0; d <= std::min(reach, n / 2); ++d) {
+      for (const int j : group) {
+        for (const int i : {(j + d) % n, (j - d + n) % n}) {
+          if (owner[static_cast<std::size_t>(i)] < 0) {
+            owner[static_cast<std::size_t>(i)] = j;
+          }
+        }
+      }
+    }
+    for (int b = 0; b < 2; ++b) {
+      probe = frozenState_;
+      for (const int j : group) {
+        probe[2 * static_cast<std::size_t>(j) + static_cast<std::size_t>(b)] += step;
+      }
+      const Eigen::Matrix2Xd load = model_.membrane(model_.contour(probe)).load();
+      for (int i = 0; i < n; ++i) {
+        const int j = owner[static_cast<std::size_t>(i)];
+        if (j < 0) {
+          continue;
+        }
+        for (int a = 0; a < 2; ++a) {
+          const double value = (load(a, i) - base(a, i)) / step;
+          if (value != 0.0) {
+            entries.emplace_back(2 * i + a, 2 * j + b, static_cast<float>(value));
+          }
+        }
+      }
+    }
+  }
+  Eigen::SparseMatrix<float> K(2 * n, 2 * n);
+  K.setFromTriplets(entries.begin(), entries.end());
+
+  // A = -c M K + 2/(1 + lambda) grad u_inf, the tethered rows zero.
+  Eigen::MatrixXf A;
+  if (settings_.preconditioner == StiffPreconditioner2D::PointSingleLayer) {
+    // M K column by column: K's columns hold ~2 kColumnSpacing entries each.
+    const Eigen::MatrixXf M = operators::pointSingleLayer2D(frozen, model_.flow().wall).cast<float>();
+    A.setZero(2 * n, 2 * n);
+    const auto c = static_cast<float>(coefficient_);
+    for (Eigen::Index column = 0; column < K.outerSize(); ++column) {
+      for (Eigen::SparseMatrix<float>::InnerIterator entry(K, column); entry; ++entry) {
+        A.col(column).noalias() -= (c * entry.value()) * M.col(entry.row());
+      }
+    }
+  } else {
+    Eigen::VectorXf mobility(2 * n);
+    for (int i = 0; i < n; ++i) {
+      const double share = 0.5 * (frozen.segmentLength((i + n - 1) % n) + frozen.segmentLength(i));
+      mobility(2 * i) = mobility(2 * i + 1) = static_cast<float>(coefficient_ * settings_.mobilityFactor * share);
+    }
+    A = -(mobility.asDiagonal() * K);
+  }
+  const Eigen::Matrix2f gradient = (flowFactor_ * model_.flow().conditions.background.gradient).cast<float>();
+  for (int i = 0; i < n; ++i) {
+    A.block<2, 2>(2 * i, 2 * i) += gradient;
+  }
+  for (const int i : fixed_) {
+    A.row(2 * i).setZero();
+    A.row(2 * i + 1).setZero();
+  }
+  return A;
+}
+
+void VelocityJacobian2D::apply(const double* x, double* y)
+{
+  Teuchos::TimeMonitor guard(*applyTimer_);
+  ++applications_;
+  const std::size_t n = frozenState_.size();
+  double largest = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    largest = std::max(largest, std::abs(x[k]));
+  }
+  if (largest == 0.0) {
+    std::fill(y, y + n, 0.0);
+    return;
+  }
+  // Fourth-order central differences of the load at the frozen contour's points:
+  // K v = [8 (f(e) - f(-e)) - (f(2e) - f(-2e))] / 12e, f(s) = Delta f(x_n + s v).
+  const double e = kDirectionalStep * shortestSegment_ / largest;
+  std::vector<elasticity::MembraneState2D> states;
+  states.reserve(4);
+  probe_.resize(n);
+  for (const double multiple : {1.0, -1.0, 2.0, -2.0}) {
+    for (std::size_t k = 0; k < n; ++k) {
+      probe_[k] = frozenState_[k] + multiple * e * x[k];
+    }
+    states.push_back(model_.membrane(model_.contour(probe_)));
+  }
+  const double scale = 1.0 / (12.0 * e);
+  const operators::ContourLoad2D derivative = [&](const contour::ContourPoint&, int segment, double t) {
+    return Eigen::Vector2d(scale * (8.0 * (states[0].loadAt(segment, t) - states[1].loadAt(segment, t)) -
+                                    (states[2].loadAt(segment, t) - states[3].loadAt(segment, t))));
+  };
+  const std::vector<double> single = velocity_->singleLayer(*frozen_, derivative);
+  const Eigen::Matrix2d& gradient = model_.flow().conditions.background.gradient;
+  for (std::size_t g = 0; g < n / 2; ++g) {
+    for (int i = 0; i < 2; ++i) {
+      const double flow = gradient(i, 0) * x[2 * g] + gradient(i, 1) * x[2 * g + 1];
+      y[2 * g + i] = -coefficient_ * single[2 * g + i] + flowFactor_ * flow;
+    }
+  }
+  for (const int i : fixed_) {
+    y[2 * i] = y[2 * i + 1] = 0.0;
+  }
+}
+
+timeint::LinearSolveReport VelocityJacobian2D::solve(double shift, const std::vector<double>& r,
+                                                     std::vector<double>& x, double residualRms)
+{
+  timeint::LinearSolveReport report;
+  const std::size_t n = r.size();
+  double norm = 0.0;
+  for (const double v : r) {
+    norm += v * v;
+  }
+  norm = std::sqrt(norm);
+  const double target = residualRms * std::sqrt(static_cast<double>(n));
+  if (norm <= target) {   // x = 0 is already close enough
+    x.assign(n, 0.0);
+    report.converged = true;
+    report.residualRms = norm / std::sqrt(static_cast<double>(n));
+    return report;
+  }
+  stage_->setShift(shift);
+  if (!preconditioner_.is_null()) {
+    Teuchos::TimeMonitor guard(*preconditionerTimer_);
+    preconditioner_->setShift(shift);
+  }
+  using MV = Tpetra::MultiVector<double>;
+  auto b = Teuchos::rcp(new MV(map_, 1));
+  auto solution = Teuchos::rcp(new MV(map_, 1));
+  {
+    auto bData = b->getDataNonConst(0);
+    auto xData = solution->getDataNonConst(0);
+    for (std::size_t k = 0; k < n; ++k) {
+      bData[k] = r[k];
+      xData[k] = x[k];
+    }
+  }
+  operators::SolverParameters parameters = gmres_;
+  parameters.tolerance = std::max(target / norm, 1e-14);
+  const bool zeroGuess = std::all_of(x.begin(), x.end(), [](double v) { return v == 0.0; });
+  const operators::GmresResult result =
+    operators::solveWithGmres(stage_, preconditioner_, b, solution, parameters, zeroGuess);
+  const auto xData = solution->getData(0);
+  x.assign(xData.begin(), xData.end());
+  report.converged = result.converged;
+  report.iterations = result.iterations;
+  report.residualRms = result.residual * norm / std::sqrt(static_cast<double>(n));
+  return report;
+}
+
+const Eigen::MatrixXf& VelocityJacobian2D::approximateJacobian() const
+{
+  core::require(!preconditioner_.is_null(), "VelocityJacobian2D: 'Solver/Stiff/Preconditioner' = None forms no "
+                "approximate Jacobian");
+  return preconditioner_->jacobian();
+}
+
+std::string VelocityJacobian2D::settingsHint() const
+{
+  std::ostringstream hint;
+  hint << "(raise 'Solver/Stiff/Maximum iterations' = " << settings_.maximumIterations
+       << " or 'Solver/Stiff/Restart' = " << settings_.restart
+       << (preconditioner_.is_null() ? ", or set 'Solver/Stiff/Preconditioner' to 'Point single layer'" : "") << ")";
+  return hint.str();
+}
+
+std::string VelocityJacobian2D::describe() const
+{
+  std::ostringstream line;
+  line << "stiff Jacobian: single layer of the membrane load's directional derivative, frozen each step";
+  if (model_.flow().conditions.viscosityRatio != 1.0) {
+    line << " (double layer left out)";
+  }
+  if (tetherEnabled_) {
+    line << ", the tethered node's rows zero once tethered";
+  }
+  line << "; GMRES (restart " << settings_.restart << ", at most " << settings_.maximumIterations << " iterations)";
+  switch (settings_.preconditioner) {
+  case StiffPreconditioner2D::PointSingleLayer:
+    line << " with the point-single-layer preconditioner (dense LU)";
+    break;
+  case StiffPreconditioner2D::LocalMobility:
+    line << " with the local-mobility preconditioner (beta = " << settings_.mobilityFactor << ", dense LU)";
+    break;
+  case StiffPreconditioner2D::None:
+    line << " without preconditioner";
+    break;
+  }
+  return line.str();
+}
+
+} // namespace capsula::scene2d
