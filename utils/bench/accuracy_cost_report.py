@@ -317,7 +317,10 @@ def write(report, results, args, seconds):
            "integration time per right-hand side "
            "(3D: membrane loads + boundary-integral velocity; 2D: the app's own figure); s / step = wall time of the "
            "run / accepted steps (setup and outputs included); peak MB = largest resident set of any process of the "
-           "run; load = 1-minute load average when the run started.", ""]
+           "run; load = 1-minute load average when the run started.", "",
+           "Where the membrane is stiff (low Ca, large area dilation) the explicit time step is set by stability, "
+           "not by the tolerance: the linearly implicit methods and what they save are measured in "
+           "docs/stiff-integration-results.md (method and keys: docs/stiff-integration.md).", ""]
     if args.quick:
         out += ["QUICK MODE: tiny meshes and short end times; the numbers check the pipeline, not the method.", ""]
     for name, (rows, meta) in results.items():
