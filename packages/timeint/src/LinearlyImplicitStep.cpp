@@ -47,6 +47,64 @@ void combine(const std::vector<double>& y, const double* w, const std::vector<st
 
 } // namespace
 
+// The stages of one attempt of size h ending at tNew: the increments u_1..u_s and, if every
+// solve converged, newState_. Returns why a solve did not converge ("" if all did); throws
+// StateOutsideDomain for a stage state or result outside the model.
+std::string TimeIntegrator::solveStages(IntegrationState& state, double h, double tNew, int& iterations)
+{
+  const RosenbrockTableau& R = rosenbrock_;
+  const std::size_t n = state.y.size();
+  const int s = R.stages;
+  IntegrationStatistics& stats = state.statistics;
+  const double shift = h * R.gamma;
+  const double residualTarget = settings_.linearTolerance * settings_.tolerance;
+  for (int i = 0; i < s; ++i) {
+    const std::vector<double>* slope = &slopes_[0];
+    if (i > 0) {
+      combine(state.y, &R.a[static_cast<std::size_t>(i * s)], increments_, i, stageState_);
+      if (domainCheck_) {
+        domainCheck_(stageState_);
+      }
+      const double ti = state.time + R.stageTime[static_cast<std::size_t>(i)] * h;
+      evaluate(ti, stageState_, probeSlope_, state, h, i);
+      slope = &probeSlope_;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      double coupling = 0.0;
+      for (int j = 0; j < i; ++j) {
+        coupling += R.cCoefficient(i, j) * increments_[static_cast<std::size_t>(j)][k];
+      }
+      stageRhs_[k] = shift * (*slope)[k] + R.gamma * coupling;
+    }
+    std::vector<double>& u = increments_[static_cast<std::size_t>(i)];
+    u.assign(n, 0.0);
+    const LinearSolveReport solved = system_->solve(shift, stageRhs_, u, residualTarget);
+    ++stats.linearSolves;
+    stats.linearIterations += solved.iterations;
+    stats.largestLinearIterations = std::max<std::int64_t>(stats.largestLinearIterations, solved.iterations);
+    iterations += solved.iterations;
+    if (!solved.converged) {
+      ++stats.failedLinearSolves;
+      std::ostringstream why;
+      why << "the solve of stage " << i + 1 << " stopped after " << solved.iterations
+          << " iterations at an RMS residual of " << solved.residualRms << " (target " << residualTarget << ")";
+      return why.str();
+    }
+  }
+  combine(state.y, R.m.data(), increments_, s, newState_);
+  const std::size_t bad = firstNonFinite(newState_.data(), n);
+  if (bad != n) {
+    throw core::NumericalError(core::message(
+      "Time integration failed: the new state is not finite at t = ", shown(tNew), " (entry ", bad, " of ", n, "; ",
+      R.name, " step from t = ", shown(state.time), " with dt = ", shown(h), "). The state at t = ", shown(state.time),
+      " is the last accepted one."));
+  }
+  if (domainCheck_) {
+    domainCheck_(newState_);
+  }
+  return "";
+}
+
 StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, double tStop, double trialStep)
 {
   const bool trial = trialStep > 0.0;
@@ -72,7 +130,7 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
 
   StepReport report;
   report.stiff = true;
-  std::vector<double> m(R.m), difference(static_cast<std::size_t>(s));
+  std::vector<double> difference(static_cast<std::size_t>(s));
   for (int i = 0; i < s; ++i) {
     difference[static_cast<std::size_t>(i)] = R.m[static_cast<std::size_t>(i)] - R.mEmbedded[static_cast<std::size_t>(i)];
   }
@@ -87,59 +145,11 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
       tNew = tStop;
     }
     report.shortened = h < proposed;
-    const double shift = h * R.gamma;
-    const double residualTarget = settings_.linearTolerance * settings_.tolerance;
 
     std::string outside, unsolved;
     int iterations = 0;
     try {
-      for (int i = 0; i < s; ++i) {
-        const std::vector<double>* slope = &slopes_[0];
-        if (i > 0) {
-          combine(state.y, &R.a[static_cast<std::size_t>(i * s)], increments_, i, stageState_);
-          if (domainCheck_) {
-            domainCheck_(stageState_);
-          }
-          const double ti = state.time + R.stageTime[static_cast<std::size_t>(i)] * h;
-          evaluate(ti, stageState_, probeSlope_, state, h, i);
-          slope = &probeSlope_;
-        }
-        for (std::size_t k = 0; k < n; ++k) {
-          double coupling = 0.0;
-          for (int j = 0; j < i; ++j) {
-            coupling += R.cCoefficient(i, j) * increments_[static_cast<std::size_t>(j)][k];
-          }
-          stageRhs_[k] = shift * (*slope)[k] + R.gamma * coupling;
-        }
-        std::vector<double>& u = increments_[static_cast<std::size_t>(i)];
-        u.assign(n, 0.0);
-        const LinearSolveReport solved = system_->solve(shift, stageRhs_, u, residualTarget);
-        ++stats.linearSolves;
-        stats.linearIterations += solved.iterations;
-        stats.largestLinearIterations = std::max<std::int64_t>(stats.largestLinearIterations, solved.iterations);
-        iterations += solved.iterations;
-        if (!solved.converged) {
-          ++stats.failedLinearSolves;
-          std::ostringstream why;
-          why << "the solve of stage " << i + 1 << " stopped after " << solved.iterations
-              << " iterations at an RMS residual of " << solved.residualRms << " (target " << residualTarget << ")";
-          unsolved = why.str();
-          break;
-        }
-      }
-      if (unsolved.empty()) {
-        combine(state.y, m.data(), increments_, s, newState_);
-        const std::size_t bad = firstNonFinite(newState_.data(), n);
-        if (bad != n) {
-          throw core::NumericalError(core::message(
-            "Time integration failed: the new state is not finite at t = ", shown(tNew), " (entry ", bad, " of ", n,
-            "; ", R.name, " step from t = ", shown(state.time), " with dt = ", shown(h), "). The state at t = ",
-            shown(state.time), " is the last accepted one."));
-        }
-        if (domainCheck_) {
-          domainCheck_(newState_);
-        }
-      }
+      unsolved = solveStages(state, h, tNew, iterations);
     } catch (const StateOutsideDomain& e) {
       outside = e.what();
     }

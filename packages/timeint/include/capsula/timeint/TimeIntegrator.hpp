@@ -241,6 +241,7 @@ private:
   // attempt of that size, which on failure leaves the state as it was and reports a step
   // size of 0.
   StepReport attemptLinearlyImplicit(IntegrationState& state, double tStop, double trialStep = 0.0);
+  std::string solveStages(IntegrationState& state, double h, double tNew, int& iterations);
   StopReason integrateWith(IntegrationState& state, const OutputSchedule& schedule,
                            const std::vector<IntegrationObserver*>& observers);
   void estimateStabilityStep(IntegrationState& state);
