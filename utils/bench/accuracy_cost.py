@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """What accuracy costs in time: sweeps of an app deck over lists of knobs, the error of
-each run against a reference, its cost, and the report docs/accuracy-cost.md.
+each run against a reference, its cost, and the report docs/accuracy-cost.md. (Length: the
+sweep, its error measures, plots and the study list all read and write the same run records.)
 
   accuracy_cost.py sweep --app BUILD/apps/cell3d/cell3d --deck DECK --out DIR \\
       --knob "Cells/Cell 0/Mesh level=1,2,3" --knob "Discretisation/Quadrature points=3,7" \\

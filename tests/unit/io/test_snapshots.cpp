@@ -3,7 +3,9 @@
 // values exact; the mesh written once per version; the XDMF is well-formed XML whose every
 // data reference names an existing dataset of the stated shape; restart drops the
 // snapshots written after the checkpoint and continues into the same file; a run that
-// stops mid-way leaves a readable file.
+// stops mid-way leaves a readable file. (Length: the writer, its XDMF index and their
+// crash recovery share one temporary-file fixture and the raw HDF5 readers below.)
+#include "capsula/testing/Constants.hpp"
 #include "TemporaryDirectory.hpp"
 
 #include "capsula/core/Error.hpp"
@@ -25,6 +27,8 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+using capsula::testing::pi;
 
 namespace io = capsula::io;
 namespace core = capsula::core;
@@ -64,7 +68,6 @@ io::SnapshotBlock contour()
   b.name = "contour";
   b.topology = io::Topology::Polylines;
   b.dimension = 2;
-  const double pi = std::acos(-1.0);
   for (int i = 0; i < 5; ++i) {
     b.positions.insert(b.positions.end(), {std::cos(0.4 * pi * i), std::sin(0.4 * pi * i)});
   }
