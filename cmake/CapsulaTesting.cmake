@@ -1,7 +1,8 @@
 # Test registration helpers.
 #
 # capsula_add_unit_test(<name> SOURCES ... DEPENDS ... [LABELS ...])
-#   A GoogleTest executable; every TEST() becomes its own ctest entry (label "unit").
+#   A GoogleTest executable (one per package); every TEST() becomes its own ctest entry
+#   (label "unit").
 # capsula_add_mpi_test(<name> SOURCES ... DEPENDS ... [RANKS n] [LABELS ...])
 #   A GoogleTest executable run as one ctest entry under mpiexec -n <RANKS> (default 2),
 #   label "mpi" (CMake 3.25 cannot discover gtest cases through mpiexec).
@@ -20,11 +21,24 @@ if(_capsula_uid STREQUAL "0")
   list(APPEND CAPSULA_MPIEXEC_PREFLAGS --allow-run-as-root)
 endif()
 
+# Every test executable reuses capsula_test_support's precompiled headers (same flags).
+function(capsula_reuse_test_headers name)
+  if(CAPSULA_PRECOMPILED_HEADERS)
+    target_precompile_headers(${name} REUSE_FROM capsula_test_support)
+  endif()
+endfunction()
+
+# One executable per package: its sources are compiled in unity batches (CAPSULA_UNITY_BUILD),
+# except those marked SKIP_UNITY_BUILD_INCLUSION because file-local names clash.
 function(capsula_add_unit_test name)
   cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;DEPENDS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE capsula_test_support ${ARG_DEPENDS})
   capsula_set_warnings(${name})
+  capsula_reuse_test_headers(${name})
+  if(CAPSULA_UNITY_BUILD)
+    set_target_properties(${name} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
+  endif()
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 300)
   endif()
@@ -45,6 +59,7 @@ function(capsula_add_mpi_test name)
     add_executable(${name} ${ARG_SOURCES})
     target_link_libraries(${name} PRIVATE capsula_test_support ${ARG_DEPENDS})
     capsula_set_warnings(${name})
+    capsula_reuse_test_headers(${name})
     set(_exe $<TARGET_FILE:${name}>)
   else()
     message(FATAL_ERROR "capsula_add_mpi_test(${name}): SOURCES required")

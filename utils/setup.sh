@@ -22,7 +22,11 @@ case "$mode" in
 esac
 
 bash utils/install-deps.sh
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
+# Ninja for a new build folder (it keeps both cores busy; docs/developer-guide.md, "Build
+# time"); a folder configured before keeps its generator.
+generator=()
+[[ -f "$build/CMakeCache.txt" ]] || generator=(-G Ninja)
+cmake -S . -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j "$jobs"
 
 # Open MPI refuses root without these; harmless otherwise.

@@ -11,8 +11,8 @@ namespace capsula::io {
 
 namespace {
 
-constexpr const char* formatName = "Capsula checkpoint";
-constexpr std::int64_t formatVersion = 1;
+constexpr const char* checkpointFormatName = "Capsula checkpoint";
+constexpr std::int64_t checkpointFormatVersion = 1;
 
 template <typename Map>
 void checkNames(const Map& map, const char* kind, const std::string& path)
@@ -35,8 +35,8 @@ void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint)
   const std::string temporary = core::temporaryPathFor(path);
   try {
     hdf5::Handle file = hdf5::createFile(temporary, "checkpoint");
-    hdf5::writeAttribute(file.get(), "format", std::string(formatName));
-    hdf5::writeAttribute(file.get(), "version", formatVersion);
+    hdf5::writeAttribute(file.get(), "format", std::string(checkpointFormatName));
+    hdf5::writeAttribute(file.get(), "version", checkpointFormatVersion);
     hdf5::writeAttribute(file.get(), "time", checkpoint.time);
     hdf5::writeAttribute(file.get(), "step", checkpoint.step);
     hdf5::writeAttribute(file.get(), "step size", checkpoint.stepSize);
@@ -69,11 +69,11 @@ Checkpoint readCheckpoint(const std::string& path)
 {
   hdf5::Handle file = hdf5::openFileForReading(path, "checkpoint");
   const bool ours = hdf5::hasAttribute(file.get(), "format") &&
-                    hdf5::readStringAttribute(file.get(), "format") == formatName;
+                    hdf5::readStringAttribute(file.get(), "format") == checkpointFormatName;
   core::require<core::IoError>(ours, "'", path, "' is an HDF5 file but not a Capsula checkpoint.");
   const std::int64_t version = hdf5::readIntegerAttribute(file.get(), "version");
-  core::require<core::IoError>(version == formatVersion, "Checkpoint '", path, "' has format version ",
-                               version, "; this Capsula reads version ", formatVersion, ".");
+  core::require<core::IoError>(version == checkpointFormatVersion, "Checkpoint '", path, "' has format version ",
+                               version, "; this Capsula reads version ", checkpointFormatVersion, ".");
   try {
     Checkpoint c;
     c.time = hdf5::readDoubleAttribute(file.get(), "time");

@@ -18,8 +18,8 @@ namespace capsula::io {
 
 namespace {
 
-constexpr const char* formatName = "Capsula snapshots";
-constexpr std::int64_t formatVersion = 2;
+constexpr const char* snapshotFormatName = "Capsula snapshots";
+constexpr std::int64_t snapshotFormatVersion = 2;
 constexpr const char* meshRoot = "mesh";
 constexpr const char* snapshotRoot = "snapshots";
 
@@ -258,11 +258,11 @@ hdf5::Handle openSnapshotFile(const std::string& path, bool writing)
   hdf5::Handle file = writing ? hdf5::openFileWithUndoJournal(path, "snapshot")
                               : hdf5::openFileForReading(path, "snapshot");
   const bool ours = hdf5::hasAttribute(file.get(), "format") &&
-                    hdf5::readStringAttribute(file.get(), "format") == formatName;
+                    hdf5::readStringAttribute(file.get(), "format") == snapshotFormatName;
   core::require<core::IoError>(ours, "'", path, "' is an HDF5 file but not a Capsula snapshot file.");
   const std::int64_t version = hdf5::readIntegerAttribute(file.get(), "version");
-  core::require<core::IoError>(version == formatVersion, "Snapshot file '", path, "' has format version ",
-                               version, "; this Capsula reads version ", formatVersion, ".");
+  core::require<core::IoError>(version == snapshotFormatVersion, "Snapshot file '", path, "' has format version ",
+                               version, "; this Capsula reads version ", snapshotFormatVersion, ".");
   core::require<core::IoError>(hdf5::exists(file.get(), meshRoot) && hdf5::exists(file.get(), snapshotRoot),
                                "Snapshot file '", path, "' lacks '/", meshRoot, "' or '/", snapshotRoot, "'.");
   return file;
@@ -290,8 +290,8 @@ void createSnapshotFile(const std::string& path)
   const std::string temporary = core::temporaryPathFor(path);
   try {
     hdf5::Handle file = hdf5::createFile(temporary, "snapshot");
-    hdf5::writeAttribute(file.get(), "format", std::string(formatName));
-    hdf5::writeAttribute(file.get(), "version", formatVersion);
+    hdf5::writeAttribute(file.get(), "format", std::string(snapshotFormatName));
+    hdf5::writeAttribute(file.get(), "version", snapshotFormatVersion);
     hdf5::createGroup(file.get(), meshRoot);
     hdf5::createGroup(file.get(), snapshotRoot);
     file.close();

@@ -1,5 +1,5 @@
 #include <capsula/mesh/CrossSection.hpp>
-
+#include "EdgeKey.hpp"
 #include <capsula/core/Error.hpp>
 #include <capsula/mesh/ElementGeometry.hpp>
 
@@ -66,13 +66,6 @@ double boundingDiameter(const SurfaceMesh& mesh)
   return (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).norm();
 }
 
-std::uint64_t pairKey(int a, int b)
-{
-  const auto lo = static_cast<std::uint64_t>(std::min(a, b));
-  const auto hi = static_cast<std::uint64_t>(std::max(a, b));
-  return (hi << 32) | lo;
-}
-
 } // namespace
 
 std::vector<Polyline> crossSection(const SurfaceMesh& mesh, const Vec3& planePoint,
@@ -97,7 +90,7 @@ std::vector<Polyline> crossSection(const SurfaceMesh& mesh, const Vec3& planePoi
   std::vector<std::array<int, 2>> links;
   const auto crossing = [&](int a, int b) {
     const int next = static_cast<int>(crossings.size());
-    const auto [it, inserted] = crossingOf.try_emplace(pairKey(a, b), next);
+    const auto [it, inserted] = crossingOf.try_emplace(detail::edgeKey(a, b), next);
     if (inserted) {
       // Interpolate from the lower id so both elements compute the same point.
       const int lo = std::min(a, b), hi = std::max(a, b);

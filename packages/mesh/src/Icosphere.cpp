@@ -1,5 +1,5 @@
 #include <capsula/mesh/Icosphere.hpp>
-
+#include "EdgeKey.hpp"
 #include <capsula/core/Error.hpp>
 
 #include <algorithm>
@@ -14,13 +14,6 @@ namespace capsula::mesh {
 namespace {
 
 using Triangle = std::array<int, 3>;
-
-std::uint64_t pairKey(int a, int b)
-{
-  const auto lo = static_cast<std::uint64_t>(std::min(a, b));
-  const auto hi = static_cast<std::uint64_t>(std::max(a, b));
-  return (hi << 32) | lo;
-}
 
 /// The 12 vertices (0, +-1, +-phi) and cyclic permutations, projected onto the unit
 /// sphere, and the 20 faces: the vertex triples whose sides all have the edge length
@@ -61,7 +54,7 @@ void makeIcosahedron(std::vector<Vec3>& vertices, std::vector<Triangle>& faces)
 int midpoint(int a, int b, std::vector<Vec3>& vertices,
              std::unordered_map<std::uint64_t, int>& cache)
 {
-  const auto [it, inserted] = cache.try_emplace(pairKey(a, b), static_cast<int>(vertices.size()));
+  const auto [it, inserted] = cache.try_emplace(detail::edgeKey(a, b), static_cast<int>(vertices.size()));
   if (inserted) {
     const Vec3 m = 0.5 * (vertices[a] + vertices[b]);
     vertices.push_back(m.normalized());

@@ -1,5 +1,5 @@
 #include <capsula/mesh/SurfaceMesh.hpp>
-
+#include "EdgeKey.hpp"
 #include <capsula/core/Error.hpp>
 
 #include <algorithm>
@@ -13,13 +13,6 @@ using core::require;
 namespace {
 
 constexpr std::uint8_t unassigned = 255;
-
-std::uint64_t edgeKey(int a, int b)
-{
-  const auto lo = static_cast<std::uint64_t>(std::min(a, b));
-  const auto hi = static_cast<std::uint64_t>(std::max(a, b));
-  return (hi << 32) | lo;
-}
 
 } // namespace
 
@@ -93,7 +86,7 @@ void SurfaceMesh::buildEdges()
       const int b = el[local[1]];
       const int mid = el[local[2]];
       require<InputError>(a != b, "SurfaceMesh: element ", e, " repeats vertex ", a);
-      const auto [it, inserted] = edgeByVertices_.try_emplace(edgeKey(a, b), numEdges());
+      const auto [it, inserted] = edgeByVertices_.try_emplace(detail::edgeKey(a, b), numEdges());
       if (inserted) {
         edges_.push_back({{a, b}, mid, {e, -1}, {k, -1}});
       } else {
@@ -155,7 +148,7 @@ int SurfaceMesh::neighbour(int e, int k) const
 
 int SurfaceMesh::findEdge(int a, int b) const
 {
-  const auto it = edgeByVertices_.find(edgeKey(a, b));
+  const auto it = edgeByVertices_.find(detail::edgeKey(a, b));
   return it == edgeByVertices_.end() ? -1 : it->second;
 }
 

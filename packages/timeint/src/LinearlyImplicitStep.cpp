@@ -4,6 +4,8 @@
 // J~ frozen at (t_n, y_n) by the LinearisedSystem for every attempt of the step.
 #include "capsula/timeint/TimeIntegrator.hpp"
 
+#include "StepMessages.hpp"
+
 #include "capsula/core/Error.hpp"
 #include "capsula/timeint/VectorNorms.hpp"
 
@@ -16,17 +18,8 @@ namespace capsula::timeint {
 
 namespace {
 
-std::string shown(double value)
-{
-  std::ostringstream out;
-  out.precision(10);
-  out << value;
-  return out.str();
-}
-
-// A step ending within this fraction beyond the stop time is stretched onto it (as for
-// the explicit methods, TimeIntegrator.cpp).
-constexpr double stretchFraction = 0.01;
+using detail::shown;
+using detail::stretchFraction;
 
 // out = y + sum_{j < count} w_j u_j (zero weights skipped).
 void combine(const std::vector<double>& y, const double* w, const std::vector<std::vector<double>>& u, int count,

@@ -1,5 +1,7 @@
 #include "capsula/timeint/TimeIntegrator.hpp"
 
+#include "StepMessages.hpp"
+
 #include "capsula/core/Error.hpp"
 #include "capsula/timeint/VectorNorms.hpp"
 
@@ -46,18 +48,8 @@ inline void errorEstimate(double h, const double* d, const std::vector<std::vect
   }
 }
 
-/// Times and step sizes in messages: enough digits to tell nearby times apart.
-std::string shown(double value)
-{
-  std::ostringstream out;
-  out.precision(10);
-  out << value;
-  return out.str();
-}
-
-// A step ending within this fraction beyond the stop time is stretched onto it rather
-// than followed by a sliver step.
-constexpr double stretchFraction = 0.01;
+using detail::shown;
+using detail::stretchFraction;
 
 // The explicit tableau: the deck's, and for Auto the thesis's RKF45 of its explicit phases
 // (the stiff methods never use it).

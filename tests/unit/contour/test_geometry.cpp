@@ -1,5 +1,6 @@
 // Contour geometry: orientation conventions, convergence of position, curvature and arc
 // length under refinement, the tethered (natural-end) contour.
+#include "capsula/testing/Constants.hpp"
 #include "capsula/testing/ConvergenceOrder.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/InitialShapes.hpp>
@@ -11,6 +12,8 @@
 #include <cstdio>
 #include <vector>
 
+using capsula::testing::pi;
+
 namespace {
 
 using capsula::contour::Closure;
@@ -19,7 +22,6 @@ using capsula::contour::ContourOptions;
 using capsula::contour::ContourPoint;
 using capsula::contour::Parametrisation;
 
-const double pi = std::acos(-1.0);
 
 using capsula::testing::fittedOrder;
 

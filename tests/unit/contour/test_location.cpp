@@ -1,4 +1,5 @@
 // Points found by property: the point at a given arc length, the lowest point of a spline.
+#include "capsula/testing/Constants.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/ContourLocation.hpp>
 #include <capsula/contour/InitialShapes.hpp>
@@ -7,11 +8,12 @@
 
 #include <cmath>
 
+using capsula::testing::pi;
+
 namespace {
 
 using namespace capsula::contour;
 
-const double pi = std::acos(-1.0);
 
 } // namespace
 

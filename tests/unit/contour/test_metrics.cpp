@@ -1,5 +1,6 @@
 // Shape metrics (App. A.9.1, eq 4.2): area, length, centroid, second moment, D12 and
 // the cell length, against exact ellipse values and under rigid motions.
+#include "capsula/testing/Constants.hpp"
 #include "capsula/testing/ConvergenceOrder.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/ContourMetrics.hpp>
@@ -11,12 +12,13 @@
 #include <cstdio>
 #include <vector>
 
+using capsula::testing::pi;
+
 namespace {
 
 using capsula::contour::Contour;
 using capsula::contour::EllipseShape;
 
-const double pi = std::acos(-1.0);
 
 using capsula::testing::fittedOrder;
 
@@ -56,9 +58,9 @@ TEST(ContourMetrics, EllipseAreaLengthAndD12Converge)
 {
   const EllipseShape shape = testEllipse();
   const double a = 0.5, b = 2.0;
-  const std::vector<int> refinements{16, 32, 64, 128, 256};
+  const std::vector<int> pointCounts{16, 32, 64, 128, 256};
   std::vector<double> areaError, lengthError, d12Error, centroidError, orientationError;
-  for (int n : refinements) {
+  for (int n : pointCounts) {
     const Contour contour(capsula::contour::ellipseNodes(n, shape));
     areaError.push_back(std::abs(capsula::contour::enclosedArea(contour) - pi));
     lengthError.push_back(std::abs(contour.length() - ellipsePerimeter(a, b)));
@@ -72,9 +74,9 @@ TEST(ContourMetrics, EllipseAreaLengthAndD12Converge)
                 n, areaError.back(), lengthError.back(), d12Error.back(), centroidError.back(),
                 orientationError.back());
   }
-  const double areaOrder = fittedOrder(refinements, areaError);
-  const double lengthOrder = fittedOrder(refinements, lengthError);
-  const double d12Order = fittedOrder(refinements, d12Error);
+  const double areaOrder = fittedOrder(pointCounts, areaError);
+  const double lengthOrder = fittedOrder(pointCounts, lengthError);
+  const double d12Order = fittedOrder(pointCounts, d12Error);
   std::printf("  fitted orders: area %.2f, length %.2f, D12 %.2f\n", areaOrder, lengthOrder,
               d12Order);
   EXPECT_GT(areaOrder, 3.8); // O(h^4) interpolation integrated: O(h^4) (or better)
@@ -158,9 +160,9 @@ TEST(ContourMetrics, CellLengthUsesSplineExtremes)
 {
   // Nodes straddle the ends of the x-axis (half a step off): node extremes miss 2a by
   // O(h^2); the stationary points of the spline pieces recover it to O(h^4).
-  const std::vector<int> refinements{32, 64, 128, 256};
+  const std::vector<int> pointCounts{32, 64, 128, 256};
   std::vector<double> nodeError, splineError, heightError;
-  for (int n : refinements) {
+  for (int n : pointCounts) {
     EllipseShape shape;
     shape.aspectRatio = 4.0; // a = 2 along x, b = 0.5
     shape.firstNodeAngle = pi / n;
@@ -174,13 +176,13 @@ TEST(ContourMetrics, CellLengthUsesSplineExtremes)
                 "height error %.3e\n",
                 n, nodeError.back(), splineError.back(), heightError.back());
   }
-  const double nodeOrder = fittedOrder(refinements, nodeError);
-  const double splineOrder = fittedOrder(refinements, splineError);
+  const double nodeOrder = fittedOrder(pointCounts, nodeError);
+  const double splineOrder = fittedOrder(pointCounts, splineError);
   std::printf("  fitted orders: node extremes %.2f, spline extremes %.2f\n", nodeOrder,
               splineOrder);
   EXPECT_LT(nodeOrder, 2.2);
   EXPECT_GT(splineOrder, 3.7);
-  EXPECT_GT(fittedOrder(refinements, heightError), 3.7);
+  EXPECT_GT(fittedOrder(pointCounts, heightError), 3.7);
 }
 
 } // namespace

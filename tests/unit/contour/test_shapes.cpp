@@ -1,4 +1,5 @@
 // Initial shapes (Fig. 4.1): equal-area ellipses, node placement and orientation.
+#include "capsula/testing/Constants.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/ContourMetrics.hpp>
 #include <capsula/contour/InitialShapes.hpp>
@@ -9,12 +10,13 @@
 #include <cmath>
 #include <vector>
 
+using capsula::testing::pi;
+
 namespace {
 
 using capsula::contour::EllipseShape;
 using capsula::contour::NodeSpacing;
 
-const double pi = std::acos(-1.0);
 
 TEST(ContourShapes, EllipseNodesLieOnTheEqualAreaEllipse)
 {

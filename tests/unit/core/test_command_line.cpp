@@ -14,7 +14,7 @@ core::CommandLineOptions parse(std::vector<const char*> args)
   return core::parseCommandLine(static_cast<int>(args.size()), args.data());
 }
 
-std::string errorOf(std::vector<const char*> args)
+std::string commandLineErrorOf(std::vector<const char*> args)
 {
   try {
     parse(std::move(args));
@@ -43,9 +43,9 @@ TEST(CommandLine, ParsesEveryOption)
 
 TEST(CommandLine, BadUsageIsExplained)
 {
-  EXPECT_NE(errorOf({"deck.xml", "--frobnicate"}).find("Unknown option '--frobnicate'"), std::string::npos);
-  EXPECT_NE(errorOf({"deck.xml", "--output"}).find("Option --output needs a value"), std::string::npos);
-  EXPECT_NE(errorOf({"a.xml", "b.xml"}).find("Two decks given ('a.xml' and 'b.xml')"), std::string::npos);
+  EXPECT_NE(commandLineErrorOf({"deck.xml", "--frobnicate"}).find("Unknown option '--frobnicate'"), std::string::npos);
+  EXPECT_NE(commandLineErrorOf({"deck.xml", "--output"}).find("Option --output needs a value"), std::string::npos);
+  EXPECT_NE(commandLineErrorOf({"a.xml", "b.xml"}).find("Two decks given ('a.xml' and 'b.xml')"), std::string::npos);
 }
 
 TEST(CommandLine, UsageListsOptionsAndExamples)

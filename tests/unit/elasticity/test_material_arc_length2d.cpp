@@ -1,5 +1,6 @@
 // The material map l(l0) of a 2D membrane (MaterialArcLength2D): exact for uniform stretch,
 // its inverse, and the periodic continuation past L0.
+#include "capsula/testing/Constants.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/InitialShapes.hpp>
 #include <capsula/elasticity/MaterialArcLength2D.hpp>
@@ -8,6 +9,8 @@
 
 #include <cmath>
 #include <vector>
+
+using capsula::testing::pi;
 
 using namespace capsula;
 
@@ -36,7 +39,6 @@ TEST(MaterialArcLength2D, NonUniformStretchRoundTrips)
   // O(h^4): 1e-6 at 64 markers); l0(l(l0)) = l0 to Newton's round-off.
   const int n = 64;
   Eigen::Matrix2Xd moved(2, n);
-  const double pi = std::acos(-1.0);
   for (int i = 0; i < n; ++i) {
     const double theta0 = 2.0 * pi * i / n;
     const double theta = theta0 + 0.2 * std::sin(theta0);
@@ -59,7 +61,6 @@ TEST(MaterialArcLength2D, StronglyVaryingStretchOnATetheredContourInverts)
   // 0.1, where plain Newton from l L0 / L overshoots; the safeguarded inverse must still
   // return l0 to round-off, up to the ends of a tethered (open, not-a-knot) contour.
   const int n = 64;
-  const double pi = std::acos(-1.0);
   std::vector<double> l0(n + 1), l(n + 1);
   for (int i = 0; i <= n; ++i) {
     l0[i] = 2.0 * pi * i / n;

@@ -49,12 +49,12 @@ TEST(Prestress2D, ShrinksAboutTheCentroidByOnePlusAlpha)
 
 TEST(Prestress2D, InitialContourCarriesTheUniformTensionAndTheLaplaceLoad)
 {
-  const double modulus = 2.5, alpha = 0.15, radius = 1.3;
+  const double youngModulus = 2.5, alpha = 0.15, radius = 1.3;
   const Eigen::Vector2d centre(0.5, 2.0);
   const Contour initial(capsula::contour::circleNodes(128, radius, centre));
-  const ElasticMembrane2D membrane(Contour(prestressedReference2D(initial.nodes(), alpha)), HookeanLaw2D(modulus));
+  const ElasticMembrane2D membrane(Contour(prestressedReference2D(initial.nodes(), alpha)), HookeanLaw2D(youngModulus));
   const MembraneState2D state = membrane.evaluate(initial);
-  const double gamma = modulus * alpha; // E (omega - 1), omega = 1 + alpha
+  const double gamma = youngModulus * alpha; // E (omega - 1), omega = 1 + alpha
   // Both arc lengths come from splines of similar polygons, so omega = 1 + alpha to round-off.
   EXPECT_LT((state.stretch().array() - (1.0 + alpha)).abs().maxCoeff(), 1e-12);
   EXPECT_LT((state.tension().array() - gamma).abs().maxCoeff(), 1e-12);

@@ -4,6 +4,7 @@
 // because dE/dt = int gamma d(omega)/dt dl0 = int gamma t . dv/dl dl = -int d(gamma t)/dl . v dl
 // (closed contour, or v = 0 at the tether). This fixes the sign of Delta f and ties the
 // discrete stretch, tension and load together.
+#include "capsula/testing/Constants.hpp"
 #include "capsula/testing/ConvergenceOrder.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/InitialShapes.hpp>
@@ -15,6 +16,8 @@
 #include <cstdio>
 #include <vector>
 
+using capsula::testing::pi;
+
 namespace {
 
 using capsula::contour::Closure;
@@ -25,7 +28,6 @@ using capsula::elasticity::ElasticMembrane2D;
 using capsula::elasticity::HookeanLaw2D;
 using capsula::elasticity::MembraneState2D;
 
-const double pi = std::acos(-1.0);
 
 using capsula::testing::fittedOrder;
 

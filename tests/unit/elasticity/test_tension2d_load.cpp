@@ -1,6 +1,7 @@
 // Stretch, tension and load of a 2D membrane (thesis A.5) against exact states:
 // reference and rigidly moved shapes, the inflated circle (Laplace law), a dilated
 // ellipse, tangential slip on a circle, and the global balances of force and torque.
+#include "capsula/testing/Constants.hpp"
 #include "capsula/testing/ConvergenceOrder.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/InitialShapes.hpp>
@@ -13,6 +14,8 @@
 #include <cstdio>
 #include <vector>
 
+using capsula::testing::pi;
+
 namespace {
 
 using capsula::contour::Closure;
@@ -22,7 +25,6 @@ using capsula::elasticity::ElasticMembrane2D;
 using capsula::elasticity::HookeanLaw2D;
 using capsula::elasticity::MembraneState2D;
 
-const double pi = std::acos(-1.0);
 const double modulus = 2.5;
 
 using capsula::testing::fittedOrder;

@@ -1,5 +1,6 @@
 // 2D Stokeslet, stresslet and pressure, free space (eqs A.8-A.9) and plane wall
 // (App. B.1, with T^D evaluated and the doublet pressure of B.8 corrected).
+#include "capsula/testing/Constants.hpp"
 #include <capsula/greens/FreeSpace2D.hpp>
 #include <capsula/greens/Wall2D.hpp>
 
@@ -12,6 +13,8 @@
 #include <random>
 #include <vector>
 
+using capsula::testing::pi;
+
 namespace {
 
 using namespace capsula::greens;
@@ -21,7 +24,6 @@ using capsula::greens::testing::norm;
 using capsula::greens::testing::Tensors;
 using V2 = capsula::greens::testing::Vec<2>;
 
-const double pi = std::acos(-1.0);
 
 struct PointPair {
   V2 x;  // field point

@@ -1,5 +1,6 @@
 // 3D Stokeslet, stresslet and pressure, free space (eqs 3.11-3.12) and plane wall (Blake,
 // App. B.2 with the ERRATA fixes): identities that fail on any wrong sign or factor.
+#include "capsula/testing/Constants.hpp"
 #include <capsula/greens/FreeSpace3D.hpp>
 #include <capsula/greens/Wall3D.hpp>
 
@@ -14,6 +15,8 @@
 #include <random>
 #include <vector>
 
+using capsula::testing::pi;
+
 namespace {
 
 using namespace capsula::greens;
@@ -23,7 +26,6 @@ using capsula::greens::testing::norm;
 using capsula::greens::testing::Tensors;
 using V3 = capsula::greens::testing::Vec<3>;
 
-const double pi = std::acos(-1.0);
 
 struct PointPair {
   V3 x;  // field point

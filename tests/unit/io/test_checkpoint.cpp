@@ -20,12 +20,12 @@ using io::testing::TemporaryDirectory;
 
 namespace {
 
-bool sameBits(const std::vector<double>& a, const std::vector<double>& b)
+bool bitwiseEqual(const std::vector<double>& a, const std::vector<double>& b)
 {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
-bool sameBits(double a, double b)
+bool bitwiseEqual(double a, double b)
 {
   return std::memcmp(&a, &b, sizeof(double)) == 0;
 }
@@ -67,18 +67,18 @@ TEST(Checkpoint, RoundTripIsBitForBit)
   io::writeCheckpoint(path, c);
   EXPECT_EQ(dir.entryCount(), 1u);
   const io::Checkpoint r = io::readCheckpoint(path);
-  EXPECT_TRUE(sameBits(r.time, c.time));
+  EXPECT_TRUE(bitwiseEqual(r.time, c.time));
   EXPECT_EQ(r.step, c.step);
-  EXPECT_TRUE(sameBits(r.stepSize, c.stepSize));
+  EXPECT_TRUE(bitwiseEqual(r.stepSize, c.stepSize));
   EXPECT_EQ(r.deckXml, c.deckXml);
   ASSERT_EQ(r.arrays.size(), c.arrays.size());
   for (const auto& [name, values] : c.arrays) {
     ASSERT_EQ(r.arrays.count(name), 1u) << name;
-    EXPECT_TRUE(sameBits(r.arrays.at(name), values)) << name;
+    EXPECT_TRUE(bitwiseEqual(r.arrays.at(name), values)) << name;
   }
   ASSERT_EQ(r.reals.size(), c.reals.size());
   for (const auto& [name, value] : c.reals) {
-    EXPECT_TRUE(sameBits(r.reals.at(name), value)) << name;
+    EXPECT_TRUE(bitwiseEqual(r.reals.at(name), value)) << name;
   }
   EXPECT_EQ(r.integers, c.integers);
 }

@@ -1,4 +1,5 @@
 // Plane cuts of the surface (cell profiles).
+#include "capsula/testing/Constants.hpp"
 #include <capsula/mesh/CrossSection.hpp>
 #include <capsula/mesh/Measures.hpp>
 #include <capsula/mesh/Shapes.hpp>
@@ -8,11 +9,12 @@
 #include <algorithm>
 #include <cmath>
 
+using capsula::testing::pi;
+
 using namespace capsula::mesh;
 
 namespace {
 
-const double pi = std::acos(-1.0);
 
 /// Signed area of a closed planar polyline about `normal` (shoelace in 3D).
 double signedArea(const Polyline& line, const Vec3& normal)

@@ -1,5 +1,6 @@
 // Inertia tensor, equivalent ellipsoid and Taylor deformation parameters (thesis
 // Section 3.11.1, eqs 3.51-3.53, ERRATA fix of eq 3.52).
+#include "capsula/testing/Constants.hpp"
 #include "capsula/testing/ConvergenceOrder.hpp"
 
 #include <capsula/mesh/EquivalentEllipsoid.hpp>
@@ -14,11 +15,12 @@
 #include <cstdio>
 #include <vector>
 
+using capsula::testing::pi;
+
 using namespace capsula::mesh;
 using capsula::testing::orderOverLevels;
 
 namespace {
-const double pi = std::acos(-1.0);
 }
 
 TEST(MeshEquivalentEllipsoid, SemiAxesOfAnEllipsoidMeshConvergeToItsOwn)

@@ -1,6 +1,7 @@
 // Area, volume, centroid, reduced volume and projected areas (thesis Section 3.11,
 // ERRATA): convergence to exact values under refinement, exactness where the
 // integrand is polynomial, invariance under rigid motions.
+#include "capsula/testing/Constants.hpp"
 #include "capsula/testing/ConvergenceOrder.hpp"
 
 #include <capsula/mesh/Icosphere.hpp>
@@ -16,12 +17,13 @@
 #include <cstdio>
 #include <vector>
 
+using capsula::testing::pi;
+
 using namespace capsula::mesh;
 using capsula::testing::orderOverLevels;
 
 namespace {
 
-const double pi = std::acos(-1.0);
 
 /// Surface area of the ellipsoid with semi-axes (a, b, c): the area element of
 /// x = (a sin t cos p, b sin t sin p, c cos t) integrated with an 80 x 160 Gauss-Legendre

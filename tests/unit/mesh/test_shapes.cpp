@@ -1,5 +1,6 @@
 // Initial shapes: every node on the target surface, placement, outward orientation,
 // and the Evans-Fung red cell against its axisymmetric integrals and literature values.
+#include "capsula/testing/Constants.hpp"
 #include <capsula/core/Error.hpp>
 #include <capsula/mesh/Measures.hpp>
 #include <capsula/mesh/Shapes.hpp>
@@ -11,11 +12,12 @@
 #include <cmath>
 #include <cstdio>
 
+using capsula::testing::pi;
+
 using namespace capsula::mesh;
 
 namespace {
 
-const double pi = std::acos(-1.0);
 
 /// Area and volume of the Evans-Fung cell from its profile, parametrised by
 /// r = R0 sin s, z = (R0/2) cos s (c0 + c1 sin^2 s + c2 sin^4 s), s in [0, pi/2]:

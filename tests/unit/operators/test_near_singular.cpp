@@ -102,10 +102,10 @@ TEST(NearSingular, FlatElementSolidAngleAndDoubleLayerTrace)
 }
 
 template <class Kernel>
-void expectCurvedElementMatchesReference(const Vec3& centre)
+void expectCurvedElementMatchesReference(const Vec3& cellCentre)
 {
   mesh::Placement placement;
-  placement.centre = centre;
+  placement.centre = cellCentre;
   const auto sphere = mesh::makeSphere(2, 1.0, placement);
   const auto& fine = quadrature::triangleRule(19);
   // A load that varies over the element (values at its six nodes, LoadDensity layout).

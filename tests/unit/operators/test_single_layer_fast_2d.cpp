@@ -144,12 +144,12 @@ TEST(LayerPotentials2D, FastSingleLayerEqualsTheReferenceForEverySubdivisionSett
   // second density on the same geometry (the piece cache must not reuse the first one's
   // loads). Bound as above (measured: 1e-15 .. 3.5e-15).
   const contour::Contour c = operators::testing2d::ellipse(64, 1.0, {0.0, 1.002});
-  for (const auto& [distance, levels] : {std::pair{0.0, 8}, std::pair{2.0, 0}, std::pair{3.0, 12}}) {
+  for (const auto& [distance, bisections] : {std::pair{0.0, 8}, std::pair{2.0, 0}, std::pair{3.0, 12}}) {
     ContourDiscretisation2D d;
     d.nearSingularDistance = distance;
-    d.nearSingularLevels = levels;
+    d.nearSingularLevels = bisections;
     EXPECT_LT(fastMinusReference<greens::Wall2D>(c, d, 0, 64, someLoad), 1e-13)
-      << "distance " << distance << ", levels " << levels;
+      << "distance " << distance << ", bisections " << bisections;
   }
   ContourDiscretisation2D d;
   LayerPotentials2D<greens::Wall2D> layers(d);

@@ -1,5 +1,6 @@
 // Log-weighted Gauss rules, int_0^1 -ln(x) f(x) dx: exactness against the closed forms
 // int_0^1 -ln(x) x^k dx = 1/(k+1)^2, and convergence for smooth non-polynomial f.
+#include "capsula/testing/Constants.hpp"
 #include "capsula/testing/ConvergenceOrder.hpp"
 
 #include <capsula/quadrature/LogWeightedGauss.hpp>
@@ -12,6 +13,8 @@
 #include <functional>
 #include <string>
 #include <vector>
+
+using capsula::testing::pi;
 
 namespace {
 
@@ -157,7 +160,6 @@ TEST(LogWeightedGauss, GeometricRateForAPoleAtMinusOne)
   // [-1, 1], so Gauss errors fall like rho^{-2n} with rho = 3 + sqrt(8): fit the slope of
   // ln(error) against n and compare with -2 ln(rho) (within 10%: the algebraic prefactor
   // bends the line slightly over n = 2..8).
-  const double pi = std::acos(-1.0);
   const double exact = pi * pi / 12.0;
   std::vector<double> points, logErrors;
   for (int n = 2; n <= 8; ++n) {

@@ -27,7 +27,7 @@ using capsula::run::testing::tether2dDeck;
 
 namespace {
 
-Teuchos::RCP<const Teuchos::Comm<int>> serial()
+Teuchos::RCP<const Teuchos::Comm<int>> serialComm()
 {
   return Teuchos::rcp(new Teuchos::SerialComm<int>);
 }
@@ -55,11 +55,11 @@ TEST(TetherRun2D, FreeCapsuleInShearReachesTheSmallDeformationShape)
   const auto deck = tether2dDeck({"Wall/Enabled=false", "Tether/Enabled=false", "Cell/Lowest point height=-1",
                                   "Cell/Number of points=32", "Flow/Capillary number=0.01",
                                   "Time integration/End time=6", "Output/Interval=0.5"});
-  TetherRun2D run(serial(), deck, nullptr);
+  TetherRun2D run(serialComm(), deck, nullptr);
   const TetherRunResult2D early = [&] {
     auto d = deck;
     d.sublist("Time integration").set("End time", 4.0);
-    TetherRun2D shortRun(serial(), d, nullptr);
+    TetherRun2D shortRun(serialComm(), d, nullptr);
     return shortRun.run("", std::nullopt);
   }();
   const TetherRunResult2D result = run.run("", std::nullopt);
@@ -78,7 +78,7 @@ TEST(TetherRun2D, TetheredCellIsHeldAtTheAnchorAndPulledDownstream)
   const auto deck = tether2dDeck({"Cell/Number of points=48", "Flow/Capillary number=0.25",
                                   "Tether/Minimum preparation time=0.5", "Tether/Maximum preparation time=1",
                                   "Time integration/End time=1", "Output/Interval=0.25"});
-  TetherRun2D run(serial(), deck, nullptr);
+  TetherRun2D run(serialComm(), deck, nullptr);
   const TetherRunResult2D result = run.run("", std::nullopt);
   ASSERT_TRUE(result.tethered);
   EXPECT_NEAR(result.preparationTime, 1.0, 1e-12); // still deforming: ends at the maximum
@@ -105,7 +105,7 @@ TEST(TetherRun2D, ForceTransientIsLeftOutOfTheMaximumAfterIt)
                                   "Tether/Minimum preparation time=0.25", "Tether/Maximum preparation time=0.25",
                                   "Time integration/End time=0.25", "Output/Interval=0.25",
                                   "Tether/Force transient=0.5"});
-  TetherRun2D run(serial(), deck, nullptr);
+  TetherRun2D run(serialComm(), deck, nullptr);
   const TetherRunResult2D result = run.run("", std::nullopt);
   ASSERT_TRUE(result.tethered);
   EXPECT_GT(result.maxTetherForce, 0.0);
@@ -128,7 +128,7 @@ TEST(TetherRun2D, PreparationEndsAtTheLargestDeformationWithANodeAtTheBottom)
                                     "Tether/Wait for a node at the bottom=true",
                                     "Tether/Maximum preparation time=10", "Time integration/End time=0.01",
                                     "Output/Interval=0.25"});
-    TetherRun2D run(serial(), deck, nullptr);
+    TetherRun2D run(serialComm(), deck, nullptr);
     const TetherRunResult2D result = run.run("", std::nullopt);
     ASSERT_TRUE(result.tethered);
     EXPECT_GT(result.preparationTime, 4.5);
@@ -147,7 +147,7 @@ TEST(TetherRun2D, PreparationEndsAtTheLargestDeformationWithANodeAtTheBottom)
   const auto deck = tether2dDeck({"Cell/Number of points=48", "Flow/Capillary number=0.25",
                                   "Tether/Maximum preparation time=10", // no wait: the default
                                   "Time integration/End time=0.01", "Output/Interval=0.25"});
-  TetherRun2D run(serial(), deck, nullptr);
+  TetherRun2D run(serialComm(), deck, nullptr);
   const TetherRunResult2D result = run.run("", std::nullopt);
   ASSERT_TRUE(result.tethered);
   EXPECT_LT(result.preparationTime, times[0]);
@@ -181,11 +181,11 @@ void expectRestartReproducesTheRun(const std::vector<std::string>& extra, const 
   };
   const std::string whole = scratchDirectory(name + "_whole");
   const std::string first = scratchDirectory(name + "_first");
-  TetherRun2D uninterrupted(serial(), withEnd(0.5), nullptr);
+  TetherRun2D uninterrupted(serialComm(), withEnd(0.5), nullptr);
   const TetherRunResult2D expected = uninterrupted.run(whole, std::nullopt);
-  TetherRun2D part(serial(), withEnd(0.25), nullptr);
+  TetherRun2D part(serialComm(), withEnd(0.25), nullptr);
   part.run(first, std::nullopt);
-  TetherRun2D rest(serial(), withEnd(0.5), nullptr);
+  TetherRun2D rest(serialComm(), withEnd(0.5), nullptr);
   const TetherRunResult2D resumed = rest.run(first, first);
 
   // Bit for bit: the same steps from the same checkpointed state (lambda = 3: GMRES starts
@@ -256,7 +256,7 @@ TEST(TetherRun2D, AutoRestartReproducesTheUninterruptedRun)
 
 TEST(TetherRun2D, PreparationRegridsNeedTheRegridAtTethering)
 {
-  EXPECT_THROW(TetherRun2D(serial(), tether2dDeck({"Tether/Preparation regrid interval=0.5"}), nullptr),
+  EXPECT_THROW(TetherRun2D(serialComm(), tether2dDeck({"Tether/Preparation regrid interval=0.5"}), nullptr),
                core::InputError);
 }
 
@@ -275,8 +275,8 @@ TEST(TetherRun2D, RegriddedFreeCellKeepsItsShape)
   regridding.push_back("Tether/Preparation regrid interval=0.05");
   const std::string a = scratchDirectory("prep_plain");
   const std::string b = scratchDirectory("prep_regrid");
-  TetherRun2D(serial(), tether2dDeck(settings), nullptr).run(a, std::nullopt);
-  const TetherRunResult2D regridded = TetherRun2D(serial(), tether2dDeck(regridding), nullptr).run(b, std::nullopt);
+  TetherRun2D(serialComm(), tether2dDeck(settings), nullptr).run(a, std::nullopt);
+  const TetherRunResult2D regridded = TetherRun2D(serialComm(), tether2dDeck(regridding), nullptr).run(b, std::nullopt);
   ASSERT_TRUE(regridded.tethered);
   const io::CsvTable plainRows = io::readCsvTable(a + "/preparation.csv");
   const io::CsvTable gradedRows = io::readCsvTable(b + "/preparation.csv");
@@ -303,8 +303,8 @@ TEST(TetherRun2D, RegriddedCellIsTetheredAtTheLowestPointOfItsSpline)
                                           "Output/Interval=0.25"};
   auto regridded = settings;
   regridded.push_back("Tether/Regrid at tethering=true");
-  TetherRun2D plain(serial(), tether2dDeck(settings), nullptr);
-  TetherRun2D graded(serial(), tether2dDeck(regridded), nullptr);
+  TetherRun2D plain(serialComm(), tether2dDeck(settings), nullptr);
+  TetherRun2D graded(serialComm(), tether2dDeck(regridded), nullptr);
   const std::string a = scratchDirectory("plain_tether");
   const std::string b = scratchDirectory("graded_tether");
   plain.run(a, std::nullopt);
@@ -352,7 +352,7 @@ TEST(TetherRun2D, AreaDriftStaysSmallAtLambdaTen)
                                   "Flow/Capillary number=0.1", "Tether/Minimum preparation time=0.25",
                                   "Tether/Maximum preparation time=0.5", "Time integration/End time=1",
                                   "Output/Interval=0.25"});
-  TetherRun2D run(serial(), deck, nullptr);
+  TetherRun2D run(serialComm(), deck, nullptr);
   const TetherRunResult2D result = run.run("", std::nullopt);
   ASSERT_TRUE(result.tethered);
   // Measured 3.1e-4 (the spline area error of 40 points and the quadrature of the velocity).
@@ -368,7 +368,7 @@ TEST(TetherRun2D, SummaryHasTheLayoutOfEveryApp)
   const auto deck = tether2dDeck({"Cell/Number of points=32", "Tether/Minimum preparation time=0.125",
                                   "Tether/Maximum preparation time=0.125", "Time integration/End time=0.125",
                                   "Output/Interval=0.125"});
-  const TetherRunResult2D result = TetherRun2D(serial(), deck, nullptr).run(directory, std::nullopt);
+  const TetherRunResult2D result = TetherRun2D(serialComm(), deck, nullptr).run(directory, std::nullopt);
   std::ifstream in(directory + "/summary.json");
   std::stringstream text;
   text << in.rdbuf();
@@ -391,12 +391,12 @@ TEST(TetherRun2D, RestartRefusesACheckpointThatLacksAnEntry)
   const auto deck = tether2dDeck({"Cell/Number of points=32", "Tether/Minimum preparation time=0.125",
                                   "Tether/Maximum preparation time=0.125", "Time integration/End time=0.125",
                                   "Output/Interval=0.125"});
-  TetherRun2D(serial(), deck, nullptr).run(directory, std::nullopt);
+  TetherRun2D(serialComm(), deck, nullptr).run(directory, std::nullopt);
   io::Checkpoint checkpoint = io::readCheckpoint(directory + "/checkpoint.h5");
   ASSERT_EQ(checkpoint.reals.erase("run preparation rate"), 1u);
   io::writeCheckpoint(directory + "/checkpoint.h5", checkpoint);
   try {
-    TetherRun2D(serial(), deck, nullptr).run(directory, directory);
+    TetherRun2D(serialComm(), deck, nullptr).run(directory, directory);
     FAIL() << "a checkpoint without 'run preparation rate' was accepted";
   } catch (const core::InputError& e) {
     const std::string what = e.what();

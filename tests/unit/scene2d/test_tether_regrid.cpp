@@ -1,5 +1,6 @@
 // New markers graded towards the tether (TetherRegrid2D): the spacing law, and that the
 // regridded cell is the same cell (shape, material points, stretch).
+#include "capsula/testing/Constants.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/ContourLocation.hpp>
 #include <capsula/contour/InitialShapes.hpp>
@@ -13,12 +14,13 @@
 #include <cmath>
 #include <vector>
 
+using capsula::testing::pi;
+
 using namespace capsula;
 using scene2d::TetherGrading2D;
 
 namespace {
 
-const double pi = std::acos(-1.0);
 
 contour::ContourOptions tethered()
 {

@@ -40,7 +40,7 @@ Teuchos::RCP<const Teuchos::Comm<int>> serial()
   return Teuchos::rcp(new Teuchos::SerialComm<int>);
 }
 
-CapsuleModel2D modelOf(const Teuchos::ParameterList& deck)
+CapsuleModel2D jacobianModelOf(const Teuchos::ParameterList& deck)
 {
   return CapsuleModel2D(serial(), readCellSettings2D(deck.sublist("Cell")),
                         readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall")),
@@ -92,7 +92,7 @@ TEST(VelocityJacobian2D, IsTheDerivativeOfTheVelocityAtRest)
                                       wall ? "Wall/Enabled=true" : "Wall/Enabled=false",
                                       wall ? "Cell/Lowest point height=0.1" : "Cell/Lowest point height=-1",
                                       wall ? "Tether/Enabled=true" : "Tether/Enabled=false"});
-      CapsuleModel2D model = modelOf(deck);
+      CapsuleModel2D model = jacobianModelOf(deck);
       if (tethered) {
         model.tether(0);   // node 0 held; the reference relabelled by 0: still unstressed
       }
@@ -134,7 +134,7 @@ TEST(VelocityJacobian2D, PreconditionedStageSolveConverges)
     const auto deck = tether2dDeck({"Cell/Number of points=64", "Flow/Capillary number=0.01", "Cell/Prestress=0.1",
                                     "Cell/Lowest point height=0.05", "Solver/Stiff/Maximum iterations=1000",
                                     "Solver/Stiff/Preconditioner=" + preconditioners[p]});
-    CapsuleModel2D model = modelOf(deck);
+    CapsuleModel2D model = jacobianModelOf(deck);
     VelocityJacobian2D jacobian(model, serial(), deck);
     const std::vector<double> x = model.initialState();
     jacobian.linearise(0.0, x);
@@ -167,7 +167,7 @@ TEST(VelocityJacobian2D, ApproximateJacobianIsCloseOnSmoothDirections)
 {
   const auto deck = tether2dDeck({"Cell/Number of points=64", "Flow/Capillary number=0.01", "Cell/Prestress=0.1",
                                   "Cell/Lowest point height=0.05"});
-  CapsuleModel2D model = modelOf(deck);
+  CapsuleModel2D model = jacobianModelOf(deck);
   VelocityJacobian2D jacobian(model, serial(), deck);
   const std::vector<double> x = model.initialState();
   jacobian.linearise(0.0, x);
@@ -195,7 +195,7 @@ TEST(VelocityJacobian2D, ApproximateJacobianIsCloseOnSmoothDirections)
 TEST(VelocityJacobian2D, TetheredNodeStaysHeldInTheStageSolve)
 {
   const auto deck = tether2dDeck({"Cell/Number of points=48", "Flow/Capillary number=0.01", "Cell/Prestress=0.1"});
-  CapsuleModel2D model = modelOf(deck);
+  CapsuleModel2D model = jacobianModelOf(deck);
   model.tether(5);
   VelocityJacobian2D jacobian(model, serial(), deck);
   std::vector<double> x = model.initialState();
@@ -226,7 +226,7 @@ TEST(VelocityJacobian2D, StiffCellRunConvergesAtOrderThree)
                                   "Cell/Lowest point height=0.1", "Time integration/Method=ROS34PW2",
                                   "Time integration/Tolerance=1e-9"});   // stage solves to 1e-11 RMS
   const auto run = [&](int steps) {
-    CapsuleModel2D model = modelOf(deck);
+    CapsuleModel2D model = jacobianModelOf(deck);
     auto settings = timeint::timeIntegrationSettings(deck.sublist("Time integration"));
     settings.adaptive = false;
     settings.initialStep = 0.2 / steps;
@@ -262,7 +262,7 @@ TEST(VelocityJacobian2D, IsLinear)
 {
   const auto deck = tether2dDeck({"Cell/Number of points=64", "Flow/Capillary number=0.01", "Cell/Prestress=0.1",
                                   "Cell/Lowest point height=0.05"});
-  CapsuleModel2D model = modelOf(deck);
+  CapsuleModel2D model = jacobianModelOf(deck);
   VelocityJacobian2D jacobian(model, serial(), deck);
   const std::vector<double> x = model.initialState();
   jacobian.linearise(0.0, x);
