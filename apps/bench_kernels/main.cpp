@@ -64,7 +64,7 @@ void singleLayerSums(benchmark::State& state)
 {
   const Cloud sources(level3Points);
   const Cloud targets(targetBlockSize);
-  const SingleLayerSources s{sources.x.data(), sources.y.data(), sources.z.data(),
+  const SingleLayerSources s{sources.x.data(),  sources.y.data(),  sources.z.data(),
                              sources.fx.data(), sources.fy.data(), sources.fz.data()};
   TargetBlock block = makeBlock(targets);
   for (auto _ : state) {
@@ -72,8 +72,8 @@ void singleLayerSums(benchmark::State& state)
     benchmark::DoNotOptimize(block.ux[0]);
     benchmark::ClobberMemory();
   }
-  state.counters["pairs/s"] = benchmark::Counter(static_cast<double>(state.iterations()) * targetBlockSize *
-                                                     level3Points, benchmark::Counter::kIsRate);
+  state.counters["pairs/s"] = benchmark::Counter(
+      static_cast<double>(state.iterations()) * targetBlockSize * level3Points, benchmark::Counter::kIsRate);
 }
 
 template <class Kernel>
@@ -88,16 +88,16 @@ void doubleLayerSums(benchmark::State& state)
     ay[q] = (sources.y[q] - 2.0) * 1e-3;
     az[q] = sources.z[q] * 1e-3;
   }
-  const DoubleLayerSources s{sources.x.data(), sources.y.data(), sources.z.data(), ax.data(), ay.data(), az.data(),
-                             sources.fx.data(), sources.fy.data(), sources.fz.data()};
+  const DoubleLayerSources s{sources.x.data(), sources.y.data(),  sources.z.data(),  ax.data(),        ay.data(),
+                             az.data(),        sources.fx.data(), sources.fy.data(), sources.fz.data()};
   TargetBlock block = makeBlock(targets);
   for (auto _ : state) {
     addDoubleLayerSums<Kernel, true>(block, s, 0, level3Points);
     benchmark::DoNotOptimize(block.ux[0]);
     benchmark::ClobberMemory();
   }
-  state.counters["pairs/s"] = benchmark::Counter(static_cast<double>(state.iterations()) * targetBlockSize *
-                                                     level3Points, benchmark::Counter::kIsRate);
+  state.counters["pairs/s"] = benchmark::Counter(
+      static_cast<double>(state.iterations()) * targetBlockSize * level3Points, benchmark::Counter::kIsRate);
 }
 
 // One sphere (radius 1, centre 2 above the wall) and a smooth load, as in bench_operators.

@@ -96,8 +96,8 @@ double directSum(LayerPotentials<Kernel>& potentials, const std::vector<double>&
 }
 
 template <class Kernel>
-int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int level, double lambda, int quadraturePoints,
-        int rings, int repeat)
+int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int level, double lambda, int quadraturePoints, int rings,
+        int repeat)
 {
   const bool root = comm->getRank() == 0;
   mesh::Placement placement;
@@ -142,8 +142,8 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int level, double la
     const int numPoints = quad.numPoints();
     std::printf("bench_operators: %s kernel, %d rank(s), level %d: %d nodes, %d elements, N_Q = %d "
                 "(%d quadrature points), N_GL = %d, regular neighbour rings %d, lambda = %g\n",
-                Kernel::name, comm->getSize(), level, surfaces.numNodes(), surfaces.numElements(),
-                quadraturePoints, numPoints, discretisation.singularQuadraturePoints, rings, lambda);
+                Kernel::name, comm->getSize(), level, surfaces.numNodes(), surfaces.numElements(), quadraturePoints,
+                numPoints, discretisation.singularQuadraturePoints, rings, lambda);
     std::printf("  near-singular (target, element) pairs: %lld (%.1f per node)\n", nearTotal,
                 static_cast<double>(nearTotal) / surfaces.numNodes());
     std::printf("                           wall ms   cpu ms (slowest rank, best of %d)\n", repeat);
@@ -176,8 +176,7 @@ int main(int argc, char* argv[])
   Teuchos::CommandLineProcessor clp(false, true);
   clp.setDocString("Times one velocity evaluation of the boundary-integral operators.");
   clp.setOption("level", &level, "icosphere level of the cell (3: 2562 nodes)");
-  clp.setOption("kernel", &kernel,
-                "Wall, FreeSpace, or WallTensors (the wall kernel without the contracted forms)");
+  clp.setOption("kernel", &kernel, "Wall, FreeSpace, or WallTensors (the wall kernel without the contracted forms)");
   clp.setOption("lambda", &lambda, "viscosity ratio (1: explicit; otherwise GMRES)");
   clp.setOption("quadrature-points", &quadraturePoints, "N_Q");
   clp.setOption("rings", &rings, "regular neighbour rings (0: subdivide near elements of the own cell too)");
@@ -196,8 +195,7 @@ int main(int argc, char* argv[])
       // The wall kernel straight from greens: full tensors contracted in the loops.
       return run<greens::Wall3D>(comm, level, lambda, quadraturePoints, rings, repeat);
     }
-    std::fprintf(stderr, "bench_operators: unknown --kernel=%s (Wall, FreeSpace or WallTensors)\n",
-                 kernel.c_str());
+    std::fprintf(stderr, "bench_operators: unknown --kernel=%s (Wall, FreeSpace or WallTensors)\n", kernel.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_operators: %s\n", e.what());
   }

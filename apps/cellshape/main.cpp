@@ -33,7 +33,8 @@ Teuchos::RCP<const Teuchos::ParameterList> validParameters(const Teuchos::Parame
   auto& disc = core::declareSublist(*valid, "Discretisation", "Quadrature of the surface integrals.");
   core::declareInt(disc, "Quadrature points", 7,
                    "Points N_Q of the symmetric triangle rule used for area, volume and moments "
-                   "(1, 3, 4, 6, 7, 12 or 13).", 1, 13);
+                   "(1, 3, 4, 6, 7, 12 or 13).",
+                   1, 13);
   auto& output = core::declareSublist(*valid, "Output", "Where to write results.");
   core::declareString(output, "Directory", "",
                       "Directory for deck.xml and geometry.txt (empty: print only). --output overrides it.");
@@ -47,7 +48,7 @@ double ellipsoidArea(double a, double b, double c)
   const int n = 400;
   double area = 0.0;
   for (int i = 0; i < n; ++i) {
-    const double t = M_PI * (i + 0.5) / n;   // midpoint rule: spectrally accurate for smooth periodic
+    const double t = M_PI * (i + 0.5) / n; // midpoint rule: spectrally accurate for smooth periodic
     for (int j = 0; j < 2 * n; ++j) {
       const double p = M_PI * (j + 0.5) / n;
       const double st = std::sin(t), ct = std::cos(t), sp = std::sin(p), cp = std::cos(p);
@@ -93,23 +94,22 @@ void run(core::RunContext& ctx)
 
   std::ostringstream report;
   report << std::setprecision(10);
-  report << "Cell: " << shape << ", mesh level " << cellList.get<int>("Mesh level") << ": "
-         << surface.numElements() << " elements, " << surface.numNodes() << " nodes, N_Q = " << nq << "\n"
+  report << "Cell: " << shape << ", mesh level " << cellList.get<int>("Mesh level") << ": " << surface.numElements()
+         << " elements, " << surface.numNodes() << " nodes, N_Q = " << nq << "\n"
          << "  area                 = " << area << "\n"
          << "  volume               = " << volume << "\n"
          << "  reduced volume       = " << mesh::reducedVolume(area, volume) << "\n"
          << "  centroid             = (" << c[0] << ", " << c[1] << ", " << c[2] << ")\n"
-         << "  equivalent ellipsoid = semi-axes (" << ellipsoid.semiAxes[0] << ", " << ellipsoid.semiAxes[1]
-         << ", " << ellipsoid.semiAxes[2] << ")\n"
+         << "  equivalent ellipsoid = semi-axes (" << ellipsoid.semiAxes[0] << ", " << ellipsoid.semiAxes[1] << ", "
+         << ellipsoid.semiAxes[2] << ")\n"
          << "  D12, D13, D23        = " << d[0] << ", " << d[1] << ", " << d[2] << "\n"
-         << "  projected area on yz, xz, xy planes = " << projected[0] << ", " << projected[1] << ", "
-         << projected[2] << "\n"
-         << "  mesh quality         = min angle " << quality.minAngle << " deg, max angle "
-         << quality.maxAngle << " deg, max edge ratio " << quality.maxEdgeRatio << "\n";
+         << "  projected area on yz, xz, xy planes = " << projected[0] << ", " << projected[1] << ", " << projected[2]
+         << "\n"
+         << "  mesh quality         = min angle " << quality.minAngle << " deg, max angle " << quality.maxAngle
+         << " deg, max edge ratio " << quality.maxEdgeRatio << "\n";
   if (exactArea) {
     report << std::setprecision(3) << "  discretisation error = area " << (area - *exactArea) / *exactArea
-           << ", volume " << (volume - *exactVolume) / *exactVolume << " (relative to the exact "
-           << shape << ")\n";
+           << ", volume " << (volume - *exactVolume) / *exactVolume << " (relative to the exact " << shape << ")\n";
   }
   *ctx.out << report.str();
 
@@ -133,12 +133,10 @@ void run(core::RunContext& ctx)
 int main(int argc, char** argv)
 {
   const core::AppDescription app{
-    "cellshape",
-    "build a cell's initial surface from a deck and report its geometry and discretisation error",
-    {"cellshape input/cellshape/red_cell.xml",
-     "cellshape input/cellshape/red_cell.xml --set \"Cell/Mesh level=4\"",
-     "cellshape input/cellshape/platelet.xml --output out/platelet",
-     "cellshape --print-defaults > my_cell.xml"},
-    false};
+      "cellshape",
+      "build a cell's initial surface from a deck and report its geometry and discretisation error",
+      {"cellshape input/cellshape/red_cell.xml", "cellshape input/cellshape/red_cell.xml --set \"Cell/Mesh level=4\"",
+       "cellshape input/cellshape/platelet.xml --output out/platelet", "cellshape --print-defaults > my_cell.xml"},
+      false};
   return core::runApplication(argc, argv, app, validParameters, run);
 }

@@ -33,8 +33,7 @@ Teuchos::RCP<const Teuchos::ParameterList> validParameters(const Teuchos::Parame
   auto valid = Teuchos::rcp(new Teuchos::ParameterList("curvature_report"));
   auto& shape = core::declareSublist(*valid, "Ellipsoid", "The surface the estimates are measured on.");
   core::declareRealArray(shape, "Semi-axes", {1.0, 0.5, 2.0}, 3,
-                         "Semi-axes (a, b, c) along x, y, z; equal values give a sphere.",
-                         core::greaterThan(0.0));
+                         "Semi-axes (a, b, c) along x, y, z; equal values give a sphere.", core::greaterThan(0.0));
   auto& levels = core::declareSublist(*valid, "Mesh", "The mesh levels n (N_E = 20 * 4^n).");
   core::declareInt(levels, "Coarsest level", 1, "First mesh level of the table.", 0, 6);
   core::declareInt(levels, "Finest level", 4, "Last mesh level of the table.", 0, 6);
@@ -50,11 +49,11 @@ Teuchos::RCP<const Teuchos::ParameterList> validParameters(const Teuchos::Parame
 }
 
 struct Errors {
-  double mean = 0.0;           // ||kappa_h - kappa||_2 / ||kappa||_2
-  double gaussian = 0.0;       // the same for K
-  double meanPointwise = 0.0;  // RMS of (kappa_h - kappa) / kappa
-  double meanMax = 0.0;        // max |kappa_h - kappa| / |kappa|
-  double normal = 0.0;         // RMS |n_h - n|
+  double mean = 0.0;          // ||kappa_h - kappa||_2 / ||kappa||_2
+  double gaussian = 0.0;      // the same for K
+  double meanPointwise = 0.0; // RMS of (kappa_h - kappa) / kappa
+  double meanMax = 0.0;       // max |kappa_h - kappa| / |kappa|
+  double normal = 0.0;        // RMS |n_h - n|
   double seconds = 0.0;
 };
 
@@ -123,7 +122,7 @@ void run(core::RunContext& ctx)
        [&quadratic](const mesh::SurfaceMesh& s) { return mesh::quadraticFitCurvature(s, quadratic); }}};
 
   std::vector<int> levels, elements, nodes;
-  std::vector<std::vector<Errors>> errors;  // [level][method]
+  std::vector<std::vector<Errors>> errors; // [level][method]
   for (int level = coarsest; level <= finest; ++level) {
     const mesh::SurfaceMesh surface = mesh::makeEllipsoid(level, semiAxes);
     levels.push_back(level);
@@ -192,11 +191,11 @@ void run(core::RunContext& ctx)
 int main(int argc, char** argv)
 {
   const core::AppDescription app{
-    "curvature_report",
-    "accuracy of the element-average, jet-fit and quadratic-fit node curvatures on an ellipsoid",
-    {"curvature_report input/curvature_report/prolate_ellipsoid.xml",
-     "curvature_report input/curvature_report/prolate_ellipsoid.xml --set \"Jet fit/Degree=3\"",
-     "curvature_report input/curvature_report/prolate_ellipsoid.xml --set \"Ellipsoid/Semi-axes={1,1,1}\""},
-    false};
+      "curvature_report",
+      "accuracy of the element-average, jet-fit and quadratic-fit node curvatures on an ellipsoid",
+      {"curvature_report input/curvature_report/prolate_ellipsoid.xml",
+       "curvature_report input/curvature_report/prolate_ellipsoid.xml --set \"Jet fit/Degree=3\"",
+       "curvature_report input/curvature_report/prolate_ellipsoid.xml --set \"Ellipsoid/Semi-axes={1,1,1}\""},
+      false};
   return core::runApplication(argc, argv, app, validParameters, run);
 }

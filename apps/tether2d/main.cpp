@@ -29,8 +29,8 @@ void runTether(core::RunContext& ctx)
   *ctx.out << "Finished at tau = " << result.finalTime << (result.steady ? " (equilibrium)" : "") << " after "
            << result.steps << " steps\n"
            << "  max tether force F/E     = " << result.maxTetherForce << " at tau = " << result.timeOfMaxTetherForce
-           << " (after the tethering transient: " << result.maxTetherForceAfterTransient << " at tau = "
-           << result.timeOfMaxTetherForceAfterTransient << ")\n"
+           << " (after the tethering transient: " << result.maxTetherForceAfterTransient
+           << " at tau = " << result.timeOfMaxTetherForceAfterTransient << ")\n"
            << "  max contour length A/A0  = " << result.maxContourLengthRatio << "\n"
            << "  max cell length L_cell/L = " << result.maxCellLength << "\n"
            << "  final D12                = " << result.final.D12 << "\n"
@@ -45,15 +45,13 @@ void runTether(core::RunContext& ctx)
 int main(int argc, char** argv)
 {
   const core::AppDescription app{
-    "tether2d",
-    "the 2D tethered cell in wall-bounded shear flow (thesis Chapter 4)",
-    {"tether2d input/tether2d/demo.xml --output out/demo",
-     "tether2d input/tether2d/study/ab1_lambda1_ca0.25.xml --output out/ab1_l1_ca0.25",
-     "tether2d input/tether2d/demo.xml --set \"Flow/Capillary number=0.1\" --output out/demo_ca0.1",
-     "tether2d input/tether2d/demo.xml --restart out/demo",
-     "tether2d --print-defaults > my_tether.xml"},
-    true};
-  return core::runApplication(argc, argv, app,
-                              [](const Teuchos::ParameterList&) { return run::validTether2DParameters(); },
-                              runTether);
+      "tether2d",
+      "the 2D tethered cell in wall-bounded shear flow (thesis Chapter 4)",
+      {"tether2d input/tether2d/demo.xml --output out/demo",
+       "tether2d input/tether2d/study/ab1_lambda1_ca0.25.xml --output out/ab1_l1_ca0.25",
+       "tether2d input/tether2d/demo.xml --set \"Flow/Capillary number=0.1\" --output out/demo_ca0.1",
+       "tether2d input/tether2d/demo.xml --restart out/demo", "tether2d --print-defaults > my_tether.xml"},
+      true};
+  return core::runApplication(
+      argc, argv, app, [](const Teuchos::ParameterList&) { return run::validTether2DParameters(); }, runTether);
 }

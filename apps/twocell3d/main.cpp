@@ -11,14 +11,14 @@
 int main(int argc, char** argv)
 {
   const capsula::core::AppDescription app{
-    "twocell3d",
-    "two elastic capsules interacting in shear flow near a wall: separation, relative "
-    "velocities, deformation and stress of each",
-    {"twocell3d input/twocell3d/demo.xml",
-     "mpiexec -n 2 twocell3d input/twocell3d/side-by-side/h2.5-dz0.5-fixed.xml --output out/sbs",
-     "twocell3d input/twocell3d/in-line/h1.25-dx1-free.xml --set \"Cells/Minimum gap=0.1\"",
-     "twocell3d input/twocell3d/demo.xml --output out/demo --restart out/demo --set \"Time integration/End time=4\"",
-     "twocell3d --print-defaults > my_deck.xml"},
-    true};
+      "twocell3d",
+      "two elastic capsules interacting in shear flow near a wall: separation, relative "
+      "velocities, deformation and stress of each",
+      {"twocell3d input/twocell3d/demo.xml",
+       "mpiexec -n 2 twocell3d input/twocell3d/side-by-side/h2.5-dz0.5-fixed.xml --output out/sbs",
+       "twocell3d input/twocell3d/in-line/h1.25-dx1-free.xml --set \"Cells/Minimum gap=0.1\"",
+       "twocell3d input/twocell3d/demo.xml --output out/demo --restart out/demo --set \"Time integration/End time=4\"",
+       "twocell3d --print-defaults > my_deck.xml"},
+      true};
   return capsula::run::runSceneApplication(argc, argv, app);
 }

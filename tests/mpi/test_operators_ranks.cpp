@@ -84,8 +84,10 @@ void compareRanks(double lambdaSphere, double lambdaEllipsoid, double tolerance)
   for (int p = 0; p < 7; ++p) {
     probes.insert(probes.end(), {-1.5 + 0.6 * p, 0.05 + 0.4 * p, 0.3 - 0.1 * p});
   }
-  const auto flow2 = distributed->flowVelocity(probes, LoadDensity::constantOverElements(loads), u2.velocities.data(), flow);
-  const auto flow1 = reference->flowVelocity(probes, LoadDensity::constantOverElements(loads), u1.velocities.data(), flow);
+  const auto flow2 =
+      distributed->flowVelocity(probes, LoadDensity::constantOverElements(loads), u2.velocities.data(), flow);
+  const auto flow1 =
+      reference->flowVelocity(probes, LoadDensity::constantOverElements(loads), u1.velocities.data(), flow);
   const double points = relativeDifference(flow1, flow2);
   if (comm->getRank() == 0) {
     std::printf("lambda (%g, %g): 1 vs 2 ranks, node velocities %.2e, flow %.2e relative; GMRES %d / %d iterations\n",
@@ -136,7 +138,7 @@ TEST(OperatorRanks, WarmStartedVelocitiesMatchOneRank)
     worst = std::max(worst, relativeDifference(u1.velocities, u2.velocities));
     warmIterations = u2.iterations;
     for (std::size_t k = 0; k < x.size(); ++k) {
-      x[k] += 1e-2 * u1.velocities[k];   // the same new positions on both
+      x[k] += 1e-2 * u1.velocities[k]; // the same new positions on both
     }
     distributed->setPositions(x.data());
     reference->setPositions(x.data());

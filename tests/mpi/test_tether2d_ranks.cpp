@@ -38,9 +38,9 @@ Teuchos::ParameterList deck(double lambda)
 {
   const auto valid = run::validTether2DParameters();
   Teuchos::ParameterList d("tether2d");
-  for (const std::string a : {"Cell/Number of points=33", "Flow/Capillary number=0.1",
-                              "Tether/Minimum preparation time=0.125", "Tether/Maximum preparation time=0.25",
-                              "Time integration/End time=0.25", "Output/Interval=0.125"}) {
+  for (const std::string a :
+       {"Cell/Number of points=33", "Flow/Capillary number=0.1", "Tether/Minimum preparation time=0.125",
+        "Tether/Maximum preparation time=0.25", "Time integration/End time=0.25", "Output/Interval=0.125"}) {
     core::applyOverride(d, *valid, a);
   }
   d.sublist("Flow").set("Viscosity ratio", lambda);

@@ -33,15 +33,18 @@ using GO = Map::global_ordinal_type;
 // A dense, non-symmetric "integral-like" operator, applied matrix-free:
 //   (A x)_i = 2 x_i + sum_j k(i, j) x_j / N,  k(i, j) = cos(0.3 i - 0.7 j).
 // Its rows need every entry of x, as a boundary-integral row does.
-double kernel(GO i, GO j) { return std::cos(0.3 * static_cast<double>(i) - 0.7 * static_cast<double>(j)); }
+double kernel(GO i, GO j)
+{
+  return std::cos(0.3 * static_cast<double>(i) - 0.7 * static_cast<double>(j));
+}
 
 class DenseKernelOperator final : public Operator {
 public:
   explicit DenseKernelOperator(Teuchos::RCP<const Map> map)
-    : map_(std::move(map)),
-      replicatedMap_(Teuchos::rcp(new Map(map_->getGlobalNumElements(), 0, map_->getComm(),
-                                          Tpetra::LocallyReplicated))),
-      gather_(Teuchos::rcp(new Tpetra::Import<>(map_, replicatedMap_)))
+      : map_(std::move(map)),
+        replicatedMap_(
+            Teuchos::rcp(new Map(map_->getGlobalNumElements(), 0, map_->getComm(), Tpetra::LocallyReplicated))),
+        gather_(Teuchos::rcp(new Tpetra::Import<>(map_, replicatedMap_)))
   {}
 
   Teuchos::RCP<const Map> getDomainMap() const override { return map_; }
@@ -77,7 +80,10 @@ private:
   Teuchos::RCP<Tpetra::Import<>> gather_;
 };
 
-double exactSolution(GO i) { return std::sin(0.1 * static_cast<double>(i)) + 0.5; }
+double exactSolution(GO i)
+{
+  return std::sin(0.1 * static_cast<double>(i)) + 0.5;
+}
 
 } // namespace
 
@@ -109,7 +115,7 @@ TEST(TpetraBelos, ImportGathersTheWholeVectorOnEveryRank)
   const auto a = all.getData();
   bool ok = a.size() == 57;
   for (decltype(a.size()) g = 0; g < a.size(); ++g) {
-    ok = ok && a[g] == 3.0 * static_cast<double>(g) + 1.0;   // exact: integers
+    ok = ok && a[g] == 3.0 * static_cast<double>(g) + 1.0; // exact: integers
   }
   EXPECT_TRUE(capsula::testing::allRanks(*comm, ok));
 }
@@ -137,7 +143,7 @@ TEST(TpetraBelos, GmresWithMatrixFreeOperatorRecoversKnownSolution)
   check.update(-1.0, *b, 1.0);
   Teuchos::Array<double> diffNorm(1);
   check.norm2(diffNorm());
-  EXPECT_LT(diffNorm[0], 1e-12);   // round-off on O(1) entries
+  EXPECT_LT(diffNorm[0], 1e-12); // round-off on O(1) entries
 
   auto x = Teuchos::rcp(new MV(map, 1));
   auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MV, Operator>(op, x, b));

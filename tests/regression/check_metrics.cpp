@@ -64,8 +64,8 @@ int expect(int argc, char** argv)
     const double actual = (*last)[columnIndex(table, name, file)];
     const bool pass = std::abs(actual - value) <= tolerance;
     ok = ok && pass;
-    std::cout << (pass ? "ok    " : "FAIL  ") << name << " = " << actual << ", expected " << value
-              << " +- " << tolerance << "\n";
+    std::cout << (pass ? "ok    " : "FAIL  ") << name << " = " << actual << ", expected " << value << " +- "
+              << tolerance << "\n";
   }
   return ok ? 0 : 1;
 }
@@ -92,8 +92,8 @@ int same(char** argv)
     }
   }
   const bool pass = worst <= tolerance;
-  std::cout << (pass ? "ok    " : "FAIL  ") << a.rows.size() << " rows, largest relative difference " << worst
-            << " at " << where << " (allowed " << tolerance << ")\n";
+  std::cout << (pass ? "ok    " : "FAIL  ") << a.rows.size() << " rows, largest relative difference " << worst << " at "
+            << where << " (allowed " << tolerance << ")\n";
   return pass ? 0 : 1;
 }
 
@@ -123,7 +123,7 @@ int within(int argc, char** argv)
       const double x = row[column];
       smallest = std::min(smallest, x);
       largest = std::max(largest, x);
-      bad += (x >= low && x <= high) ? 0 : 1;   // NaN fails both comparisons
+      bad += (x >= low && x <= high) ? 0 : 1; // NaN fails both comparisons
     }
     ok = ok && bad == 0;
     std::cout << (bad == 0 ? "ok    " : "FAIL  ") << name << " in [" << smallest << ", " << largest << "] over "

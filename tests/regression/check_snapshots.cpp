@@ -98,8 +98,8 @@ int main(int argc, char** argv)
     if (mode == "checkpoint-time" && argc == 4) {
       const double time = io::readCheckpoint(argv[2]).time;
       const double expected = std::atof(argv[3]);
-      std::cout << (time == expected ? "ok    " : "FAIL  ") << "checkpoint at t = " << time << ", expected "
-                << expected << "\n";
+      std::cout << (time == expected ? "ok    " : "FAIL  ") << "checkpoint at t = " << time << ", expected " << expected
+                << "\n";
       return time == expected ? 0 : 1;
     }
     std::cerr << "usage: check_snapshots same FILE_A FILE_B | count FILE N | checkpoint-time FILE T\n";

@@ -20,13 +20,11 @@ Eigen::Matrix2Xd validatedNodes(Eigen::Matrix2Xd nodes)
   double twiceSignedArea = 0.0;
   for (Eigen::Index k = 0; k < n; ++k) {
     const Eigen::Index next = (k + 1) % n;
-    require<InputError>((nodes.col(next) - nodes.col(k)).norm() > 0.0, "contour nodes ", k, " and ",
-                        next, " coincide at (", nodes(0, k), ", ", nodes(1, k),
-                        "); remove the duplicate");
+    require<InputError>((nodes.col(next) - nodes.col(k)).norm() > 0.0, "contour nodes ", k, " and ", next,
+                        " coincide at (", nodes(0, k), ", ", nodes(1, k), "); remove the duplicate");
     twiceSignedArea += nodes(0, k) * nodes(1, next) - nodes(0, next) * nodes(1, k);
   }
-  require<InputError>(twiceSignedArea > 0.0,
-                      "contour nodes must run counter-clockwise (the polygon's signed area is ",
+  require<InputError>(twiceSignedArea > 0.0, "contour nodes must run counter-clockwise (the polygon's signed area is ",
                       0.5 * twiceSignedArea, "); reverse their order");
   return nodes;
 }
@@ -34,8 +32,8 @@ Eigen::Matrix2Xd validatedNodes(Eigen::Matrix2Xd nodes)
 // The arc-length sum runs for every load evaluation of the 2D single layer (several
 // thousand per right-hand side), so, as the operators' hot loops (RegularSums.hpp), it is
 // also compiled for AVX2 and AVX-512 and the widest one the CPU has is picked at start.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) \
-  && (__GNUC__ >= 11) && !defined(CAPSULA_NO_KERNEL_CLONES)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && (__GNUC__ >= 11) &&       \
+    !defined(CAPSULA_NO_KERNEL_CLONES)
 #define CAPSULA_CONTOUR_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #else
 #define CAPSULA_CONTOUR_CLONES
@@ -47,8 +45,8 @@ Eigen::Matrix2Xd validatedNodes(Eigen::Matrix2Xd nodes)
 /// without dependencies (it vectorises: -fno-math-errno in CMakeLists.txt), then summed in
 /// order. Built without fused multiply-adds (CMakeLists.txt), so every clone returns the same
 /// bits.
-CAPSULA_CONTOUR_CLONES double gaussSpeedSum(const double* tau, const double* weight, std::size_t points,
-                                            double t, double span, const CubicPiece& px, const CubicPiece& py)
+CAPSULA_CONTOUR_CLONES double gaussSpeedSum(const double* tau, const double* weight, std::size_t points, double t,
+                                            double span, const CubicPiece& px, const CubicPiece& py)
 {
   double speed[64]; // points <= 64 (validatedOptions)
   for (std::size_t q = 0; q < points; ++q) {
@@ -67,8 +65,7 @@ CAPSULA_CONTOUR_CLONES double gaussSpeedSum(const double* tau, const double* wei
 ContourOptions validatedOptions(const ContourOptions& options)
 {
   require<InputError>(options.arcLengthPoints >= 1 && options.arcLengthPoints <= 64,
-                      "contour arcLengthPoints must be between 1 and 64, got ",
-                      options.arcLengthPoints);
+                      "contour arcLengthPoints must be between 1 and 64, got ", options.arcLengthPoints);
   return options;
 }
 
@@ -78,9 +75,8 @@ std::vector<double> knotsFor(const Eigen::Matrix2Xd& nodes, Parametrisation para
   const Eigen::Index n = nodes.cols();
   std::vector<double> knots(static_cast<std::size_t>(n) + 1, 0.0);
   for (Eigen::Index k = 0; k < n; ++k) {
-    const double step = parametrisation == Parametrisation::ChordLength
-                            ? (nodes.col((k + 1) % n) - nodes.col(k)).norm()
-                            : 1.0;
+    const double step =
+        parametrisation == Parametrisation::ChordLength ? (nodes.col((k + 1) % n) - nodes.col(k)).norm() : 1.0;
     knots[static_cast<std::size_t>(k) + 1] = knots[static_cast<std::size_t>(k)] + step;
   }
   return knots;
@@ -100,14 +96,16 @@ CubicSpline fitCoordinate(const Eigen::Matrix2Xd& nodes, const ContourOptions& o
   // Tethered: open at the tether node, which ends the contour again at s_max.
   values.push_back(nodes(row, 0));
   return options.tetherEnds == TetherEnds::Natural ? CubicSpline::natural(std::move(knots), values)
-                                                    : CubicSpline::notAKnot(std::move(knots), values);
+                                                   : CubicSpline::notAKnot(std::move(knots), values);
 }
 
 } // namespace
 
 Contour::Contour(Eigen::Matrix2Xd nodes, ContourOptions options)
-    : nodes_(validatedNodes(std::move(nodes))), options_(validatedOptions(options)),
-      xSpline_(fitCoordinate(nodes_, options_, 0)), ySpline_(fitCoordinate(nodes_, options_, 1)),
+    : nodes_(validatedNodes(std::move(nodes))),
+      options_(validatedOptions(options)),
+      xSpline_(fitCoordinate(nodes_, options_, 0)),
+      ySpline_(fitCoordinate(nodes_, options_, 1)),
       arcLengthRule_(quadrature::gaussLegendre(options_.arcLengthPoints))
 {
   const int n = numberOfSegments();
@@ -181,9 +179,9 @@ double Contour::arcLengthAt(int segment, double t) const
   const std::vector<double>& s = parameters();
   const auto k = static_cast<std::size_t>(segment);
   const double span = s[k + 1] - s[k];
-  const double partial = gaussSpeedSum(arcLengthRule_.points.data(), arcLengthRule_.weights.data(),
-                                       arcLengthRule_.points.size(), t, span, xSpline_.piece(segment),
-                                       ySpline_.piece(segment));
+  const double partial =
+      gaussSpeedSum(arcLengthRule_.points.data(), arcLengthRule_.weights.data(), arcLengthRule_.points.size(), t, span,
+                    xSpline_.piece(segment), ySpline_.piece(segment));
   return knotArcLengths_[k] + partial * t * span;
 }
 

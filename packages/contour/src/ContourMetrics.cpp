@@ -15,16 +15,13 @@ namespace {
 /// Degree <= 11 integrands on cubic pieces: 6 Gauss points integrate them exactly.
 constexpr int exactPoints = 6;
 
-
 } // namespace
 
 double enclosedArea(const Contour& contour)
 {
-  return 0.5 * contour.integrate(
-                   [](const ContourPoint& p, int, double) {
-                     return p.position.x() * p.tangent.y() - p.position.y() * p.tangent.x();
-                   },
-                   exactPoints);
+  return 0.5 * contour.integrate([](const ContourPoint& p, int,
+                                    double) { return p.position.x() * p.tangent.y() - p.position.y() * p.tangent.x(); },
+                                 exactPoints);
 }
 
 Eigen::Vector2d centroid(const Contour& contour)
@@ -81,14 +78,12 @@ EquivalentEllipse equivalentEllipse(const Contour& contour)
 double taylorDeformation(const Contour& contour)
 {
   const EquivalentEllipse ellipse = equivalentEllipse(contour);
-  return (ellipse.majorSemiAxis - ellipse.minorSemiAxis) /
-         (ellipse.majorSemiAxis + ellipse.minorSemiAxis);
+  return (ellipse.majorSemiAxis - ellipse.minorSemiAxis) / (ellipse.majorSemiAxis + ellipse.minorSemiAxis);
 }
 
 Extent extent(const Contour& contour, int axis)
 {
-  core::require<core::InputError>(axis == 0 || axis == 1,
-                                  "contour extent: axis must be 0 (x) or 1 (y), got ", axis);
+  core::require<core::InputError>(axis == 0 || axis == 1, "contour extent: axis must be 0 (x) or 1 (y), got ", axis);
   const CubicSpline& spline = axis == 0 ? contour.xSpline() : contour.ySpline();
   const std::vector<double>& s = spline.knots();
   Extent range{spline.piece(0).d, spline.piece(0).d};

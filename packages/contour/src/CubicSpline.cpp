@@ -15,17 +15,14 @@ namespace {
 using core::InputError;
 using core::require;
 
-std::size_t checkedPieces(const std::vector<double>& knots, std::size_t minimumPieces,
-                          const char* kind)
+std::size_t checkedPieces(const std::vector<double>& knots, std::size_t minimumPieces, const char* kind)
 {
-  require<InputError>(knots.size() >= minimumPieces + 1, "a ", kind,
-                      " cubic spline needs at least ", minimumPieces + 1, " knots, got ",
-                      knots.size());
+  require<InputError>(knots.size() >= minimumPieces + 1, "a ", kind, " cubic spline needs at least ", minimumPieces + 1,
+                      " knots, got ", knots.size());
   for (std::size_t k = 0; k + 1 < knots.size(); ++k) {
-    require<InputError>(std::isfinite(knots[k]) && std::isfinite(knots[k + 1]) &&
-                            knots[k + 1] > knots[k],
-                        "cubic spline knots must be finite and strictly increasing; knot ", k + 1,
-                        " (", knots[k + 1], ") does not exceed knot ", k, " (", knots[k], ")");
+    require<InputError>(std::isfinite(knots[k]) && std::isfinite(knots[k + 1]) && knots[k + 1] > knots[k],
+                        "cubic spline knots must be finite and strictly increasing; knot ", k + 1, " (", knots[k + 1],
+                        ") does not exceed knot ", k, " (", knots[k], ")");
   }
   return knots.size() - 1;
 }
@@ -47,10 +44,7 @@ double jumpOfSlopes(const std::vector<double>& y, const std::vector<double>& h, 
 
 } // namespace
 
-CubicSpline::CubicSpline(std::vector<double> knots, SplineEnds ends)
-    : knots_(std::move(knots)), ends_(ends)
-{
-}
+CubicSpline::CubicSpline(std::vector<double> knots, SplineEnds ends) : knots_(std::move(knots)), ends_(ends) {}
 
 void CubicSpline::buildPieces(const std::vector<double>& y, const std::vector<double>& m)
 {
@@ -68,8 +62,8 @@ void CubicSpline::buildPieces(const std::vector<double>& y, const std::vector<do
 CubicSpline CubicSpline::periodic(std::vector<double> knots, const std::vector<double>& values)
 {
   const std::size_t n = checkedPieces(knots, 3, "periodic");
-  require<InputError>(values.size() == n, "a periodic cubic spline over ", n + 1, " knots takes ",
-                      n, " values (one per piece), got ", values.size());
+  require<InputError>(values.size() == n, "a periodic cubic spline over ", n + 1, " knots takes ", n,
+                      " values (one per piece), got ", values.size());
   CubicSpline spline(std::move(knots), SplineEnds::Periodic);
   const std::vector<double> h = spacings(spline.knots_);
   std::vector<double> y(values);
@@ -94,8 +88,8 @@ CubicSpline CubicSpline::periodic(std::vector<double> knots, const std::vector<d
 CubicSpline CubicSpline::natural(std::vector<double> knots, const std::vector<double>& values)
 {
   const std::size_t n = checkedPieces(knots, 1, "natural");
-  require<InputError>(values.size() == n + 1, "an open cubic spline over ", n + 1, " knots takes ",
-                      n + 1, " values, got ", values.size());
+  require<InputError>(values.size() == n + 1, "an open cubic spline over ", n + 1, " knots takes ", n + 1,
+                      " values, got ", values.size());
   CubicSpline spline(std::move(knots), SplineEnds::Natural);
   const std::vector<double> h = spacings(spline.knots_);
 
@@ -117,15 +111,14 @@ CubicSpline CubicSpline::natural(std::vector<double> knots, const std::vector<do
   return spline;
 }
 
-CubicSpline CubicSpline::clamped(std::vector<double> knots, const std::vector<double>& values,
-                                 double startSlope, double endSlope)
+CubicSpline CubicSpline::clamped(std::vector<double> knots, const std::vector<double>& values, double startSlope,
+                                 double endSlope)
 {
   const std::size_t n = checkedPieces(knots, 1, "clamped");
-  require<InputError>(values.size() == n + 1, "an open cubic spline over ", n + 1, " knots takes ",
-                      n + 1, " values, got ", values.size());
+  require<InputError>(values.size() == n + 1, "an open cubic spline over ", n + 1, " knots takes ", n + 1,
+                      " values, got ", values.size());
   require<InputError>(std::isfinite(startSlope) && std::isfinite(endSlope),
-                      "clamped cubic spline: the end slopes must be finite, got ", startSlope,
-                      " and ", endSlope);
+                      "clamped cubic spline: the end slopes must be finite, got ", startSlope, " and ", endSlope);
   CubicSpline spline(std::move(knots), SplineEnds::Clamped);
   const std::vector<double> h = spacings(spline.knots_);
 
@@ -155,8 +148,8 @@ CubicSpline CubicSpline::clamped(std::vector<double> knots, const std::vector<do
 CubicSpline CubicSpline::notAKnot(std::vector<double> knots, const std::vector<double>& values)
 {
   const std::size_t n = checkedPieces(knots, 3, "not-a-knot");
-  require<InputError>(values.size() == n + 1, "an open cubic spline over ", n + 1, " knots takes ",
-                      n + 1, " values, got ", values.size());
+  require<InputError>(values.size() == n + 1, "an open cubic spline over ", n + 1, " knots takes ", n + 1,
+                      " values, got ", values.size());
   CubicSpline spline(std::move(knots), SplineEnds::NotAKnot);
   const std::vector<double> h = spacings(spline.knots_);
 
@@ -203,8 +196,8 @@ CubicSpline CubicSpline::interpolating(std::vector<double> knots, const std::vec
     return notAKnot(std::move(knots), values);
   }
   const std::size_t n = checkedPieces(knots, 1, "interpolating");
-  require<InputError>(values.size() == n + 1, "an open cubic spline over ", n + 1, " knots takes ",
-                      n + 1, " values, got ", values.size());
+  require<InputError>(values.size() == n + 1, "an open cubic spline over ", n + 1, " knots takes ", n + 1,
+                      " values, got ", values.size());
   CubicSpline spline(std::move(knots), SplineEnds::NotAKnot);
   const std::vector<double> h = spacings(spline.knots_);
   // The line has M = 0; the parabola through three samples the constant M = 2 c, c its

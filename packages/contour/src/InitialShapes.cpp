@@ -20,8 +20,7 @@ using core::require;
 /// a table of panel integrals plus Gauss-Legendre inside a panel, inverted by Newton.
 class EllipseArcLength {
 public:
-  EllipseArcLength(double a, double b, double start)
-      : a_(a), b_(b), start_(start), rule_(quadrature::gaussLegendre(16))
+  EllipseArcLength(double a, double b, double start) : a_(a), b_(b), start_(start), rule_(quadrature::gaussLegendre(16))
   {
     // The speed sqrt(a^2 sin^2 + b^2 cos^2) is analytic within atanh(min/max) of the real
     // axis; panels no wider than that distance make 16-point Gauss exact to round-off.
@@ -43,8 +42,7 @@ public:
   {
     const auto above = std::upper_bound(cumulative_.begin(), cumulative_.end(), target);
     const std::size_t j =
-        std::min(static_cast<std::size_t>(std::max<long>(above - cumulative_.begin() - 1, 0)),
-                 panelCount_ - 1);
+        std::min(static_cast<std::size_t>(std::max<long>(above - cumulative_.begin() - 1, 0)), panelCount_ - 1);
     const double panelLength = cumulative_[j + 1] - cumulative_[j];
     double theta = edge(j) + width_ * (target - cumulative_[j]) / panelLength;
     for (int iteration = 0; iteration < 50; ++iteration) {
@@ -59,10 +57,7 @@ public:
   }
 
 private:
-  double speed(double theta) const
-  {
-    return std::hypot(a_ * std::sin(theta), b_ * std::cos(theta));
-  }
+  double speed(double theta) const { return std::hypot(a_ * std::sin(theta), b_ * std::cos(theta)); }
 
   double edge(std::size_t j) const { return start_ + static_cast<double>(j) * width_; }
 
@@ -88,8 +83,7 @@ private:
 
 Eigen::Matrix2Xd ellipseNodes(int numberOfNodes, const EllipseShape& shape)
 {
-  require<InputError>(numberOfNodes >= 3, "an ellipse contour needs at least 3 nodes, got ",
-                      numberOfNodes);
+  require<InputError>(numberOfNodes >= 3, "an ellipse contour needs at least 3 nodes, got ", numberOfNodes);
   require<InputError>(std::isfinite(shape.aspectRatio) && shape.aspectRatio > 0.0,
                       "ellipse aspect ratio a/b must be positive, got ", shape.aspectRatio);
   require<InputError>(std::isfinite(shape.lengthScale) && shape.lengthScale > 0.0,
@@ -109,8 +103,7 @@ Eigen::Matrix2Xd ellipseNodes(int numberOfNodes, const EllipseShape& shape)
   } else {
     const EllipseArcLength arc(a, b, shape.firstNodeAngle);
     for (int i = 0; i < numberOfNodes; ++i) {
-      angles[static_cast<std::size_t>(i)] =
-          arc.angleAt(arc.perimeter() * static_cast<double>(i) / numberOfNodes);
+      angles[static_cast<std::size_t>(i)] = arc.angleAt(arc.perimeter() * static_cast<double>(i) / numberOfNodes);
     }
   }
 
@@ -127,11 +120,9 @@ Eigen::Matrix2Xd ellipseNodes(int numberOfNodes, const EllipseShape& shape)
   return nodes;
 }
 
-Eigen::Matrix2Xd circleNodes(int numberOfNodes, double radius, const Eigen::Vector2d& centre,
-                             double firstNodeAngle)
+Eigen::Matrix2Xd circleNodes(int numberOfNodes, double radius, const Eigen::Vector2d& centre, double firstNodeAngle)
 {
-  require<InputError>(std::isfinite(radius) && radius > 0.0, "circle radius must be positive, got ",
-                      radius);
+  require<InputError>(std::isfinite(radius) && radius > 0.0, "circle radius must be positive, got ", radius);
   EllipseShape shape;
   shape.lengthScale = radius;
   shape.centre = centre;

@@ -41,8 +41,7 @@ void solveCyclicTridiagonal(const std::vector<double>& lower, const std::vector<
                             const std::vector<double>& upper, std::vector<double>& rhs)
 {
   const std::size_t n = diagonal.size();
-  core::require<core::InputError>(n >= 3, "solveCyclicTridiagonal: needs at least 3 unknowns, got ",
-                                  n);
+  core::require<core::InputError>(n >= 3, "solveCyclicTridiagonal: needs at least 3 unknowns, got ", n);
   core::require<core::InputError>(lower.size() == n && upper.size() == n && rhs.size() == n,
                                   "solveCyclicTridiagonal: the bands and the right-hand side must "
                                   "all have ",
@@ -66,8 +65,7 @@ void solveCyclicTridiagonal(const std::vector<double>& lower, const std::vector<
   const double vDotY = rhs[0] + beta / g * rhs[n - 1];
   const double vDotZ = z[0] + beta / g * z[n - 1];
   const double denominator = 1.0 + vDotZ;
-  core::require<core::NumericalError>(denominator != 0.0,
-                                      "solveCyclicTridiagonal: singular cyclic system");
+  core::require<core::NumericalError>(denominator != 0.0, "solveCyclicTridiagonal: singular cyclic system");
   const double factor = vDotY / denominator;
   for (std::size_t i = 0; i < n; ++i) {
     rhs[i] -= factor * z[i];

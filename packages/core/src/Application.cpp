@@ -16,8 +16,7 @@ namespace capsula::core {
 namespace {
 
 Teuchos::RCP<Teuchos::ParameterList> loadDeck(const CommandLineOptions& options,
-                                              const ValidParameterBuilder& validParameters,
-                                              std::string& deckName)
+                                              const ValidParameterBuilder& validParameters, std::string& deckName)
 {
   require<InputError>(!options.deckPath.empty(), "No deck given. Usage: APP DECK.xml [options]; ",
                       "run with --help for examples or --print-defaults for every key.");
@@ -35,8 +34,7 @@ Teuchos::RCP<Teuchos::ParameterList> loadDeck(const CommandLineOptions& options,
 
 } // namespace
 
-int runApplication(int argc, char** argv, const AppDescription& app,
-                   const ValidParameterBuilder& validParameters,
+int runApplication(int argc, char** argv, const AppDescription& app, const ValidParameterBuilder& validParameters,
                    const std::function<void(RunContext&)>& run)
 {
   // --help is answered before Kokkos starts: Kokkos also takes --help and would print its

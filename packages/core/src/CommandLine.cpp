@@ -41,8 +41,8 @@ CommandLineOptions parseCommandLine(int argc, const char* const* argv)
     } else if (arg.rfind("-", 0) == 0) {
       throw InputError("Unknown option '" + arg + "'. Run with --help to see the options.");
     } else {
-      require<InputError>(options.deckPath.empty(), "Two decks given ('", options.deckPath, "' and '",
-                          arg, "'): give one deck; use --set to change single values.");
+      require<InputError>(options.deckPath.empty(), "Two decks given ('", options.deckPath, "' and '", arg,
+                          "'): give one deck; use --set to change single values.");
       options.deckPath = arg;
     }
   }

@@ -50,8 +50,8 @@ std::string typeNameOf(const Teuchos::ParameterEntry& entry)
   return converter->getTypeAttributeValue();
 }
 
-void checkAgainst(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
-                  const std::string& path, const std::string& deckName)
+void checkAgainst(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid, const std::string& path,
+                  const std::string& deckName)
 {
   for (auto it = deck.begin(); it != deck.end(); ++it) {
     const std::string& name = deck.name(it);
@@ -63,14 +63,14 @@ void checkAgainst(Teuchos::ParameterList& deck, const Teuchos::ParameterList& va
       if (const auto guess = closestMatch(name, namesIn(valid))) {
         msg += " Did you mean '" + joinPath(path, *guess) + "'?";
       }
-      msg += " Valid keys" + (path.empty() ? std::string(" at the top level") : " in '" + path + "'") +
-             ": " + listOfNames(namesIn(valid)) + ".";
+      msg += " Valid keys" + (path.empty() ? std::string(" at the top level") : " in '" + path + "'") + ": " +
+             listOfNames(namesIn(valid)) + ".";
       throw InputError(msg);
     }
     if (validEntry->isList() != entry.isList()) {
       throw InputError(message("Deck '", deckName, "': '", keyPath, "' must be ",
-                               validEntry->isList() ? "a ParameterList (sublist)" : "a Parameter (value)",
-                               ", not a ", entry.isList() ? "sublist" : "value", "."));
+                               validEntry->isList() ? "a ParameterList (sublist)" : "a Parameter (value)", ", not a ",
+                               entry.isList() ? "sublist" : "value", "."));
     }
     if (entry.isList()) {
       checkAgainst(Teuchos::getValue<Teuchos::ParameterList>(entry),
@@ -104,8 +104,7 @@ void checkAgainst(Teuchos::ParameterList& deck, const Teuchos::ParameterList& va
   }
 }
 
-const Teuchos::ParameterEntry* findEntry(const Teuchos::ParameterList& list,
-                                         const std::vector<std::string>& path)
+const Teuchos::ParameterEntry* findEntry(const Teuchos::ParameterList& list, const std::vector<std::string>& path)
 {
   const Teuchos::ParameterList* current = &list;
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
@@ -179,8 +178,7 @@ Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path)
   return readDeckFromString(buffer.str(), path);
 }
 
-Teuchos::RCP<Teuchos::ParameterList> readDeckFromString(const std::string& xml,
-                                                        const std::string& sourceName)
+Teuchos::RCP<Teuchos::ParameterList> readDeckFromString(const std::string& xml, const std::string& sourceName)
 {
   try {
     return Teuchos::getParametersFromXmlString(xml);
@@ -195,8 +193,7 @@ Teuchos::RCP<Teuchos::ParameterList> readDeckFromString(const std::string& xml,
   }
 }
 
-void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
-                  const std::string& deckName)
+void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid, const std::string& deckName)
 {
   checkAgainst(deck, valid, "", deckName);
   try {
@@ -206,8 +203,7 @@ void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& va
   }
 }
 
-void applyOverride(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
-                   const std::string& assignment)
+void applyOverride(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid, const std::string& assignment)
 {
   const auto eq = assignment.find('=');
   require<InputError>(eq != std::string::npos && eq > 0, "--set \"", assignment,
@@ -305,11 +301,20 @@ std::string xmlEscape(const std::string& s)
   std::string out;
   for (char c : s) {
     switch (c) {
-    case '&': out += "&amp;"; break;
-    case '<': out += "&lt;"; break;
-    case '>': out += "&gt;"; break;
-    case '"': out += "&quot;"; break;
-    default: out += c;
+    case '&':
+      out += "&amp;";
+      break;
+    case '<':
+      out += "&lt;";
+      break;
+    case '>':
+      out += "&gt;";
+      break;
+    case '"':
+      out += "&quot;";
+      break;
+    default:
+      out += c;
     }
   }
   return out;
@@ -337,8 +342,7 @@ std::string commentSafe(std::string s)
   return s;
 }
 
-void writeList(std::ostream& out, const Teuchos::ParameterList& list, const std::string& name,
-               bool withDocs, int depth)
+void writeList(std::ostream& out, const Teuchos::ParameterList& list, const std::string& name, bool withDocs, int depth)
 {
   const std::string indent(static_cast<std::size_t>(2 * depth), ' ');
   out << indent << "<ParameterList name=\"" << xmlEscape(name) << "\">\n";
@@ -360,8 +364,7 @@ void writeList(std::ostream& out, const Teuchos::ParameterList& list, const std:
     if (entry.isList()) {
       writeList(out, Teuchos::getValue<Teuchos::ParameterList>(entry), key, withDocs, depth + 1);
     } else {
-      const auto converter =
-        Teuchos::ParameterEntryXMLConverterDB::getConverter(Teuchos::rcpFromRef(entry));
+      const auto converter = Teuchos::ParameterEntryXMLConverterDB::getConverter(Teuchos::rcpFromRef(entry));
       std::string value;
       if (entry.isType<double>()) {
         value = shortestReal(entry.getValue<double>(nullptr));
@@ -375,8 +378,8 @@ void writeList(std::ostream& out, const Teuchos::ParameterList& list, const std:
       } else {
         value = converter->getValueAttributeValue(Teuchos::rcpFromRef(entry));
       }
-      out << inner << "<Parameter name=\"" << xmlEscape(key) << "\" type=\""
-          << converter->getTypeAttributeValue() << "\" value=\"" << xmlEscape(value) << "\"/>\n";
+      out << inner << "<Parameter name=\"" << xmlEscape(key) << "\" type=\"" << converter->getTypeAttributeValue()
+          << "\" value=\"" << xmlEscape(value) << "\"/>\n";
     }
   }
   out << indent << "</ParameterList>\n";

@@ -66,7 +66,7 @@ std::string rangeText(const std::optional<Bound>& lower, const std::optional<Bou
 } // namespace
 
 RealRangeValidator::RealRangeValidator(std::optional<Bound> lower, std::optional<Bound> upper)
-  : lower_(lower), upper_(upper)
+    : lower_(lower), upper_(upper)
 {}
 
 std::string RealRangeValidator::requirement() const
@@ -74,7 +74,10 @@ std::string RealRangeValidator::requirement() const
   return "a finite real number" + rangeText(lower_, upper_);
 }
 
-bool RealRangeValidator::accepts(double value) const { return satisfies(value, lower_, upper_); }
+bool RealRangeValidator::accepts(double value) const
+{
+  return satisfies(value, lower_, upper_);
+}
 
 std::string RealRangeValidator::check(const Teuchos::ParameterEntry& entry) const
 {
@@ -88,8 +91,7 @@ std::string RealRangeValidator::check(const Teuchos::ParameterEntry& entry) cons
   return {};
 }
 
-IntRangeValidator::IntRangeValidator(std::optional<int> lower, std::optional<int> upper)
-  : lower_(lower), upper_(upper)
+IntRangeValidator::IntRangeValidator(std::optional<int> lower, std::optional<int> upper) : lower_(lower), upper_(upper)
 {}
 
 std::string IntRangeValidator::requirement() const
@@ -152,13 +154,13 @@ Teuchos::ParameterEntryValidator::ValidStringsList ChoiceValidator::validStringV
 }
 
 RealArrayValidator::RealArrayValidator(int length, std::optional<Bound> lower, std::optional<Bound> upper)
-  : length_(length), element_(lower, upper)
+    : length_(length), element_(lower, upper)
 {}
 
 std::string RealArrayValidator::requirement() const
 {
-  std::string text = length_ > 0 ? message("an Array(double) of ", length_, " entries")
-                                 : std::string("an Array(double)");
+  std::string text =
+      length_ > 0 ? message("an Array(double) of ", length_, " entries") : std::string("an Array(double)");
   return text + ", each " + element_.requirement();
 }
 

@@ -9,9 +9,18 @@ const char* gitSha();
 const char* capsulaVersion();
 } // namespace generated
 
-std::string gitSha() { return generated::gitSha(); }
-std::string capsulaVersion() { return generated::capsulaVersion(); }
-std::string trilinosVersion() { return TRILINOS_VERSION_STRING; }
+std::string gitSha()
+{
+  return generated::gitSha();
+}
+std::string capsulaVersion()
+{
+  return generated::capsulaVersion();
+}
+std::string trilinosVersion()
+{
+  return TRILINOS_VERSION_STRING;
+}
 
 std::string versionLine()
 {

@@ -33,8 +33,7 @@ std::vector<TimerTotal> timerTotals()
 void printTimerSummary(const Teuchos::Comm<int>& comm, std::ostream& out)
 {
   // Union: a timer used on some ranks only still appears.
-  Teuchos::TimeMonitor::summarize(Teuchos::rcpFromRef(comm).ptr(), out, false, true, false,
-                                  Teuchos::Union);
+  Teuchos::TimeMonitor::summarize(Teuchos::rcpFromRef(comm).ptr(), out, false, true, false, Teuchos::Union);
 }
 
 } // namespace capsula::core

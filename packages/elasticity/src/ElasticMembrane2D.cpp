@@ -18,15 +18,14 @@ using contour::CubicSpline;
 
 ElasticMembrane2D::ElasticMembrane2D(const Contour& reference, HookeanLaw2D law)
     : law_(law), closure_(reference.closure()), referenceArcLengths_(reference.knotArcLengths())
-{
-}
+{}
 
 MembraneState2D ElasticMembrane2D::evaluate(const Contour& current) const
 {
   const int n = numberOfNodes();
-  core::require<core::InputError>(
-      current.numberOfNodes() == n, "the deformed contour has ", current.numberOfNodes(),
-      " nodes but the membrane's reference has ", n, "; markers must be the same material points");
+  core::require<core::InputError>(current.numberOfNodes() == n, "the deformed contour has ", current.numberOfNodes(),
+                                  " nodes but the membrane's reference has ", n,
+                                  "; markers must be the same material points");
   core::require<core::InputError>(current.closure() == closure_,
                                   "the deformed contour and the membrane's reference must be both "
                                   "periodic or both tethered");

@@ -8,9 +8,9 @@ namespace capsula::elasticity {
 
 HookeanLaw2D::HookeanLaw2D(double modulus) : modulus_(modulus)
 {
-  core::require<core::InputError>(
-      std::isfinite(modulus) && modulus > 0.0,
-      "the 2D Hookean membrane needs a positive elastic modulus E, got ", modulus, "; give E > 0");
+  core::require<core::InputError>(std::isfinite(modulus) && modulus > 0.0,
+                                  "the 2D Hookean membrane needs a positive elastic modulus E, got ", modulus,
+                                  "; give E > 0");
 }
 
 } // namespace capsula::elasticity

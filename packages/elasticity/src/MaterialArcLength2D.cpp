@@ -12,8 +12,8 @@ namespace {
 contour::CubicSpline materialSpline(const std::vector<double>& l0, const std::vector<double>& l,
                                     contour::Closure closure, double meanStretch)
 {
-  core::require<core::InputError>(l0.size() == l.size() && l0.size() >= 4,
-                                  "MaterialArcLength2D: ", l0.size(), " reference and ", l.size(),
+  core::require<core::InputError>(l0.size() == l.size() && l0.size() >= 4, "MaterialArcLength2D: ", l0.size(),
+                                  " reference and ", l.size(),
                                   " current arc lengths; they must match and hold at least 4 knots");
   if (closure == contour::Closure::Periodic) {
     const std::size_t nodes = l0.size() - 1;
@@ -30,16 +30,14 @@ contour::CubicSpline materialSpline(const std::vector<double>& l0, const std::ve
 
 MaterialArcLength2D::MaterialArcLength2D(const std::vector<double>& referenceArcLengths,
                                          const std::vector<double>& currentArcLengths, contour::Closure closure)
-  : spline_(materialSpline(referenceArcLengths, currentArcLengths, closure,
-                           closure == contour::Closure::Periodic
-                               ? currentArcLengths.back() / referenceArcLengths.back()
-                               : 0.0)),
-    meanStretch_(closure == contour::Closure::Periodic ? currentArcLengths.back() / referenceArcLengths.back() : 0.0),
-    referenceLength_(referenceArcLengths.back()),
-    currentLength_(currentArcLengths.back()),
-    periodic_(closure == contour::Closure::Periodic)
-{
-}
+    : spline_(materialSpline(
+          referenceArcLengths, currentArcLengths, closure,
+          closure == contour::Closure::Periodic ? currentArcLengths.back() / referenceArcLengths.back() : 0.0)),
+      meanStretch_(closure == contour::Closure::Periodic ? currentArcLengths.back() / referenceArcLengths.back() : 0.0),
+      referenceLength_(referenceArcLengths.back()),
+      currentLength_(currentArcLengths.back()),
+      periodic_(closure == contour::Closure::Periodic)
+{}
 
 double MaterialArcLength2D::currentArcLength(double referenceArcLength) const
 {
@@ -61,8 +59,9 @@ double MaterialArcLength2D::referenceArcLength(double currentArcLength) const
   const double guess = currentArcLength * referenceLength_ / currentLength_;
   double lo = periodic_ ? guess - referenceLength_ : 0.0;
   double hi = periodic_ ? guess + referenceLength_ : referenceLength_;
-  core::require(residual(lo) <= 0.0 && residual(hi) >= 0.0, "MaterialArcLength2D: l(l0) does not bracket l = ",
-                currentArcLength, ": the membrane is crushed (stretch <= 0) somewhere");
+  core::require(residual(lo) <= 0.0 && residual(hi) >= 0.0,
+                "MaterialArcLength2D: l(l0) does not bracket l = ", currentArcLength,
+                ": the membrane is crushed (stretch <= 0) somewhere");
   double l0 = guess; // the root for a uniform stretch
   for (int iteration = 0; iteration < 200; ++iteration) {
     const double r = residual(l0);

@@ -12,8 +12,7 @@ std::vector<std::string> membraneLawNames()
   return {"NeoHookean", "Skalak"};
 }
 
-std::unique_ptr<MembraneLaw> makeMembraneLaw(const std::string& name,
-                                             const MembraneLawParameters& parameters)
+std::unique_ptr<MembraneLaw> makeMembraneLaw(const std::string& name, const MembraneLawParameters& parameters)
 {
   if (name == "NeoHookean") {
     return std::make_unique<NeoHookeanLaw>(parameters.shearModulus);
@@ -25,8 +24,7 @@ std::unique_ptr<MembraneLaw> makeMembraneLaw(const std::string& name,
   for (const std::string& law : membraneLawNames()) {
     known += (known.empty() ? "" : ", ") + law;
   }
-  throw core::InputError(
-      core::message("unknown membrane law '", name, "'; choose one of: ", known));
+  throw core::InputError(core::message("unknown membrane law '", name, "'; choose one of: ", known));
 }
 
 } // namespace capsula::elasticity

@@ -41,20 +41,20 @@ std::string to_string(MembraneForceMethod method)
   return method == MembraneForceMethod::ContourIntegral ? "Contour integral" : "Virtual work";
 }
 
-MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh,
-                                     std::vector<double> referencePositions,
+MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh, std::vector<double> referencePositions,
                                      std::shared_ptr<const MembraneLaw> law,
                                      const MembraneDiscretisation& discretisation)
-    : mesh_(&mesh), reference_(std::move(referencePositions)), law_(std::move(law)),
+    : mesh_(&mesh),
+      reference_(std::move(referencePositions)),
+      law_(std::move(law)),
       discretisation_(discretisation),
       areaRule_(&quadrature::triangleRule(discretisation.numQuadraturePoints))
 {
   const int numNodes = mesh.numNodes();
   const int numElements = mesh.numElements();
   core::require<core::InputError>(reference_.size() == 3 * static_cast<std::size_t>(numNodes),
-                                  "the membrane reference has ", reference_.size(),
-                                  " coordinates but the mesh has ", numNodes, " nodes (",
-                                  3 * numNodes, " coordinates expected)");
+                                  "the membrane reference has ", reference_.size(), " coordinates but the mesh has ",
+                                  numNodes, " nodes (", 3 * numNodes, " coordinates expected)");
   core::require<core::InputError>(law_ != nullptr, "the membrane needs a constitutive law");
   core::require<core::InputError>(discretisation.numEdgePoints >= 1,
                                   "the membrane contour integral needs numEdgePoints >= 1, got ",
@@ -74,13 +74,11 @@ MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh,
       const int node = mesh.element(e)[j];
       const SurfacePoint S = mesh::evaluateAtNode(X, p, j);
       const Vec3& N = referenceNormal_[node];
-      core::require<core::InputError>(
-          std::isfinite(S.metric) && S.metric > 0.0 && S.normal.dot(N) > 0.0,
-          "the membrane reference is degenerate or folded at node ", node, " of element ", e,
-          " (element normal . nodal normal = ", S.normal.dot(N), ")");
+      core::require<core::InputError>(std::isfinite(S.metric) && S.metric > 0.0 && S.normal.dot(N) > 0.0,
+                                      "the membrane reference is degenerate or folded at node ", node, " of element ",
+                                      e, " (element normal . nodal normal = ", S.normal.dot(N), ")");
       const auto dual = dualTangents(S.tangentXi, S.tangentEta);
-      referenceDual_[slot(e, j)] = {rotateOnto(dual[0], S.normal, N),
-                                    rotateOnto(dual[1], S.normal, N)};
+      referenceDual_[slot(e, j)] = {rotateOnto(dual[0], S.normal, N), rotateOnto(dual[1], S.normal, N)};
     }
   }
 
@@ -91,8 +89,8 @@ MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh,
     for (int e = 0; e < numElements; ++e) {
       const ElementNodes X = mesh.elementNodes(e, reference_.data());
       for (std::size_t q = 0; q < rule.weight.size(); ++q) {
-        referencePoints_.push_back(referenceQuadraturePoint(X, referenceParameters_[e], rule.xi[q],
-                                                            rule.eta[q], rule.weight[q]));
+        referencePoints_.push_back(
+            referenceQuadraturePoint(X, referenceParameters_[e], rule.xi[q], rule.eta[q], rule.weight[q]));
       }
     }
     mass_ = std::make_unique<mesh::SurfaceMassMatrix>(mesh);
@@ -119,8 +117,8 @@ void MembraneMechanics::evaluate(const double* positions, MembraneEvaluation wha
   // The virtual-work load needs neither the nodal average of A nor the nodal tensions
   // (steps 2-3 below, a third of this function's time at level 3); the fold check of
   // step 2 is kept.
-  const bool nodal = what == MembraneEvaluation::Everything ||
-                     discretisation_.forceMethod == MembraneForceMethod::ContourIntegral;
+  const bool nodal =
+      what == MembraneEvaluation::Everything || discretisation_.forceMethod == MembraneForceMethod::ContourIntegral;
   const mesh::SurfaceMesh& mesh = *mesh_;
   const quadrature::TriangleRule& rule = *areaRule_;
   const int numNodes = mesh.numNodes();
@@ -165,15 +163,14 @@ void MembraneMechanics::evaluate(const double* positions, MembraneEvaluation wha
       const auto& t = currentTangent_[slot(e, j)];
       const Vec3 ne = t[0].cross(t[1]).normalized();
       const Vec3& n = normal_[node];
-      core::require<core::NumericalError>(ne.dot(n) > 0.0, "the membrane is folded at node ", node,
-                                          " of element ", e,
+      core::require<core::NumericalError>(ne.dot(n) > 0.0, "the membrane is folded at node ", node, " of element ", e,
                                           " (element normal . nodal normal = ", ne.dot(n), ")");
       if (!nodal) {
         continue;
       }
       const auto& dual = referenceDual_[slot(e, j)];
-      gradient_[node] += area_[e] * (rotateOnto(t[0], ne, n) * dual[0].transpose() +
-                                     rotateOnto(t[1], ne, n) * dual[1].transpose());
+      gradient_[node] +=
+          area_[e] * (rotateOnto(t[0], ne, n) * dual[0].transpose() + rotateOnto(t[1], ne, n) * dual[1].transpose());
     }
   }
 
@@ -181,12 +178,10 @@ void MembraneMechanics::evaluate(const double* positions, MembraneEvaluation wha
   const MembraneLaw& law = *law_;
   for (int i = 0; i < (nodal ? numNodes : 0); ++i) {
     const Vec3& n = normal_[i];
-    const Mat3 A =
-        tangentProjector(n) * (gradient_[i] / weight_[i]) * tangentProjector(referenceNormal_[i]);
+    const Mat3 A = tangentProjector(n) * (gradient_[i] / weight_[i]) * tangentProjector(referenceNormal_[i]);
     const Mat3 B = A * A.transpose();
     const PrincipalStretches s = principalStretches(B, n);
-    core::require<core::NumericalError>(std::isfinite(s.minor) && s.minor > 0.0,
-                                        "the membrane is crushed at node ", i,
+    core::require<core::NumericalError>(std::isfinite(s.minor) && s.minor > 0.0, "the membrane is crushed at node ", i,
                                         " (principal stretches ", s.major, ", ", s.minor, ")");
     const StrainInvariants I = strainInvariants(s);
     const EnergyDerivatives dw = law.energyDerivatives(I.I1, I.I2);
@@ -220,8 +215,7 @@ void MembraneMechanics::contourIntegralLoads(const double* positions)
       edge.normal[k] = normal_[nodes[k]];
       edge.tension[k] = tension_[nodes[k]];
     }
-    const double midParameter =
-        edgeMidParameter(edge.position[0], edge.position[1], edge.position[2]);
+    const double midParameter = edgeMidParameter(edge.position[0], edge.position[1], edge.position[2]);
     // b points out of elements[0], which traverses the edge in this direction.
     const EdgeResultant transmitted = edgeTensionResultant(edge, midParameter, edgeRule_);
     force_[ed.elements[0]] -= transmitted.force;
@@ -251,10 +245,9 @@ void MembraneMechanics::virtualWorkLoads(const double* positions)
       g.setZero();
     }
     for (std::size_t q = 0; q < nq; ++q) {
-      const double energy =
-        addEnergyGradient(referencePoints_[static_cast<std::size_t>(e) * nq + q], x, law, gradient);
-      core::require<core::NumericalError>(std::isfinite(energy), "the membrane is crushed in element ",
-                                          e, " (degenerate tangents at a quadrature point)");
+      const double energy = addEnergyGradient(referencePoints_[static_cast<std::size_t>(e) * nq + q], x, law, gradient);
+      core::require<core::NumericalError>(std::isfinite(energy), "the membrane is crushed in element ", e,
+                                          " (degenerate tangents at a quadrature point)");
     }
     for (int k = 0; k < 6; ++k) {
       nodalForce_[static_cast<std::size_t>(mesh.element(e)[k])] += gradient[k];
@@ -352,8 +345,7 @@ double MembraneMechanics::strainEnergy(const double* positions) const
     for (std::size_t q = 0; q < rule.weight.size(); ++q) {
       const SurfacePoint S = mesh::evaluateSurfacePoint(X, p, rule.xi[q], rule.eta[q]);
       const SurfacePoint s = mesh::evaluateSurfacePoint(x, p, rule.xi[q], rule.eta[q]);
-      const Mat3 A = surfaceDeformationGradient(s.tangentXi, s.tangentEta,
-                                                dualTangents(S.tangentXi, S.tangentEta));
+      const Mat3 A = surfaceDeformationGradient(s.tangentXi, s.tangentEta, dualTangents(S.tangentXi, S.tangentEta));
       // Element-wise A is exact: tr B = |A|_F^2 and J = h_s / H_s.
       const double J = s.metric / S.metric;
       const double I1 = A.squaredNorm() - 2.0;
@@ -379,8 +371,8 @@ TangentStiffness MembraneMechanics::tangentStiffness(const double* positions) co
     K.fill(0.0);
     for (std::size_t q = 0; q < nq; ++q) {
       core::require<core::NumericalError>(
-        addEnergyHessian(referencePoints_[static_cast<std::size_t>(e) * nq + q], x, *law_, K),
-        "the membrane is crushed in element ", e, " (degenerate tangents at a quadrature point)");
+          addEnergyHessian(referencePoints_[static_cast<std::size_t>(e) * nq + q], x, *law_, K),
+          "the membrane is crushed in element ", e, " (degenerate tangents at a quadrature point)");
     }
   }
   return TangentStiffness(mesh, std::move(elements));

@@ -9,8 +9,7 @@ namespace capsula::elasticity {
 
 MembraneState2D::MembraneState2D(contour::Contour current, contour::CubicSpline tensionSpline)
     : contour_(std::move(current)), tensionSpline_(std::move(tensionSpline))
-{
-}
+{}
 
 namespace {
 
@@ -38,8 +37,7 @@ Eigen::Vector2d MembraneState2D::loadAt(int segment, double t) const
   return loadAt(contour_.pointAt(segment, t), segment, t);
 }
 
-Eigen::Vector2d MembraneState2D::loadAt(const contour::ContourPoint& point, int segment,
-                                        double t) const
+Eigen::Vector2d MembraneState2D::loadAt(const contour::ContourPoint& point, int segment, double t) const
 {
   const contour::CubicPiece& piece = tensionSpline_.piece(segment);
   const double offset = arcOffset(contour_, segment, t);
@@ -48,8 +46,8 @@ Eigen::Vector2d MembraneState2D::loadAt(const contour::ContourPoint& point, int 
 
 Eigen::Vector2d MembraneState2D::netForce(int points) const
 {
-  return contour_.integrate(
-      [this](const contour::ContourPoint& p, int k, double t) { return loadAt(p, k, t); }, points);
+  return contour_.integrate([this](const contour::ContourPoint& p, int k, double t) { return loadAt(p, k, t); },
+                            points);
 }
 
 double MembraneState2D::netTorque(int points, const Eigen::Vector2d& about) const

@@ -7,10 +7,10 @@
 namespace capsula::elasticity {
 
 TangentStiffness::TangentStiffness(const mesh::SurfaceMesh& mesh, std::vector<ElementStiffness> elements)
-  : mesh_(&mesh), elements_(std::move(elements))
+    : mesh_(&mesh), elements_(std::move(elements))
 {
-  core::require(elements_.size() == static_cast<std::size_t>(mesh.numElements()), "TangentStiffness: ",
-                elements_.size(), " element matrices for ", mesh.numElements(), " elements");
+  core::require(elements_.size() == static_cast<std::size_t>(mesh.numElements()),
+                "TangentStiffness: ", elements_.size(), " element matrices for ", mesh.numElements(), " elements");
 }
 
 void TangentStiffness::apply(const double* x, double* y) const

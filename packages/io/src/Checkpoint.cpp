@@ -18,10 +18,9 @@ template <typename Map>
 void checkNames(const Map& map, const char* kind, const std::string& path)
 {
   for (const auto& entry : map) {
-    core::require<core::IoError>(!entry.first.empty() && entry.first.find('/') == std::string::npos &&
-                                   entry.first != ".",
-                                 "Cannot write checkpoint '", path, "': the ", kind, " name '",
-                                 entry.first, "' is empty or contains '/'.");
+    core::require<core::IoError>(
+        !entry.first.empty() && entry.first.find('/') == std::string::npos && entry.first != ".",
+        "Cannot write checkpoint '", path, "': the ", kind, " name '", entry.first, "' is empty or contains '/'.");
   }
 }
 

@@ -96,17 +96,16 @@ Handle creationOrderedGroupProperties()
 }
 
 template <typename T>
-void writeArray(hid_t parent, const std::string& name, const std::vector<T>& data,
-                const std::vector<hsize_t>& shape, hid_t fileType, hid_t memoryType)
+void writeArray(hid_t parent, const std::string& name, const std::vector<T>& data, const std::vector<hsize_t>& shape,
+                hid_t fileType, hid_t memoryType)
 {
   ErrorSilencer quiet;
   if (countOf(shape) != data.size()) {
-    throw core::Error(core::message("internal: dataset ", where(parent, name), " has ",
-                                    data.size(), " values for shape of ", countOf(shape)));
+    throw core::Error(core::message("internal: dataset ", where(parent, name), " has ", data.size(),
+                                    " values for shape of ", countOf(shape)));
   }
   Handle space = simpleSpace(shape);
-  Handle set(H5Dcreate2(parent, name.c_str(), fileType, space.get(), H5P_DEFAULT, H5P_DEFAULT,
-                        H5P_DEFAULT));
+  Handle set(H5Dcreate2(parent, name.c_str(), fileType, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   check(set.get() >= 0, "create dataset " + where(parent, name));
   if (!data.empty()) {
     check(H5Dwrite(set.get(), memoryType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) >= 0,
@@ -115,8 +114,8 @@ void writeArray(hid_t parent, const std::string& name, const std::vector<T>& dat
 }
 
 template <typename T>
-std::vector<T> readArray(hid_t parent, const std::string& name, std::vector<hsize_t>* shape,
-                         hid_t memoryType, H5T_class_t expectedClass)
+std::vector<T> readArray(hid_t parent, const std::string& name, std::vector<hsize_t>* shape, hid_t memoryType,
+                         H5T_class_t expectedClass)
 {
   ErrorSilencer quiet;
   Handle set(H5Dopen2(parent, name.c_str(), H5P_DEFAULT));
@@ -168,8 +167,7 @@ herr_t collectAttributeName(hid_t, const char* name, const H5A_info_t*, void* na
 }
 
 template <typename T>
-void writeScalarAttribute(hid_t object, const std::string& name, const T& value, hid_t fileType,
-                          hid_t memoryType)
+void writeScalarAttribute(hid_t object, const std::string& name, const T& value, hid_t fileType, hid_t memoryType)
 {
   ErrorSilencer quiet;
   Handle space(H5Screate(H5S_SCALAR));
@@ -192,14 +190,29 @@ Handle::~Handle()
   if (id_ >= 0) {
     ErrorSilencer quiet;
     switch (H5Iget_type(id_)) {
-    case H5I_FILE: H5Fclose(id_); break;
-    case H5I_GROUP: H5Gclose(id_); break;
-    case H5I_DATASET: H5Dclose(id_); break;
-    case H5I_DATASPACE: H5Sclose(id_); break;
-    case H5I_DATATYPE: H5Tclose(id_); break;
-    case H5I_ATTR: H5Aclose(id_); break;
-    case H5I_GENPROP_LST: H5Pclose(id_); break;
-    default: break;
+    case H5I_FILE:
+      H5Fclose(id_);
+      break;
+    case H5I_GROUP:
+      H5Gclose(id_);
+      break;
+    case H5I_DATASET:
+      H5Dclose(id_);
+      break;
+    case H5I_DATASPACE:
+      H5Sclose(id_);
+      break;
+    case H5I_DATATYPE:
+      H5Tclose(id_);
+      break;
+    case H5I_ATTR:
+      H5Aclose(id_);
+      break;
+    case H5I_GENPROP_LST:
+      H5Pclose(id_);
+      break;
+    default:
+      break;
     }
   }
 }
@@ -261,8 +274,7 @@ Handle openFileForReading(const std::string& path, const std::string& role)
     throw IoError("The " + role + " file '" + path + "' does not exist.");
   }
   if (H5Fis_hdf5(path.c_str()) <= 0) {
-    throw IoError("The " + role + " file '" + path +
-                  "' is not a readable HDF5 file (truncated or corrupt?).");
+    throw IoError("The " + role + " file '" + path + "' is not a readable HDF5 file (truncated or corrupt?).");
   }
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
   if (file.get() < 0) {
@@ -326,7 +338,7 @@ std::vector<std::string> memberNames(hid_t group)
   ErrorSilencer quiet;
   std::vector<std::string> names;
   if (H5Literate(group, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr, collectName, &names) < 0) {
-    names.clear();   // not written by us: no creation order, fall back to name order
+    names.clear(); // not written by us: no creation order, fall back to name order
     check(H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr, collectName, &names) >= 0,
           "list the members of '" + objectPathOf(group) + "' in '" + fileNameOf(group) + "'");
   }
@@ -372,8 +384,7 @@ std::vector<double> readDoubles(hid_t parent, const std::string& name, std::vect
   return readArray<double>(parent, name, shape, H5T_NATIVE_DOUBLE, H5T_FLOAT);
 }
 
-std::vector<std::int64_t> readIntegers(hid_t parent, const std::string& name,
-                                       std::vector<hsize_t>* shape)
+std::vector<std::int64_t> readIntegers(hid_t parent, const std::string& name, std::vector<hsize_t>* shape)
 {
   return readArray<std::int64_t>(parent, name, shape, H5T_NATIVE_INT64, H5T_INTEGER);
 }
@@ -383,8 +394,7 @@ void writeString(hid_t parent, const std::string& name, const std::string& text)
   ErrorSilencer quiet;
   Handle type = fixedStringType(text.size());
   Handle space(H5Screate(H5S_SCALAR));
-  Handle set(H5Dcreate2(parent, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT,
-                        H5P_DEFAULT));
+  Handle set(H5Dcreate2(parent, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   check(set.get() >= 0, "create dataset " + where(parent, name));
   std::string padded = text;
   padded.resize(text.empty() ? 1 : text.size(), '\0');
@@ -425,8 +435,7 @@ void writeAttribute(hid_t object, const std::string& name, const std::string& va
   check(attribute.get() >= 0, "create attribute " + where(object, "@" + name));
   std::string padded = value;
   padded.resize(value.empty() ? 1 : value.size(), '\0');
-  check(H5Awrite(attribute.get(), type.get(), padded.data()) >= 0,
-        "write attribute " + where(object, "@" + name));
+  check(H5Awrite(attribute.get(), type.get(), padded.data()) >= 0, "write attribute " + where(object, "@" + name));
 }
 
 void writeAttribute(hid_t object, const std::string& name, const std::vector<std::int64_t>& values)

@@ -78,8 +78,7 @@ void writeString(hid_t parent, const std::string& name, const std::string& text)
 std::vector<hsize_t> datasetShape(hid_t parent, const std::string& name);
 
 std::vector<double> readDoubles(hid_t parent, const std::string& name, std::vector<hsize_t>* shape);
-std::vector<std::int64_t> readIntegers(hid_t parent, const std::string& name,
-                                       std::vector<hsize_t>* shape);
+std::vector<std::int64_t> readIntegers(hid_t parent, const std::string& name, std::vector<hsize_t>* shape);
 std::string readString(hid_t parent, const std::string& name);
 
 void writeAttribute(hid_t object, const std::string& name, double value);

@@ -14,10 +14,8 @@ namespace {
 
 class JsonPrinter {
 public:
-  JsonPrinter(int indent, std::vector<std::string>* nonFinitePaths)
-    : indent_(indent), nonFinitePaths_(nonFinitePaths)
-  {
-  }
+  JsonPrinter(int indent, std::vector<std::string>* nonFinitePaths) : indent_(indent), nonFinitePaths_(nonFinitePaths)
+  {}
 
   void print(const JsonValue& value, int depth, const std::string& path)
   {
@@ -188,20 +186,34 @@ std::string jsonQuoted(const std::string& text)
   std::string out = "\"";
   for (const char ch : text) {
     switch (ch) {
-    case '"': out += "\\\""; break;
-    case '\\': out += "\\\\"; break;
-    case '\b': out += "\\b"; break;
-    case '\f': out += "\\f"; break;
-    case '\n': out += "\\n"; break;
-    case '\r': out += "\\r"; break;
-    case '\t': out += "\\t"; break;
+    case '"':
+      out += "\\\"";
+      break;
+    case '\\':
+      out += "\\\\";
+      break;
+    case '\b':
+      out += "\\b";
+      break;
+    case '\f':
+      out += "\\f";
+      break;
+    case '\n':
+      out += "\\n";
+      break;
+    case '\r':
+      out += "\\r";
+      break;
+    case '\t':
+      out += "\\t";
+      break;
     default:
       if (static_cast<unsigned char>(ch) < 0x20) {
         char escape[8];
         std::snprintf(escape, sizeof(escape), "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(ch)));
         out += escape;
       } else {
-        out += ch;   // UTF-8 passes through unchanged
+        out += ch; // UTF-8 passes through unchanged
       }
     }
   }

@@ -39,21 +39,21 @@ void checkColumns(const std::vector<std::string>& columns, const std::string& pa
 {
   core::require(!columns.empty(), "internal: the table '", path, "' needs at least one column");
   for (const auto& c : columns) {
-    core::require(!c.empty() && c.find_first_of(",\"\r\n") == std::string::npos, "internal: column name '",
-                  c, "' of '", path, "' is empty or contains ',', '\"' or a line break");
+    core::require(!c.empty() && c.find_first_of(",\"\r\n") == std::string::npos, "internal: column name '", c, "' of '",
+                  path, "' is empty or contains ',', '\"' or a line break");
   }
 }
 
 } // namespace
 
 MetricsCsv::MetricsCsv(std::string path, std::vector<std::string> columns)
-  : MetricsCsv(std::move(path), std::move(columns), Unwritten{})
+    : MetricsCsv(std::move(path), std::move(columns), Unwritten{})
 {
   rewrite();
 }
 
 MetricsCsv::MetricsCsv(std::string path, std::vector<std::string> columns, Unwritten)
-  : path_(std::move(path)), columns_(std::move(columns))
+    : path_(std::move(path)), columns_(std::move(columns))
 {
   checkColumns(columns_, path_);
 }
@@ -81,8 +81,8 @@ MetricsCsv MetricsCsv::resume(std::string path, std::vector<std::string> columns
 
 void MetricsCsv::appendRow(const std::vector<double>& values)
 {
-  core::require(values.size() == columns_.size(), "internal: a row of ", values.size(),
-                " values for the ", columns_.size(), " columns of '", path_, "'");
+  core::require(values.size() == columns_.size(), "internal: a row of ", values.size(), " values for the ",
+                columns_.size(), " columns of '", path_, "'");
   std::string line;
   for (std::size_t i = 0; i < values.size(); ++i) {
     line += (i > 0 ? "," : "") + shortestDecimal(values[i]);
@@ -91,7 +91,7 @@ void MetricsCsv::appendRow(const std::vector<double>& values)
   try {
     rewrite();
   } catch (...) {
-    rows_.pop_back();   // the file still holds the previous rows; keep memory in step
+    rows_.pop_back(); // the file still holds the previous rows; keep memory in step
     throw;
   }
 }
@@ -118,14 +118,12 @@ CsvTable readCsvTable(const std::string& path)
   table.columns = splitCommas(line);
   for (std::size_t lineNumber = 2; std::getline(in, line); ++lineNumber) {
     const auto pieces = splitCommas(line);
-    core::require<core::IoError>(pieces.size() == table.columns.size(), "The table '", path,
-                                 "' is malformed: line ", lineNumber, " has ", pieces.size(),
-                                 " values for ", table.columns.size(), " columns.");
+    core::require<core::IoError>(pieces.size() == table.columns.size(), "The table '", path, "' is malformed: line ",
+                                 lineNumber, " has ", pieces.size(), " values for ", table.columns.size(), " columns.");
     std::vector<double> row(pieces.size());
     for (std::size_t i = 0; i < pieces.size(); ++i) {
-      core::require<core::IoError>(parseDecimal(pieces[i], row[i]), "The table '", path,
-                                   "' is malformed: line ", lineNumber, " column '", table.columns[i],
-                                   "' is not a number ('", pieces[i], "').");
+      core::require<core::IoError>(parseDecimal(pieces[i], row[i]), "The table '", path, "' is malformed: line ",
+                                   lineNumber, " column '", table.columns[i], "' is not a number ('", pieces[i], "').");
     }
     table.rows.push_back(std::move(row));
   }

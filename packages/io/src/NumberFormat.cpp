@@ -8,7 +8,7 @@ namespace capsula::io {
 
 std::string shortestDecimal(double value)
 {
-  char buffer[32];   // the longest shortest form, "-2.2250738585072014e-308", has 24
+  char buffer[32]; // the longest shortest form, "-2.2250738585072014e-308", has 24
   const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
   return std::string(buffer, result.ptr);
 }
@@ -21,8 +21,7 @@ bool parseDecimal(const std::string& text, double& value)
   const bool negative = text[0] == '-';
   const std::string magnitude = negative ? text.substr(1) : text;
   if (magnitude == "nan" || magnitude == "inf") {
-    value = magnitude == "nan" ? std::numeric_limits<double>::quiet_NaN()
-                               : std::numeric_limits<double>::infinity();
+    value = magnitude == "nan" ? std::numeric_limits<double>::quiet_NaN() : std::numeric_limits<double>::infinity();
     value = negative ? -value : value;
     return true;
   }

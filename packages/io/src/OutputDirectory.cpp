@@ -35,8 +35,7 @@ std::string OutputDirectory::file(const std::string& name) const
   return (std::filesystem::path(path_) / name).string();
 }
 
-void OutputDirectory::writeRunMetadata(const Teuchos::ParameterList& validatedDeck,
-                                       const RunMetadata& run) const
+void OutputDirectory::writeRunMetadata(const Teuchos::ParameterList& validatedDeck, const RunMetadata& run) const
 {
   const std::string xml = core::deckToXml(validatedDeck, false);
   core::writeFileAtomically(file("deck.xml"), [&](std::ostream& out) { out << xml; });

@@ -12,8 +12,8 @@ bool isValidOutputName(const std::string& name)
     return false;
   }
   for (const char ch : name) {
-    const bool ok = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
-                    ch == '_' || ch == '-' || ch == '.';
+    const bool ok = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' ||
+                    ch == '-' || ch == '.';
     if (!ok) {
       return false;
     }
@@ -23,18 +23,17 @@ bool isValidOutputName(const std::string& name)
 
 namespace {
 
-void checkFields(const SnapshotBlock& block, const std::vector<Field>& fields, std::size_t count,
-                 const char* where)
+void checkFields(const SnapshotBlock& block, const std::vector<Field>& fields, std::size_t count, const char* where)
 {
   std::set<std::string> seen;
   for (const auto& f : fields) {
-    core::require(isValidOutputName(f.name), "snapshot block '", block.name, "': ", where, " field name '",
-                  f.name, "' must be letters, digits, '_', '-' or '.'");
-    core::require(seen.insert(f.name).second, "snapshot block '", block.name, "': ", where,
-                  " field '", f.name, "' appears twice");
+    core::require(isValidOutputName(f.name), "snapshot block '", block.name, "': ", where, " field name '", f.name,
+                  "' must be letters, digits, '_', '-' or '.'");
+    core::require(seen.insert(f.name).second, "snapshot block '", block.name, "': ", where, " field '", f.name,
+                  "' appears twice");
     core::require(f.components >= 1 && f.values.size() == count * static_cast<std::size_t>(f.components),
-                  "snapshot block '", block.name, "': ", where, " field '", f.name, "' has ",
-                  f.values.size(), " values, expected ", count, " x ", f.components);
+                  "snapshot block '", block.name, "': ", where, " field '", f.name, "' has ", f.values.size(),
+                  " values, expected ", count, " x ", f.components);
   }
 }
 
@@ -83,10 +82,9 @@ std::size_t SnapshotBlock::cellCount() const
 
 void SnapshotBlock::checkConsistency() const
 {
-  core::require(isValidOutputName(name), "snapshot block name '", name,
-                "' must be letters, digits, '_', '-' or '.'");
-  core::require(dimension == 2 || dimension == 3, "snapshot block '", name, "': dimension ",
-                dimension, " is not 2 or 3");
+  core::require(isValidOutputName(name), "snapshot block name '", name, "' must be letters, digits, '_', '-' or '.'");
+  core::require(dimension == 2 || dimension == 3, "snapshot block '", name, "': dimension ", dimension,
+                " is not 2 or 3");
   core::require(positions.size() % static_cast<std::size_t>(dimension) == 0, "snapshot block '", name,
                 "': ", positions.size(), " coordinates are not a multiple of the dimension ", dimension);
   const std::size_t nodes = nodeCount();
@@ -95,8 +93,8 @@ void SnapshotBlock::checkConsistency() const
   case Topology::Polylines: {
     const std::size_t k = nodesPerCell();
     core::require(k >= 2, "snapshot block '", name, "': a polyline needs nodesPerPolyline >= 2");
-    core::require(connectivity.size() % k == 0, "snapshot block '", name, "': connectivity of ",
-                  connectivity.size(), " entries is not a multiple of ", k, " nodes per element");
+    core::require(connectivity.size() % k == 0, "snapshot block '", name, "': connectivity of ", connectivity.size(),
+                  " entries is not a multiple of ", k, " nodes per element");
     for (const std::int64_t node : connectivity) {
       core::require(node >= 0 && static_cast<std::size_t>(node) < nodes, "snapshot block '", name,
                     "': connectivity refers to node ", node, " of ", nodes);
@@ -105,11 +103,10 @@ void SnapshotBlock::checkConsistency() const
   }
   case Topology::StructuredGrid:
     core::require(gridShape[0] >= 2 && gridShape[1] >= 2 &&
-                    static_cast<std::size_t>(gridShape[0] * gridShape[1]) == nodes,
-                  "snapshot block '", name, "': grid shape ", gridShape[0], " x ", gridShape[1],
-                  " does not match its ", nodes, " nodes (need at least 2 x 2)");
-    core::require(connectivity.empty(), "snapshot block '", name,
-                  "': a structured grid has no connectivity");
+                      static_cast<std::size_t>(gridShape[0] * gridShape[1]) == nodes,
+                  "snapshot block '", name, "': grid shape ", gridShape[0], " x ", gridShape[1], " does not match its ",
+                  nodes, " nodes (need at least 2 x 2)");
+    core::require(connectivity.empty(), "snapshot block '", name, "': a structured grid has no connectivity");
     break;
   }
   checkFields(*this, nodeFields, nodes, "node");

@@ -42,9 +42,8 @@ struct MeshBlock {
   std::size_t cells() const
   {
     if (topology == Topology::StructuredGrid) {
-      return gridShape[0] > 0 && gridShape[1] > 0
-               ? static_cast<std::size_t>((gridShape[0] - 1) * (gridShape[1] - 1))
-               : 0;
+      return gridShape[0] > 0 && gridShape[1] > 0 ? static_cast<std::size_t>((gridShape[0] - 1) * (gridShape[1] - 1))
+                                                  : 0;
     }
     return nodesPerCell() > 0 ? connectivity.size() / nodesPerCell() : 0;
   }
@@ -56,8 +55,7 @@ Mesh meshOf(const Snapshot& snapshot)
 {
   Mesh mesh;
   for (const auto& b : snapshot.blocks) {
-    mesh.push_back({b.name, b.topology, b.dimension, b.nodeCount(), b.nodesPerPolyline, b.gridShape,
-                    b.connectivity});
+    mesh.push_back({b.name, b.topology, b.dimension, b.nodeCount(), b.nodesPerPolyline, b.gridShape, b.connectivity});
   }
   return mesh;
 }
@@ -70,8 +68,8 @@ bool sameMesh(const Mesh& a, const Mesh& b)
   for (std::size_t i = 0; i < a.size(); ++i) {
     const MeshBlock &x = a[i], &y = b[i];
     const bool same = x.name == y.name && x.topology == y.topology && x.dimension == y.dimension &&
-                      x.nodes == y.nodes && x.nodesPerPolyline == y.nodesPerPolyline &&
-                      x.gridShape == y.gridShape && x.connectivity == y.connectivity;
+                      x.nodes == y.nodes && x.nodesPerPolyline == y.nodesPerPolyline && x.gridShape == y.gridShape &&
+                      x.connectivity == y.connectivity;
     if (!same) {
       return false;
     }
@@ -95,17 +93,16 @@ std::vector<std::size_t> indexedMembers(hid_t group, const std::string& what, co
 {
   std::vector<std::size_t> indices;
   for (const auto& name : hdf5::memberNames(group)) {
-    const bool digits = !name.empty() && std::all_of(name.begin(), name.end(), [](unsigned char c) {
-      return std::isdigit(c) != 0;
-    });
+    const bool digits =
+        !name.empty() && std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
     core::require<core::IoError>(digits, "Snapshot file '", path, "': '/", what, "/", name,
                                  "' is not a numbered group.");
     indices.push_back(static_cast<std::size_t>(std::stoull(name)));
   }
   std::sort(indices.begin(), indices.end());
   for (std::size_t i = 0; i < indices.size(); ++i) {
-    core::require<core::IoError>(indices[i] == i, "Snapshot file '", path, "': '/", what,
-                                 "' lacks number ", i, " (it has ", indices.size(), " entries).");
+    core::require<core::IoError>(indices[i] == i, "Snapshot file '", path, "': '/", what, "' lacks number ", i,
+                                 " (it has ", indices.size(), " entries).");
   }
   return indices;
 }
@@ -159,8 +156,8 @@ void writeSnapshotBlock(hid_t snapshotGroup, const SnapshotBlock& block)
 Mesh readMesh(hid_t file, std::size_t version, const std::string& path)
 {
   const std::string where = std::string("/") + meshRoot + "/" + snapshotGroupName(version);
-  core::require<core::IoError>(hdf5::exists(file, meshRoot) && hdf5::exists(file, where), "Snapshot file '",
-                               path, "' lacks the mesh version '", where, "'.");
+  core::require<core::IoError>(hdf5::exists(file, meshRoot) && hdf5::exists(file, where), "Snapshot file '", path,
+                               "' lacks the mesh version '", where, "'.");
   hdf5::Handle group = hdf5::openGroup(file, where);
   Mesh mesh;
   for (const auto& name : hdf5::memberNames(group.get())) {
@@ -181,8 +178,8 @@ Mesh readMesh(hid_t file, std::size_t version, const std::string& path)
       }
       std::vector<hsize_t> shape;
       block.connectivity = hdf5::readIntegers(b.get(), "connectivity", &shape);
-      core::require<core::IoError>(shape.size() == 2 && shape[1] == block.nodesPerCell(), "Snapshot file '",
-                                   path, "': '", where, "/", name, "/connectivity' has the wrong shape.");
+      core::require<core::IoError>(shape.size() == 2 && shape[1] == block.nodesPerCell(), "Snapshot file '", path,
+                                   "': '", where, "/", name, "/connectivity' has the wrong shape.");
     }
     mesh.push_back(std::move(block));
   }
@@ -204,8 +201,7 @@ std::vector<SnapshotLayout::FieldLayout> fieldLayouts(hid_t blockGroup, const ch
   return fields;
 }
 
-SnapshotLayout readLayout(hid_t file, std::size_t index, std::map<std::size_t, Mesh>& meshes,
-                          const std::string& path)
+SnapshotLayout readLayout(hid_t file, std::size_t index, std::map<std::size_t, Mesh>& meshes, const std::string& path)
 {
   SnapshotLayout layout;
   layout.group = std::string("/") + snapshotRoot + "/" + snapshotGroupName(index);
@@ -213,8 +209,8 @@ SnapshotLayout readLayout(hid_t file, std::size_t index, std::map<std::size_t, M
   layout.time = hdf5::readDoubleAttribute(group.get(), "time");
   layout.step = hdf5::readIntegerAttribute(group.get(), "step");
   const std::int64_t version = hdf5::readIntegerAttribute(group.get(), "mesh");
-  core::require<core::IoError>(version >= 0, "Snapshot file '", path, "': '", layout.group,
-                               "' names mesh version ", version, ".");
+  core::require<core::IoError>(version >= 0, "Snapshot file '", path, "': '", layout.group, "' names mesh version ",
+                               version, ".");
   const auto m = static_cast<std::size_t>(version);
   layout.meshGroup = std::string("/") + meshRoot + "/" + snapshotGroupName(m);
   if (meshes.count(m) == 0) {
@@ -222,9 +218,8 @@ SnapshotLayout readLayout(hid_t file, std::size_t index, std::map<std::size_t, M
   }
   const Mesh& mesh = meshes[m];
   const std::vector<std::string> names = hdf5::memberNames(group.get());
-  core::require<core::IoError>(names.size() == mesh.size(), "Snapshot file '", path, "': '", layout.group,
-                               "' has ", names.size(), " blocks, its mesh '", layout.meshGroup, "' ", mesh.size(),
-                               ".");
+  core::require<core::IoError>(names.size() == mesh.size(), "Snapshot file '", path, "': '", layout.group, "' has ",
+                               names.size(), " blocks, its mesh '", layout.meshGroup, "' ", mesh.size(), ".");
   for (std::size_t b = 0; b < mesh.size(); ++b) {
     const MeshBlock& block = mesh[b];
     const std::string where = layout.group + "/" + block.name;
@@ -233,7 +228,7 @@ SnapshotLayout readLayout(hid_t file, std::size_t index, std::map<std::size_t, M
     hdf5::Handle g = hdf5::openGroup(group.get(), block.name);
     const std::vector<hsize_t> shape = hdf5::datasetShape(g.get(), "positions");
     core::require<core::IoError>(shape.size() == 2 && shape[0] == block.nodes &&
-                                   shape[1] == static_cast<hsize_t>(block.dimension),
+                                     shape[1] == static_cast<hsize_t>(block.dimension),
                                  "Snapshot file '", path, "': '", where, "/positions' has the wrong shape.");
     SnapshotLayout::BlockLayout l;
     l.name = block.name;
@@ -255,10 +250,10 @@ hdf5::Handle openSnapshotFile(const std::string& path, bool writing)
   if (writing) {
     hdf5::undoInterruptedWrite(path);
   }
-  hdf5::Handle file = writing ? hdf5::openFileWithUndoJournal(path, "snapshot")
-                              : hdf5::openFileForReading(path, "snapshot");
-  const bool ours = hdf5::hasAttribute(file.get(), "format") &&
-                    hdf5::readStringAttribute(file.get(), "format") == snapshotFormatName;
+  hdf5::Handle file =
+      writing ? hdf5::openFileWithUndoJournal(path, "snapshot") : hdf5::openFileForReading(path, "snapshot");
+  const bool ours =
+      hdf5::hasAttribute(file.get(), "format") && hdf5::readStringAttribute(file.get(), "format") == snapshotFormatName;
   core::require<core::IoError>(ours, "'", path, "' is an HDF5 file but not a Capsula snapshot file.");
   const std::int64_t version = hdf5::readIntegerAttribute(file.get(), "version");
   core::require<core::IoError>(version == snapshotFormatVersion, "Snapshot file '", path, "' has format version ",
@@ -300,7 +295,7 @@ void createSnapshotFile(const std::string& path)
     std::remove(temporary.c_str());
     throw;
   }
-  hdf5::discardUndoJournal(path);   // it belongs to the file being replaced
+  hdf5::discardUndoJournal(path); // it belongs to the file being replaced
   core::replaceFileAtomically(temporary, path);
 }
 
@@ -368,8 +363,8 @@ Snapshot readSnapshot(const std::string& path, std::size_t index)
 {
   hdf5::Handle file = openSnapshotFile(path, false);
   const std::string where = std::string("/") + snapshotRoot + "/" + snapshotGroupName(index);
-  core::require<core::IoError>(hdf5::exists(file.get(), where), "Snapshot file '", path, "' has no snapshot ",
-                               index, ".");
+  core::require<core::IoError>(hdf5::exists(file.get(), where), "Snapshot file '", path, "' has no snapshot ", index,
+                               ".");
   std::map<std::size_t, Mesh> meshes;
   const SnapshotLayout layout = readLayout(file.get(), index, meshes, path);
   const Mesh& mesh = meshes.begin()->second;
@@ -389,9 +384,8 @@ Snapshot readSnapshot(const std::string& path, std::size_t index)
     block.nodesPerPolyline = m.nodesPerPolyline;
     block.gridShape = m.gridShape;
     block.positions = hdf5::readDoubles(g.get(), "positions", nullptr);
-    for (const auto& [fields, name, layouts] :
-         {std::tuple{&block.nodeFields, "node_fields", &l.nodeFields},
-          std::tuple{&block.cellFields, "cell_fields", &l.cellFields}}) {
+    for (const auto& [fields, name, layouts] : {std::tuple{&block.nodeFields, "node_fields", &l.nodeFields},
+                                                std::tuple{&block.cellFields, "cell_fields", &l.cellFields}}) {
       hdf5::Handle f = hdf5::openGroup(g.get(), name);
       for (const auto& field : *layouts) {
         fields->push_back({field.name, field.components, hdf5::readDoubles(f.get(), field.name, nullptr)});

@@ -32,19 +32,18 @@ void copyAtomically(const std::string& from, const std::string& to)
     std::remove(temporary.c_str());
     throw;
   }
-  hdf5::discardUndoJournal(to);   // it belongs to the file being replaced
+  hdf5::discardUndoJournal(to); // it belongs to the file being replaced
   core::replaceFileAtomically(temporary, to);
 }
 
 } // namespace
 
 SnapshotSeries::SnapshotSeries(std::string directory, std::string baseName)
-  : SnapshotSeries(std::move(directory), std::move(baseName), true)
-{
-}
+    : SnapshotSeries(std::move(directory), std::move(baseName), true)
+{}
 
 SnapshotSeries::SnapshotSeries(std::string directory, std::string baseName, bool create)
-  : directory_(std::move(directory)), baseName_(std::move(baseName))
+    : directory_(std::move(directory)), baseName_(std::move(baseName))
 {
   if (!isValidOutputName(baseName_)) {
     throw core::InputError("Snapshot base name '" + baseName_ + "' must be letters, digits, '_', '-' or '.'.");
@@ -66,7 +65,7 @@ SnapshotSeries SnapshotSeries::resume(std::string directory, std::string baseNam
       undoInterruptedAppend(source);
       copyAtomically(source, series.filePath());
     } else if (fs::exists(series.filePath())) {
-      createSnapshotFile(series.filePath());   // not this run's: the source had none
+      createSnapshotFile(series.filePath()); // not this run's: the source had none
     }
   }
   if (!fs::exists(series.filePath())) {
@@ -77,9 +76,9 @@ SnapshotSeries SnapshotSeries::resume(std::string directory, std::string baseNam
   try {
     layouts = readSnapshotLayouts(series.filePath());
   } catch (const core::IoError& e) {
-    throw core::IoError(core::message(
-      e.what(), " The run cannot continue its snapshots there; move '", series.filePath(),
-      "' away to restart with a new snapshot series (the checkpoint and the tables are unaffected)."));
+    throw core::IoError(
+        core::message(e.what(), " The run cannot continue its snapshots there; move '", series.filePath(),
+                      "' away to restart with a new snapshot series (the checkpoint and the tables are unaffected)."));
   }
   // Keep the prefix up to the checkpoint (snapshot times increase along the series).
   std::size_t keep = 0;

@@ -103,8 +103,8 @@ struct JournalState {
   std::string path;
   std::string journalPath;
   int journalFd = -1;
-  haddr_t protectedEnd = 0;   // the file's size at open: bytes below it are journalled
-  std::vector<std::pair<haddr_t, haddr_t>> saved;   // [begin, end) already journalled, sorted
+  haddr_t protectedEnd = 0;                       // the file's size at open: bytes below it are journalled
+  std::vector<std::pair<haddr_t, haddr_t>> saved; // [begin, end) already journalled, sorted
   // Writes into [0, protectedEnd) held back until commit(): one journal sync covers them all.
   struct PendingWrite {
     haddr_t address;
@@ -147,7 +147,7 @@ bool openJournal(JournalState& s)
   if (!writeAll(s.journalFd, header, kHeaderSize, 0)) {
     return false;
   }
-  syncDirectoryOf(s.journalPath);   // the journal's name is durable; its content is synced by commit()
+  syncDirectoryOf(s.journalPath); // the journal's name is durable; its content is synced by commit()
   return true;
 }
 
@@ -197,8 +197,7 @@ bool saveOriginals(JournalFile& f, haddr_t begin, haddr_t end)
       return false;
     }
     const std::uint64_t checksum = recordChecksum(offset, length, bytes.data());
-    if (!writeAll(s.journalFd, head, sizeof(head), at) ||
-        !writeAll(s.journalFd, bytes.data(), bytes.size(), at + 16) ||
+    if (!writeAll(s.journalFd, head, sizeof(head), at) || !writeAll(s.journalFd, bytes.data(), bytes.size(), at + 16) ||
         !writeAll(s.journalFd, &checksum, sizeof(checksum), at + 16 + static_cast<off_t>(length))) {
       return false;
     }
@@ -348,7 +347,8 @@ herr_t driverRead(H5FD_t* file, H5FD_mem_t, hid_t, haddr_t address, size_t size,
   auto* out = static_cast<unsigned char*>(buffer);
   for (const auto& w : f->state->pending) {
     const haddr_t begin = std::max(address, w.address);
-    const haddr_t end = std::min(static_cast<haddr_t>(address + size), static_cast<haddr_t>(w.address + w.bytes.size()));
+    const haddr_t end =
+        std::min(static_cast<haddr_t>(address + size), static_cast<haddr_t>(w.address + w.bytes.size()));
     if (begin < end) {
       std::memcpy(out + (begin - address), w.bytes.data() + (begin - w.address), static_cast<std::size_t>(end - begin));
     }
@@ -369,8 +369,8 @@ herr_t driverWrite(H5FD_t* file, H5FD_mem_t, hid_t, haddr_t address, size_t size
   if (split > address) {
     f->state->pending.push_back({address, std::vector<unsigned char>(bytes, bytes + (split - address))});
   }
-  if (end > split && !writeAll(f->fd, bytes + (split - address), static_cast<std::size_t>(end - split),
-                               static_cast<off_t>(split))) {
+  if (end > split &&
+      !writeAll(f->fd, bytes + (split - address), static_cast<std::size_t>(end - split), static_cast<off_t>(split))) {
     return -1;
   }
   f->eof = std::max(f->eof, static_cast<haddr_t>(address + size));
@@ -483,7 +483,7 @@ bool undoInterruptedWrite(const std::string& path)
       std::memcpy(&offset, text.data() + at, 8);
       std::memcpy(&length, text.data() + at + 8, 8);
       if (length > text.size() - at - 24) {
-        break;   // cut short: the write it protects never happened
+        break; // cut short: the write it protects never happened
       }
       const unsigned char* bytes = text.data() + at + 16;
       std::memcpy(&checksum, bytes + length, 8);

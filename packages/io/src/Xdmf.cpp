@@ -13,11 +13,20 @@ std::string escaped(const std::string& text)
   std::string out;
   for (const char ch : text) {
     switch (ch) {
-    case '&': out += "&amp;"; break;
-    case '<': out += "&lt;"; break;
-    case '>': out += "&gt;"; break;
-    case '"': out += "&quot;"; break;
-    default: out += ch;
+    case '&':
+      out += "&amp;";
+      break;
+    case '<':
+      out += "&lt;";
+      break;
+    case '>':
+      out += "&gt;";
+      break;
+    case '"':
+      out += "&quot;";
+      break;
+    default:
+      out += ch;
     }
   }
   return out;
@@ -31,33 +40,36 @@ std::string dimensions(std::size_t rows, std::size_t columns)
 void dataItem(std::ostream& out, const std::string& indent, const std::string& dims, bool integer,
               const std::string& fileName, const std::string& dataset)
 {
-  out << indent << "<DataItem Dimensions=\"" << dims << "\" NumberType=\""
-      << (integer ? "Int" : "Float") << "\" Precision=\"8\" Format=\"HDF\">" << escaped(fileName)
-      << ":" << escaped(dataset) << "</DataItem>\n";
+  out << indent << "<DataItem Dimensions=\"" << dims << "\" NumberType=\"" << (integer ? "Int" : "Float")
+      << "\" Precision=\"8\" Format=\"HDF\">" << escaped(fileName) << ":" << escaped(dataset) << "</DataItem>\n";
 }
 
 std::string attributeType(int components)
 {
   switch (components) {
-  case 1: return "Scalar";
+  case 1:
+    return "Scalar";
   case 2:
-  case 3: return "Vector";
-  case 6: return "Tensor6";
-  case 9: return "Tensor";
-  default: return "Matrix";
+  case 3:
+    return "Vector";
+  case 6:
+    return "Tensor6";
+  case 9:
+    return "Tensor";
+  default:
+    return "Matrix";
   }
 }
 
 void attributes(std::ostream& out, const std::string& fileName, const SnapshotLayout& snapshot,
-                const SnapshotLayout::BlockLayout& block,
-                const std::vector<SnapshotLayout::FieldLayout>& fields, bool onNodes)
+                const SnapshotLayout::BlockLayout& block, const std::vector<SnapshotLayout::FieldLayout>& fields,
+                bool onNodes)
 {
   const std::size_t count = onNodes ? block.nodes : block.cells;
   for (const auto& f : fields) {
-    out << "          <Attribute Name=\"" << escaped(f.name) << "\" AttributeType=\""
-        << attributeType(f.components) << "\" Center=\"" << (onNodes ? "Node" : "Cell") << "\">\n";
-    dataItem(out, "            ", dimensions(count, static_cast<std::size_t>(f.components)), false,
-             fileName,
+    out << "          <Attribute Name=\"" << escaped(f.name) << "\" AttributeType=\"" << attributeType(f.components)
+        << "\" Center=\"" << (onNodes ? "Node" : "Cell") << "\">\n";
+    dataItem(out, "            ", dimensions(count, static_cast<std::size_t>(f.components)), false, fileName,
              snapshot.group + "/" + block.name + (onNodes ? "/node_fields/" : "/cell_fields/") + f.name);
     out << "          </Attribute>\n";
   }
@@ -68,8 +80,8 @@ void topology(std::ostream& out, const std::string& fileName, const SnapshotLayo
 {
   const std::string type = xdmfTopologyName(block.topology);
   if (block.topology == Topology::StructuredGrid) {
-    out << "          <Topology TopologyType=\"" << type << "\" Dimensions=\"" << block.gridShape[0]
-        << " " << block.gridShape[1] << "\"/>\n";
+    out << "          <Topology TopologyType=\"" << type << "\" Dimensions=\"" << block.gridShape[0] << " "
+        << block.gridShape[1] << "\"/>\n";
     return;
   }
   out << "          <Topology TopologyType=\"" << type << "\" NumberOfElements=\"" << block.cells << "\"";
@@ -119,15 +131,14 @@ std::string xdmfTimeSeries(const std::string& fileName, const std::vector<Snapsh
       << "  <Domain>\n"
       << "    <Grid Name=\"TimeSeries\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (const auto& snapshot : snapshots) {
-    out << "      <Grid Name=\"step " << snapshot.step
-        << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
+    out << "      <Grid Name=\"step " << snapshot.step << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
         << "        <Time Value=\"" << shortestDecimal(snapshot.time) << "\"/>\n";
     for (const auto& block : snapshot.blocks) {
       out << "        <Grid Name=\"" << escaped(block.name) << "\" GridType=\"Uniform\">\n";
       topology(out, fileName, snapshot, block);
       out << "          <Geometry GeometryType=\"" << (block.dimension == 2 ? "XY" : "XYZ") << "\">\n";
-      dataItem(out, "            ", dimensions(block.nodes, static_cast<std::size_t>(block.dimension)),
-               false, fileName, snapshot.group + "/" + block.name + "/positions");
+      dataItem(out, "            ", dimensions(block.nodes, static_cast<std::size_t>(block.dimension)), false, fileName,
+               snapshot.group + "/" + block.name + "/positions");
       out << "          </Geometry>\n";
       attributes(out, fileName, snapshot, block, block.nodeFields, true);
       attributes(out, fileName, snapshot, block, block.cellFields, false);

@@ -6,8 +6,7 @@
 
 namespace capsula::mesh {
 
-std::vector<double> adaptionQuality(const SurfaceMesh& mesh, const NodeCurvatures& curvature,
-                                    int numQuadraturePoints)
+std::vector<double> adaptionQuality(const SurfaceMesh& mesh, const NodeCurvatures& curvature, int numQuadraturePoints)
 {
   const std::vector<double> kappaMax = elementMaximum(mesh, maxPrincipalCurvature(curvature));
   std::vector<double> quality = elementAreas(mesh, numQuadraturePoints);
@@ -39,12 +38,13 @@ RefinedMesh adaptToCurvature(const SurfaceMesh& mesh, const std::vector<std::vec
 AdaptedMembraneMesh adaptMembraneMesh(const SurfaceMesh& current, const std::vector<double>& reference,
                                       const AdaptionOptions& options, int maxElements)
 {
-  core::require<core::InputError>(reference.size() == current.positions().size(), "adaptMembraneMesh: ",
-                                  reference.size(), " reference values for ", current.numNodes(), " nodes");
+  core::require<core::InputError>(reference.size() == current.positions().size(),
+                                  "adaptMembraneMesh: ", reference.size(), " reference values for ", current.numNodes(),
+                                  " nodes");
   AdaptedMembraneMesh result{current, reference, 0};
   const NodeCurvatures curvature = nodeCurvatures(current, options.curvature);
   const std::vector<int> marked =
-    indicesAtOrAbove(adaptionQuality(current, curvature, options.numQuadraturePoints), options.threshold);
+      indicesAtOrAbove(adaptionQuality(current, curvature, options.numQuadraturePoints), options.threshold);
   if (marked.empty()) {
     return result;
   }

@@ -23,8 +23,7 @@ void declareCellSurfaceParameters(Teuchos::ParameterList& cell)
                     "of the cell radius a of the capillary number).",
                     core::greaterThan(0.0));
   core::declareRealArray(cell, "Semi-axes", {1.0, 1.0, 1.0}, 3,
-                         "Semi-axes (a, b, c) along body x, y, z for Spheroid and Ellipsoid.",
-                         core::greaterThan(0.0));
+                         "Semi-axes (a, b, c) along body x, y, z for Spheroid and Ellipsoid.", core::greaterThan(0.0));
   core::declareRealArray(cell, "Center", {0.0, 0.0, 0.0}, 3, "Centre of the cell in the lab frame.");
   core::declareRealArray(cell, "Orientation axis", {0.0, 0.0, 1.0}, 3,
                          "Axis of the rotation from body to lab frame (any nonzero length).");
@@ -58,8 +57,8 @@ SurfaceMesh buildCellSurface(const Teuchos::ParameterList& cell, const std::stri
     return makeEllipsoid(level, Vec3(semi[0], semi[1], semi[2]), placement);
   }
   if (shape == "Spheroid") {
-    core::require<core::InputError>(semi[0] == semi[1], "'", path, "/Semi-axes' = {", semi[0], ", ",
-                                    semi[1], ", ", semi[2],
+    core::require<core::InputError>(semi[0] == semi[1], "'", path, "/Semi-axes' = {", semi[0], ", ", semi[1], ", ",
+                                    semi[2],
                                     "}: a Spheroid needs equal first two semi-axes (equatorial); "
                                     "use Shape = Ellipsoid for three different semi-axes.");
     return makeSpheroid(level, semi[0], semi[2], placement);

@@ -18,11 +18,12 @@ namespace {
 class SampleGrid {
 public:
   SampleGrid(const SurfaceMesh& mesh, int k)
-    : mesh_(mesh), k_(k), edgeBase_(mesh.numNodes()),
-      interiorBase_(edgeBase_ + mesh.numEdges() * (k - 1)),
-      interiorPerElement_((k - 1) * (k - 2) / 2)
-  {
-  }
+      : mesh_(mesh),
+        k_(k),
+        edgeBase_(mesh.numNodes()),
+        interiorBase_(edgeBase_ + mesh.numEdges() * (k - 1)),
+        interiorPerElement_((k - 1) * (k - 2) / 2)
+  {}
 
   int size() const { return interiorBase_ + mesh_.numElements() * interiorPerElement_; }
 
@@ -30,12 +31,18 @@ public:
   int id(int e, int i, int j) const
   {
     const auto& el = mesh_.element(e);
-    if (j == 0 && i == 0) return el[0];
-    if (j == 0 && i == k_) return el[1];
-    if (i == 0 && j == k_) return el[2];
-    if (j == 0) return alongEdge(e, 0, el[0], i);      // edge v0-v1, i steps from v0
-    if (i + j == k_) return alongEdge(e, 1, el[1], j); // edge v1-v2, j steps from v1
-    if (i == 0) return alongEdge(e, 2, el[2], k_ - j); // edge v2-v0, k-j steps from v2
+    if (j == 0 && i == 0)
+      return el[0];
+    if (j == 0 && i == k_)
+      return el[1];
+    if (i == 0 && j == k_)
+      return el[2];
+    if (j == 0)
+      return alongEdge(e, 0, el[0], i); // edge v0-v1, i steps from v0
+    if (i + j == k_)
+      return alongEdge(e, 1, el[1], j); // edge v1-v2, j steps from v1
+    if (i == 0)
+      return alongEdge(e, 2, el[2], k_ - j); // edge v2-v0, k-j steps from v2
     // interior: rows j = 1..k-2, each with i = 1..k-1-j
     int index = 0;
     for (int row = 1; row < j; ++row)
@@ -68,13 +75,12 @@ double boundingDiameter(const SurfaceMesh& mesh)
 
 } // namespace
 
-std::vector<Polyline> crossSection(const SurfaceMesh& mesh, const Vec3& planePoint,
-                                   const Vec3& planeNormal, int subdivisions)
+std::vector<Polyline> crossSection(const SurfaceMesh& mesh, const Vec3& planePoint, const Vec3& planeNormal,
+                                   int subdivisions)
 {
   core::require<core::InputError>(subdivisions >= 1, "crossSection: subdivisions = ", subdivisions,
                                   " must be at least 1");
-  core::require<core::InputError>(planeNormal.norm() > 0.0,
-                                  "crossSection: the plane normal is zero");
+  core::require<core::InputError>(planeNormal.norm() > 0.0, "crossSection: the plane normal is zero");
   const Vec3 normal = planeNormal.normalized();
   const int k = subdivisions;
   const SampleGrid grid(mesh, k);
@@ -135,12 +141,14 @@ std::vector<Polyline> crossSection(const SurfaceMesh& mesh, const Vec3& planePoi
           ends[found++] = crossing(u, v);
         }
       }
-      if (found == 2) link(ends[0], ends[1]);
+      if (found == 2)
+        link(ends[0], ends[1]);
     };
     for (int i = 0; i < k; ++i) {
       for (int j = 0; i + j < k; ++j) {
         cut(at(i, j), at(i + 1, j), at(i, j + 1));
-        if (i + j < k - 1) cut(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+        if (i + j < k - 1)
+          cut(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
       }
     }
   }
@@ -167,8 +175,7 @@ std::vector<Polyline> crossSection(const SurfaceMesh& mesh, const Vec3& planePoi
       current = step;
     }
     line.closed = current == start;
-    if (line.closed && line.points.size() > 1 &&
-        (line.points.front() - line.points.back()).norm() <= samePoint) {
+    if (line.closed && line.points.size() > 1 && (line.points.front() - line.points.back()).norm() <= samePoint) {
       line.points.pop_back();
     }
     // Counter-clockwise about the plane normal.
@@ -176,15 +183,18 @@ std::vector<Polyline> crossSection(const SurfaceMesh& mesh, const Vec3& planePoi
     for (std::size_t m = 0; m < line.points.size(); ++m) {
       twiceArea += line.points[m].cross(line.points[(m + 1) % line.points.size()]);
     }
-    if (twiceArea.dot(normal) < 0.0) std::reverse(line.points.begin(), line.points.end());
+    if (twiceArea.dot(normal) < 0.0)
+      std::reverse(line.points.begin(), line.points.end());
     pieces.push_back(std::move(line));
   };
   const int numCrossings = static_cast<int>(crossings.size());
   for (int c = 0; c < numCrossings; ++c) {
-    if (!used[c] && links[c][1] < 0) walk(c);
+    if (!used[c] && links[c][1] < 0)
+      walk(c);
   }
   for (int c = 0; c < numCrossings; ++c) {
-    if (!used[c]) walk(c);
+    if (!used[c])
+      walk(c);
   }
   return pieces;
 }

@@ -11,17 +11,19 @@ namespace capsula::mesh {
 std::string curvatureMethodName(CurvatureMethod method)
 {
   switch (method) {
-  case CurvatureMethod::ElementAverage: return "element average";
-  case CurvatureMethod::JetFit: return "jet fit";
-  case CurvatureMethod::QuadraticFit: return "quadratic fit";
+  case CurvatureMethod::ElementAverage:
+    return "element average";
+  case CurvatureMethod::JetFit:
+    return "jet fit";
+  case CurvatureMethod::QuadraticFit:
+    return "quadratic fit";
   }
   return "";
 }
 
 CurvatureMethod curvatureMethodFromName(const std::string& name)
 {
-  for (CurvatureMethod m :
-       {CurvatureMethod::ElementAverage, CurvatureMethod::JetFit, CurvatureMethod::QuadraticFit}) {
+  for (CurvatureMethod m : {CurvatureMethod::ElementAverage, CurvatureMethod::JetFit, CurvatureMethod::QuadraticFit}) {
     if (name == curvatureMethodName(m)) {
       return m;
     }
@@ -33,9 +35,12 @@ CurvatureMethod curvatureMethodFromName(const std::string& name)
 NodeCurvatures nodeCurvatures(const SurfaceMesh& mesh, CurvatureMethod method)
 {
   switch (method) {
-  case CurvatureMethod::ElementAverage: return elementAveragedCurvature(mesh);
-  case CurvatureMethod::JetFit: return jetFitCurvature(mesh);
-  case CurvatureMethod::QuadraticFit: return quadraticFitCurvature(mesh);
+  case CurvatureMethod::ElementAverage:
+    return elementAveragedCurvature(mesh);
+  case CurvatureMethod::JetFit:
+    return jetFitCurvature(mesh);
+  case CurvatureMethod::QuadraticFit:
+    return quadraticFitCurvature(mesh);
   }
   return elementAveragedCurvature(mesh);
 }
@@ -51,11 +56,9 @@ std::vector<double> maxPrincipalCurvature(const NodeCurvatures& curvature)
 
 std::vector<double> elementMaximum(const SurfaceMesh& mesh, const std::vector<double>& nodeValues)
 {
-  core::require<core::InputError>(static_cast<int>(nodeValues.size()) == mesh.numNodes(),
-                                  "elementMaximum: got ", nodeValues.size(), " node values for ",
-                                  mesh.numNodes(), " nodes");
-  std::vector<double> result(static_cast<std::size_t>(mesh.numElements()),
-                             -std::numeric_limits<double>::infinity());
+  core::require<core::InputError>(static_cast<int>(nodeValues.size()) == mesh.numNodes(), "elementMaximum: got ",
+                                  nodeValues.size(), " node values for ", mesh.numNodes(), " nodes");
+  std::vector<double> result(static_cast<std::size_t>(mesh.numElements()), -std::numeric_limits<double>::infinity());
   for (int e = 0; e < mesh.numElements(); ++e) {
     for (int node : mesh.element(e)) {
       result[static_cast<std::size_t>(e)] =

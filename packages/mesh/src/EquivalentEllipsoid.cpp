@@ -38,15 +38,12 @@ EquivalentEllipsoid equivalentEllipsoid(const SurfaceMesh& mesh, int numQuadratu
 {
   EquivalentEllipsoid result;
   result.volume = enclosedVolume(mesh, numQuadraturePoints);
-  core::require<core::NumericalError>(result.volume > 0.0,
-                                      "equivalentEllipsoid: the enclosed volume is ", result.volume,
-                                      "; the surface is inverted or degenerate");
+  core::require<core::NumericalError>(result.volume > 0.0, "equivalentEllipsoid: the enclosed volume is ",
+                                      result.volume, "; the surface is inverted or degenerate");
   result.centre = centroid(mesh, numQuadraturePoints);
-  const Eigen::SelfAdjointEigenSolver<Mat3> eigen(
-      secondMoment(mesh, result.centre, numQuadraturePoints));
-  core::require<core::NumericalError>(
-      eigen.info() == Eigen::Success,
-      "equivalentEllipsoid: the eigen-decomposition of the second moment failed");
+  const Eigen::SelfAdjointEigenSolver<Mat3> eigen(secondMoment(mesh, result.centre, numQuadraturePoints));
+  core::require<core::NumericalError>(eigen.info() == Eigen::Success,
+                                      "equivalentEllipsoid: the eigen-decomposition of the second moment failed");
   // Eigen sorts eigenvalues ascending; the semi-axes are wanted descending.
   for (int i = 0; i < 3; ++i) {
     const double mu = eigen.eigenvalues()[2 - i];

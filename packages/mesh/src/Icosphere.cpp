@@ -29,9 +29,7 @@ void makeIcosahedron(std::vector<Vec3>& vertices, std::vector<Triangle>& faces)
       vertices.emplace_back(s2, 0.0, s1);
     }
   }
-  const auto isSide = [&](int a, int b) {
-    return std::abs((vertices[a] - vertices[b]).norm() - 2.0) < 1e-9;
-  };
+  const auto isSide = [&](int a, int b) { return std::abs((vertices[a] - vertices[b]).norm() - 2.0) < 1e-9; };
   faces.clear();
   const int n = static_cast<int>(vertices.size());
   for (int a = 0; a < n; ++a) {
@@ -51,8 +49,7 @@ void makeIcosahedron(std::vector<Vec3>& vertices, std::vector<Triangle>& faces)
 }
 
 /// Index of the projected midpoint of edge a-b, created on first request.
-int midpoint(int a, int b, std::vector<Vec3>& vertices,
-             std::unordered_map<std::uint64_t, int>& cache)
+int midpoint(int a, int b, std::vector<Vec3>& vertices, std::unordered_map<std::uint64_t, int>& cache)
 {
   const auto [it, inserted] = cache.try_emplace(detail::edgeKey(a, b), static_cast<int>(vertices.size()));
   if (inserted) {

@@ -34,17 +34,15 @@ NodeCurvatures jetFitCurvature(const SurfaceMesh& mesh, const JetFitOptions& opt
   std::vector<int> scratch(numNodes, -1);
   std::vector<Kernel::Point_3> points;
 
-  NodeCurvatures result{std::vector<double>(numNodes), std::vector<double>(numNodes),
-                        std::vector<Vec3>(numNodes)};
+  NodeCurvatures result{std::vector<double>(numNodes), std::vector<double>(numNodes), std::vector<Vec3>(numNodes)};
   MongeFitting fitting;
   for (int node = 0; node < mesh.numNodes(); ++node) {
     std::vector<int> neighbours = nodeNeighbourhood(graph, node, options.rings, scratch);
     for (int rings = options.rings + 1; neighbours.size() + 1 < needed; ++rings) {
       const std::size_t before = neighbours.size();
       neighbours = nodeNeighbourhood(graph, node, rings, scratch);
-      core::require<core::InputError>(neighbours.size() > before, "jetFitCurvature: the mesh has ",
-                                      mesh.numNodes(), " nodes, too few for a degree-",
-                                      options.degree, " jet");
+      core::require<core::InputError>(neighbours.size() > before, "jetFitCurvature: the mesh has ", mesh.numNodes(),
+                                      " nodes, too few for a degree-", options.degree, " jet");
     }
     // CGAL expands the jet about the first point of the range.
     points.clear();
@@ -54,13 +52,12 @@ NodeCurvatures jetFitCurvature(const SurfaceMesh& mesh, const JetFitOptions& opt
       const Vec3 x = mesh.position(n);
       points.emplace_back(x[0], x[1], x[2]);
     }
-    MongeFitting::Monge_form form = fitting(points.begin(), points.end(),
-                                            static_cast<std::size_t>(options.degree), 2);
+    MongeFitting::Monge_form form = fitting(points.begin(), points.end(), static_cast<std::size_t>(options.degree), 2);
     const Vec3& n = outward[static_cast<std::size_t>(node)];
     form.comply_wrt_given_normal(Kernel::Vector_3(n[0], n[1], n[2]));
     // Monge form: z = (k1 x^2 + k2 y^2)/2 + ... with z along the (now outward) normal;
     // a sphere bends away from its outward normal, so k1 = k2 = -1/R there.
-    const std::vector<double>& coefficients = form.coefficients();  // k1 >= k2 come first
+    const std::vector<double>& coefficients = form.coefficients(); // k1 >= k2 come first
     const double k1 = coefficients.at(0);
     const double k2 = coefficients.at(1);
     const auto i = static_cast<std::size_t>(node);

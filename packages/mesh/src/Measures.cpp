@@ -8,8 +8,7 @@
 
 namespace capsula::mesh {
 
-std::vector<double> elementAreas(const SurfaceMesh& mesh, const double* positions,
-                                 int numQuadraturePoints)
+std::vector<double> elementAreas(const SurfaceMesh& mesh, const double* positions, int numQuadraturePoints)
 {
   const auto& rule = quadrature::triangleRule(numQuadraturePoints);
   std::vector<double> areas(mesh.numElements());
@@ -29,8 +28,7 @@ std::vector<double> elementAreas(const SurfaceMesh& mesh, int numQuadraturePoint
 double surfaceArea(const SurfaceMesh& mesh, int numQuadraturePoints)
 {
   return integrateOverSurface(
-      mesh, quadrature::triangleRule(numQuadraturePoints), [](const SurfacePoint&) { return 1.0; },
-      0.0);
+      mesh, quadrature::triangleRule(numQuadraturePoints), [](const SurfacePoint&) { return 1.0; }, 0.0);
 }
 
 double enclosedVolume(const SurfaceMesh& mesh, int numQuadraturePoints)
@@ -48,9 +46,7 @@ Vec3 centroid(const SurfaceMesh& mesh, int numQuadraturePoints)
                                       "; the surface is inverted or degenerate");
   const Vec3 moment = integrateOverSurface(
       mesh, rule,
-      [](const SurfacePoint& s) -> Vec3 {
-        return s.position.cwiseProduct(s.position).cwiseProduct(s.normal);
-      },
+      [](const SurfacePoint& s) -> Vec3 { return s.position.cwiseProduct(s.position).cwiseProduct(s.normal); },
       Vec3(Vec3::Zero()));
   return moment / (2.0 * volume);
 }
@@ -63,8 +59,7 @@ double reducedVolume(double area, double volume)
 
 double reducedVolume(const SurfaceMesh& mesh, int numQuadraturePoints)
 {
-  return reducedVolume(surfaceArea(mesh, numQuadraturePoints),
-                       enclosedVolume(mesh, numQuadraturePoints));
+  return reducedVolume(surfaceArea(mesh, numQuadraturePoints), enclosedVolume(mesh, numQuadraturePoints));
 }
 
 Vec3 projectedAreas(const SurfaceMesh& mesh, int numQuadraturePoints)

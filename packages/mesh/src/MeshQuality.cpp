@@ -21,8 +21,7 @@ ElementQuality elementQuality(const SurfaceMesh& mesh, int element)
     const Vec3 toNext = x[(k + 1) % 3] - corner;
     const Vec3 toPrevious = x[(k + 2) % 3] - corner;
     // atan2(|a x b|, a . b) is accurate for angles near 0 and 180 degrees, unlike acos.
-    const double angle =
-        std::atan2(toNext.cross(toPrevious).norm(), toNext.dot(toPrevious)) * degreesPerRadian;
+    const double angle = std::atan2(toNext.cross(toPrevious).norm(), toNext.dot(toPrevious)) * degreesPerRadian;
     q.minAngle = std::min(q.minAngle, angle);
     q.maxAngle = std::max(q.maxAngle, angle);
     shortest = std::min(shortest, toNext.norm());
@@ -30,8 +29,7 @@ ElementQuality elementQuality(const SurfaceMesh& mesh, int element)
   }
   q.edgeRatio = longest / shortest;
   const ShapeParameters p = shapeParameters(x);
-  q.distortion =
-      std::max({std::abs(p.alpha - 0.5), std::abs(p.beta - 0.5), std::abs(p.gamma - 0.5)});
+  q.distortion = std::max({std::abs(p.alpha - 0.5), std::abs(p.beta - 0.5), std::abs(p.gamma - 0.5)});
   return q;
 }
 

@@ -12,8 +12,8 @@ NodeGraph nodeGraph(const SurfaceMesh& mesh)
 {
   // The nine sub-triangle edges of an element, as local node pairs: the two halves of
   // each element edge and the three edges joining the midside nodes.
-  static constexpr std::array<std::array<int, 2>, 9> subEdges{{
-      {0, 3}, {3, 1}, {1, 4}, {4, 2}, {2, 5}, {5, 0}, {3, 4}, {4, 5}, {5, 3}}};
+  static constexpr std::array<std::array<int, 2>, 9> subEdges{
+      {{0, 3}, {3, 1}, {1, 4}, {4, 2}, {2, 5}, {5, 0}, {3, 4}, {4, 5}, {5, 3}}};
   std::vector<std::pair<int, int>> pairs;
   pairs.reserve(static_cast<std::size_t>(mesh.numElements()) * 18);
   for (const ElementConnectivity& el : mesh.elements()) {
@@ -40,11 +40,9 @@ NodeGraph nodeGraph(const SurfaceMesh& mesh)
   return graph;
 }
 
-std::vector<int> nodeNeighbourhood(const NodeGraph& graph, int node, int rings,
-                                   std::vector<int>& scratch)
+std::vector<int> nodeNeighbourhood(const NodeGraph& graph, int node, int rings, std::vector<int>& scratch)
 {
-  core::require<core::InputError>(rings >= 1, "nodeNeighbourhood: rings = ", rings,
-                                   " must be at least 1");
+  core::require<core::InputError>(rings >= 1, "nodeNeighbourhood: rings = ", rings, " must be at least 1");
   // Breadth-first search; scratch[n] = ring of n while the search runs.
   std::vector<int> found;
   scratch[static_cast<std::size_t>(node)] = 0;

@@ -5,8 +5,7 @@
 
 namespace capsula::mesh {
 
-std::vector<Vec3> nodeNormals(const SurfaceMesh& mesh, const double* positions,
-                              int numQuadraturePoints)
+std::vector<Vec3> nodeNormals(const SurfaceMesh& mesh, const double* positions, int numQuadraturePoints)
 {
   const std::vector<double> areas = elementAreas(mesh, positions, numQuadraturePoints);
   std::vector<Vec3> normals(mesh.numNodes(), Vec3::Zero());

@@ -30,7 +30,7 @@ ElementClosestPoint closestPointOnElement(const ElementNodes& nodes, const Shape
     const double det = a * c - b * b;
     double nextXi = xi - (c * gXi - b * gEta) / det;
     double nextEta = eta - (a * gEta - b * gXi) / det;
-    if (nextXi + nextEta > 1.0) {   // onto the hypotenuse, then into its ends
+    if (nextXi + nextEta > 1.0) { // onto the hypotenuse, then into its ends
       const double excess = 0.5 * (nextXi + nextEta - 1.0);
       nextXi -= excess;
       nextEta -= excess;
@@ -62,10 +62,10 @@ struct OriginalSurface {
   const SurfaceMesh& mesh;
   const std::vector<double>& positions;
   const std::vector<double>& reference;
-  std::vector<ShapeParameters> parameters;   // from the reference: material (xi, eta)
-  std::vector<ElementNodes> nodes;           // current positions per element
-  std::vector<ElementNodes> referenceNodes;  // reference positions per element
-  std::vector<std::vector<int>> nearby;      // elements sharing a vertex with each element
+  std::vector<ShapeParameters> parameters;  // from the reference: material (xi, eta)
+  std::vector<ElementNodes> nodes;          // current positions per element
+  std::vector<ElementNodes> referenceNodes; // reference positions per element
+  std::vector<std::vector<int>> nearby;     // elements sharing a vertex with each element
 
   OriginalSurface(const SurfaceMesh& m, const std::vector<double>& x, const std::vector<double>& X)
       : mesh(m), positions(x), reference(X)
@@ -183,14 +183,14 @@ void smoothOnce(const OriginalSurface& original, double relaxation, const std::v
   // uniformly). The Lagrangian mesh starts that way and keeps it; so does this.
   for (const Edge& edge : mesh.edges()) {
     const auto a = static_cast<std::size_t>(edge.vertices[0]), b = static_cast<std::size_t>(edge.vertices[1]);
-    if (!movable[a] && !movable[b]) {   // both ends stay: so does the edge
+    if (!movable[a] && !movable[b]) { // both ends stay: so does the edge
       continue;
     }
     const Vec3 middle =
-      0.5 * (nodeAt(newReference.data(), edge.vertices[0]) + nodeAt(newReference.data(), edge.vertices[1]));
+        0.5 * (nodeAt(newReference.data(), edge.vertices[0]) + nodeAt(newReference.data(), edge.vertices[1]));
     const auto m = static_cast<std::size_t>(edge.midNode);
     newLocated[m] =
-      original.locate({newLocated[a].element, newLocated[b].element}, middle, candidates, /*inReference=*/true);
+        original.locate({newLocated[a].element, newLocated[b].element}, middle, candidates, /*inReference=*/true);
     original.place(newLocated[m], edge.midNode, newX, newReference);
   }
   x.swap(newX);
@@ -234,8 +234,9 @@ RedistributedNodes redistributeNodes(const SurfaceMesh& mesh, const std::vector<
                                   " reference values for a mesh of ", mesh.numNodes(), " nodes (3 each)");
   core::require<core::InputError>(options.passes >= 1, "redistributeNodes: passes = ", options.passes,
                                   " must be at least 1");
-  core::require<core::InputError>(options.improveBelow > 0.0, "redistributeNodes: improveBelow = ",
-                                  options.improveBelow, " degrees must be positive");
+  core::require<core::InputError>(options.improveBelow > 0.0,
+                                  "redistributeNodes: improveBelow = ", options.improveBelow,
+                                  " degrees must be positive");
   core::require<core::InputError>(options.relaxation > 0.0 && options.relaxation <= 1.0,
                                   "redistributeNodes: relaxation = ", options.relaxation, " must be in (0, 1]");
   SurfaceMesh scratch = mesh;
@@ -249,8 +250,8 @@ RedistributedNodes redistributeNodes(const SurfaceMesh& mesh, const std::vector<
   std::vector<Located> located(static_cast<std::size_t>(mesh.numNodes()));
   for (int node = 0; node < mesh.numNodes(); ++node) {
     const NodeIncidence first = mesh.incidentElements(node)[0];
-    const auto at = nodeParametricCoordinates(original.parameters[static_cast<std::size_t>(first.element)],
-                                              first.localNode);
+    const auto at =
+        nodeParametricCoordinates(original.parameters[static_cast<std::size_t>(first.element)], first.localNode);
     located[static_cast<std::size_t>(node)] = {first.element, at[0], at[1]};
   }
   // The vertices that may move: those of the elements below options.improveBelow and their

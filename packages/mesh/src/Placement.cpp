@@ -10,8 +10,7 @@ namespace capsula::mesh {
 
 Mat3 rotationAboutAxis(const Vec3& axis, double angle)
 {
-  core::require<core::InputError>(axis.norm() > 0.0,
-                                  "rotationAboutAxis: the axis is the zero vector");
+  core::require<core::InputError>(axis.norm() > 0.0, "rotationAboutAxis: the axis is the zero vector");
   return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
 }
 
@@ -19,8 +18,7 @@ void applyPlacement(SurfaceMesh& mesh, const Placement& placement)
 {
   const Mat3& r = placement.rotation;
   // Round-off of a rotation built from angles is ~1e-16; 1e-10 only rejects real mistakes.
-  core::require<core::InputError>((r.transpose() * r - Mat3::Identity()).norm() < 1e-10 &&
-                                      r.determinant() > 0.0,
+  core::require<core::InputError>((r.transpose() * r - Mat3::Identity()).norm() < 1e-10 && r.determinant() > 0.0,
                                   "Placement: the rotation matrix is not a proper rotation "
                                   "(orthogonal with determinant +1)");
   std::vector<double> x = mesh.positions();

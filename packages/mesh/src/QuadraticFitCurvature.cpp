@@ -46,8 +46,7 @@ void tangentFrame(const Vec3& n, Vec3& t1, Vec3& t2)
 /// from the neighbours' offsets from the node. The offsets are divided by the
 /// neighbourhood radius so that the normal equations are well conditioned: the
 /// coefficients are those of the scaled coordinates.
-Vec5 fitHeight(const Vec3& n, const std::vector<Vec3>& offsets, double radius,
-               Vec3& t1, Vec3& t2)
+Vec5 fitHeight(const Vec3& n, const std::vector<Vec3>& offsets, double radius, Vec3& t1, Vec3& t2)
 {
   tangentFrame(n, t1, t2);
   Mat5 normalMatrix = Mat5::Zero();
@@ -68,17 +67,16 @@ NodeCurvatures quadraticFitCurvature(const SurfaceMesh& mesh, const std::vector<
                                      const QuadraticFitOptions& options)
 {
   core::require<core::InputError>(static_cast<int>(initialNormals.size()) == mesh.numNodes(),
-                                  "quadraticFitCurvature: got ", initialNormals.size(),
-                                  " initial normals for ", mesh.numNodes(), " nodes");
-  core::require<core::InputError>(options.rings >= 1, "quadraticFitCurvature: rings = ",
-                                  options.rings, " must be at least 1");
+                                  "quadraticFitCurvature: got ", initialNormals.size(), " initial normals for ",
+                                  mesh.numNodes(), " nodes");
+  core::require<core::InputError>(options.rings >= 1, "quadraticFitCurvature: rings = ", options.rings,
+                                  " must be at least 1");
   const auto numNodes = static_cast<std::size_t>(mesh.numNodes());
   const NodeGraph graph = nodeGraph(mesh);
   std::vector<int> scratch(numNodes, -1);
   std::vector<Vec3> offsets;
 
-  NodeCurvatures result{std::vector<double>(numNodes), std::vector<double>(numNodes),
-                        std::vector<Vec3>(numNodes)};
+  NodeCurvatures result{std::vector<double>(numNodes), std::vector<double>(numNodes), std::vector<Vec3>(numNodes)};
   for (int node = 0; node < mesh.numNodes(); ++node) {
     const auto i = static_cast<std::size_t>(node);
     const Vec3 x0 = mesh.position(node);
@@ -118,10 +116,10 @@ NodeCurvatures quadraticFitCurvature(const SurfaceMesh& mesh, const std::vector<
     Eigen::Vector2d correction = correctionOf();
     // |(d, e)| is the angle between n and the fitted normal (NaN-safe test).
     for (int iteration = 0; !(std::hypot(fit[0], fit[1]) < options.tolerance); ++iteration) {
-      core::require<core::NumericalError>(
-          iteration < options.maxIterations, "quadraticFitCurvature: the normal at node ", node,
-          " did not settle within ", options.maxIterations, " iterations (tolerance ",
-          options.tolerance, "); the node's neighbourhood may be folded or degenerate");
+      core::require<core::NumericalError>(iteration < options.maxIterations,
+                                          "quadraticFitCurvature: the normal at node ", node, " did not settle within ",
+                                          options.maxIterations, " iterations (tolerance ", options.tolerance,
+                                          "); the node's neighbourhood may be folded or degenerate");
       const Eigen::Vector2d delta = -jacobian.inverse() * correction;
       theta += delta;
       n = (n0 + theta[0] * s1 + theta[1] * s2).normalized();
@@ -132,8 +130,8 @@ NodeCurvatures quadraticFitCurvature(const SurfaceMesh& mesh, const std::vector<
     }
     // Height f(x, y) in unscaled coordinates: f_x = d, f_y = e (now < tolerance),
     // f_xx = 2a/radius, f_xy = b/radius, f_yy = 2c/radius for the scaled coefficients.
-    const CurvaturePair k = graphCurvature(fit[0], fit[1], 2.0 * fit[2] / radius, fit[3] / radius,
-                                           2.0 * fit[4] / radius);
+    const CurvaturePair k =
+        graphCurvature(fit[0], fit[1], 2.0 * fit[2] / radius, fit[3] / radius, 2.0 * fit[4] / radius);
     result.mean[i] = k.mean;
     result.gaussian[i] = k.gaussian;
     result.normal[i] = (n - fit[0] * t1 - fit[1] * t2).normalized();

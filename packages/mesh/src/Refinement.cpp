@@ -15,7 +15,10 @@ using core::require;
 
 namespace {
 
-std::size_t at(int i) { return static_cast<std::size_t>(i); }
+std::size_t at(int i)
+{
+  return static_cast<std::size_t>(i);
+}
 
 /// Local index (0..2) of the longest vertex-to-vertex edge of element e (the first of
 /// equally long ones).
@@ -38,8 +41,11 @@ int longestEdge(const SurfaceMesh& mesh, int e)
 class Splitter {
 public:
   Splitter(const SurfaceMesh& mesh, const std::vector<std::vector<double>>& fields)
-    : mesh_(mesh), fields_(fields), positions_(mesh.positions()), newFields_(fields),
-      halfNodes_(at(mesh.numEdges()), {-1, -1})
+      : mesh_(mesh),
+        fields_(fields),
+        positions_(mesh.positions()),
+        newFields_(fields),
+        halfNodes_(at(mesh.numEdges()), {-1, -1})
   {
     for (const auto& field : fields) {
       components_.push_back(static_cast<int>(field.size()) / mesh.numNodes());
@@ -71,7 +77,7 @@ public:
     beginParent(e);
     const ElementConnectivity& n = mesh_.element(e);
     const int a = l, b = (l + 1) % 3, o = (l + 2) % 3, m = 3 + l;
-    const int edgeBO = b, edgeOA = o;  // local edge k joins vertices k and k + 1
+    const int edgeBO = b, edgeOA = o; // local edge k joins vertices k and k + 1
     const int midBO = 3 + edgeBO, midOA = 3 + edgeOA;
     const int bisector = interiorNode(m, o);
     if (second == edgeBO) {
@@ -163,7 +169,7 @@ private:
   std::vector<int> components_;
   std::vector<double> positions_;
   std::vector<std::vector<double>> newFields_;
-  std::vector<std::array<int, 2>> halfNodes_;  // per old edge: half at vertices[0], at vertices[1]
+  std::vector<std::array<int, 2>> halfNodes_; // per old edge: half at vertices[0], at vertices[1]
   std::vector<ElementConnectivity> elements_;
   std::vector<int> parents_;
   int parent_ = -1;
@@ -172,8 +178,7 @@ private:
 };
 
 /// The refined local edges of element e, and how many.
-int refinedEdges(const SurfaceMesh& mesh, const std::vector<char>& edgeRefined, int e,
-                 std::array<bool, 3>& refined)
+int refinedEdges(const SurfaceMesh& mesh, const std::vector<char>& edgeRefined, int e, std::array<bool, 3>& refined)
 {
   int count = 0;
   for (int k = 0; k < 3; ++k) {
@@ -189,7 +194,7 @@ int refinedEdges(const SurfaceMesh& mesh, const std::vector<char>& edgeRefined, 
 std::vector<char> closeRefinement(const SurfaceMesh& mesh, const std::vector<int>& markedElements)
 {
   std::vector<char> edgeRefined(at(mesh.numEdges()), 0);
-  std::vector<int> toCheck;  // elements across a newly refined edge
+  std::vector<int> toCheck; // elements across a newly refined edge
   const auto refine = [&](int e, int k) {
     char& refined = edgeRefined[at(mesh.elementEdge(e, k))];
     if (!refined) {
@@ -198,8 +203,8 @@ std::vector<char> closeRefinement(const SurfaceMesh& mesh, const std::vector<int
     }
   };
   for (int e : markedElements) {
-    require<InputError>(e >= 0 && e < mesh.numElements(), "refineElements: element ", e,
-                        " is outside 0..", mesh.numElements() - 1);
+    require<InputError>(e >= 0 && e < mesh.numElements(), "refineElements: element ", e, " is outside 0..",
+                        mesh.numElements() - 1);
     for (int k = 0; k < 3; ++k) {
       refine(e, k);
     }
@@ -215,10 +220,14 @@ std::vector<char> closeRefinement(const SurfaceMesh& mesh, const std::vector<int
 ElementSplit splitOf(int refinedCount)
 {
   switch (refinedCount) {
-  case 0: return ElementSplit::Kept;
-  case 1: return ElementSplit::Green;
-  case 2: return ElementSplit::Blue;
-  default: return ElementSplit::Red;
+  case 0:
+    return ElementSplit::Kept;
+  case 1:
+    return ElementSplit::Green;
+  case 2:
+    return ElementSplit::Blue;
+  default:
+    return ElementSplit::Red;
   }
 }
 
@@ -240,9 +249,8 @@ RefinedMesh refineElements(const SurfaceMesh& mesh, const std::vector<int>& mark
 {
   const auto numNodes = at(mesh.numNodes());
   for (std::size_t f = 0; f < fields.size(); ++f) {
-    require<InputError>(!fields[f].empty() && fields[f].size() % numNodes == 0, "refineElements: field ",
-                        f, " holds ", fields[f].size(),
-                        " values; it must hold the same number (>= 1) for each of the ", numNodes,
+    require<InputError>(!fields[f].empty() && fields[f].size() % numNodes == 0, "refineElements: field ", f, " holds ",
+                        fields[f].size(), " values; it must hold the same number (>= 1) for each of the ", numNodes,
                         " nodes");
   }
   const std::vector<char> edgeRefined = closeRefinement(mesh, markedElements);

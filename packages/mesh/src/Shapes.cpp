@@ -40,26 +40,22 @@ SurfaceMesh makeSphere(int level, double radius, const Placement& placement)
 
 SurfaceMesh makeEllipsoid(int level, const Vec3& semiAxes, const Placement& placement)
 {
-  require<InputError>(semiAxes.minCoeff() > 0.0, "makeEllipsoid: semi-axes (", semiAxes[0], ", ",
-                      semiAxes[1], ", ", semiAxes[2], ") must all be positive");
+  require<InputError>(semiAxes.minCoeff() > 0.0, "makeEllipsoid: semi-axes (", semiAxes[0], ", ", semiAxes[1], ", ",
+                      semiAxes[2], ") must all be positive");
   return mapUnitSphere(
       level, [&semiAxes](const Vec3& p) -> Vec3 { return semiAxes.cwiseProduct(p); }, placement);
 }
 
-SurfaceMesh makeSpheroid(int level, double equatorialRadius, double polarRadius,
-                         const Placement& placement)
+SurfaceMesh makeSpheroid(int level, double equatorialRadius, double polarRadius, const Placement& placement)
 {
   return makeEllipsoid(level, Vec3(equatorialRadius, equatorialRadius, polarRadius), placement);
 }
 
-SurfaceMesh makeBiconcaveCell(int level, const BiconcaveProfile& profile,
-                              const Placement& placement)
+SurfaceMesh makeBiconcaveCell(int level, const BiconcaveProfile& profile, const Placement& placement)
 {
   const double r0 = profile.radius;
   require<InputError>(r0 > 0.0, "makeBiconcaveCell: radius = ", r0, " must be positive");
-  const auto thickness = [&profile](double s) {
-    return profile.c0 + s * (profile.c1 + s * profile.c2);
-  };
+  const auto thickness = [&profile](double s) { return profile.c0 + s * (profile.c1 + s * profile.c2); };
   // The half-thickness must stay positive for 0 <= s <= 1 or the surface self-intersects;
   // the polynomial in s is quadratic, so checking the ends and the vertex suffices.
   double lowest = std::min(thickness(0.0), thickness(1.0));
@@ -69,9 +65,8 @@ SurfaceMesh makeBiconcaveCell(int level, const BiconcaveProfile& profile,
       lowest = std::min(lowest, thickness(sVertex));
     }
   }
-  require<InputError>(lowest > 0.0, "makeBiconcaveCell: coefficients c0 = ", profile.c0,
-                      ", c1 = ", profile.c1, ", c2 = ", profile.c2,
-                      " give a non-positive thickness somewhere on the disc");
+  require<InputError>(lowest > 0.0, "makeBiconcaveCell: coefficients c0 = ", profile.c0, ", c1 = ", profile.c1,
+                      ", c2 = ", profile.c2, " give a non-positive thickness somewhere on the disc");
   return mapUnitSphere(
       level,
       [r0, &thickness](const Vec3& p) -> Vec3 {

@@ -12,7 +12,8 @@
 namespace capsula::mesh {
 
 SurfaceMassMatrix::SurfaceMassMatrix(const SurfaceMesh& mesh)
-    : mesh_(&mesh), element_(static_cast<std::size_t>(mesh.numElements())),
+    : mesh_(&mesh),
+      element_(static_cast<std::size_t>(mesh.numElements())),
       diagonal_(static_cast<std::size_t>(mesh.numNodes()))
 {
   const std::size_t n = 3 * static_cast<std::size_t>(mesh.numNodes());
@@ -119,9 +120,9 @@ int SurfaceMassMatrix::solve(const double* F, double* f, double tolerance)
       rz[d] = rzNew[d];
     }
   }
-  throw core::NumericalError(core::message(
-    "the surface mass matrix solve did not converge in 500 conjugate-gradient iterations "
-    "(a degenerate or folded element?)"));
+  throw core::NumericalError(
+      core::message("the surface mass matrix solve did not converge in 500 conjugate-gradient iterations "
+                    "(a degenerate or folded element?)"));
 }
 
 std::vector<double> SurfaceMassMatrix::nodalAreas() const

@@ -17,10 +17,10 @@ constexpr std::uint8_t unassigned = 255;
 } // namespace
 
 SurfaceMesh::SurfaceMesh(std::vector<double> positions, std::vector<ElementConnectivity> elements)
-  : positions_(std::move(positions)), elements_(std::move(elements))
+    : positions_(std::move(positions)), elements_(std::move(elements))
 {
-  require<InputError>(positions_.size() % 3 == 0, "SurfaceMesh: the position array holds ",
-                      positions_.size(), " values; it must hold 3 per node");
+  require<InputError>(positions_.size() % 3 == 0, "SurfaceMesh: the position array holds ", positions_.size(),
+                      " values; it must hold 3 per node");
   require<InputError>(!elements_.empty(), "SurfaceMesh: the element list is empty");
   const int n = numNodes();
 
@@ -29,8 +29,8 @@ SurfaceMesh::SurfaceMesh(std::vector<double> positions, std::vector<ElementConne
   for (int e = 0; e < numElements(); ++e) {
     for (int i = 0; i < 6; ++i) {
       const int node = elements_[e][i];
-      require<InputError>(node >= 0 && node < n, "SurfaceMesh: element ", e, " lists node ", node,
-                          ", outside 0..", n - 1);
+      require<InputError>(node >= 0 && node < n, "SurfaceMesh: element ", e, " lists node ", node, ", outside 0..",
+                          n - 1);
       const std::uint8_t k = i < 3 ? 0 : 1;
       auto& slot = kind[node];
       require<InputError>(slot == unassigned || slot == k, "SurfaceMesh: node ", node,
@@ -93,11 +93,10 @@ void SurfaceMesh::buildEdges()
         Edge& edge = edges_[it->second];
         require<InputError>(edge.elements[1] < 0, "SurfaceMesh: edge ", a, "-", b,
                             " is shared by more than two elements (not a 2-manifold)");
-        require<InputError>(edge.midNode == mid, "SurfaceMesh: edge ", a, "-", b,
-                            " has two different midside nodes, ", edge.midNode, " and ", mid);
-        require<InputError>(edge.vertices[0] == b && edge.vertices[1] == a,
-                            "SurfaceMesh: elements ", edge.elements[0], " and ", e,
-                            " traverse edge ", a, "-", b,
+        require<InputError>(edge.midNode == mid, "SurfaceMesh: edge ", a, "-", b, " has two different midside nodes, ",
+                            edge.midNode, " and ", mid);
+        require<InputError>(edge.vertices[0] == b && edge.vertices[1] == a, "SurfaceMesh: elements ", edge.elements[0],
+                            " and ", e, " traverse edge ", a, "-", b,
                             " in the same direction (inconsistent orientation)");
         edge.elements[1] = e;
         edge.localEdges[1] = k;
@@ -107,17 +106,15 @@ void SurfaceMesh::buildEdges()
     }
   }
   for (const Edge& edge : edges_) {
-    require<InputError>(edge.elements[1] >= 0, "SurfaceMesh: edge ", edge.vertices[0], "-",
-                        edge.vertices[1],
+    require<InputError>(edge.elements[1] >= 0, "SurfaceMesh: edge ", edge.vertices[0], "-", edge.vertices[1],
                         " belongs to one element only (the surface is not closed)");
   }
 }
 
 void SurfaceMesh::setPositions(const std::vector<double>& positions)
 {
-  require<InputError>(positions.size() == positions_.size(), "SurfaceMesh::setPositions: got ",
-                      positions.size(), " values for ", numNodes(), " nodes; expected ",
-                      positions_.size());
+  require<InputError>(positions.size() == positions_.size(), "SurfaceMesh::setPositions: got ", positions.size(),
+                      " values for ", numNodes(), " nodes; expected ", positions_.size());
   positions_ = positions;
 }
 
@@ -136,8 +133,7 @@ void SurfaceMesh::setPosition(int node, const Vec3& x)
 
 ConstRange<NodeIncidence> SurfaceMesh::incidentElements(int node) const
 {
-  return {incidences_.data() + incidenceOffsets_[node],
-          incidences_.data() + incidenceOffsets_[node + 1]};
+  return {incidences_.data() + incidenceOffsets_[node], incidences_.data() + incidenceOffsets_[node + 1]};
 }
 
 int SurfaceMesh::neighbour(int e, int k) const

@@ -10,16 +10,15 @@ namespace capsula::operators {
 namespace core = capsula::core;
 
 CellSurfaces::CellSurfaces(std::vector<mesh::SurfaceMesh> cells, std::vector<double> viscosityRatios)
-  : cells_(std::move(cells)), viscosityRatios_(std::move(viscosityRatios))
+    : cells_(std::move(cells)), viscosityRatios_(std::move(viscosityRatios))
 {
   core::require<core::InputError>(!cells_.empty(), "The boundary integrals need at least one cell.");
-  core::require<core::InputError>(viscosityRatios_.size() == cells_.size(), "Got ",
-                                  viscosityRatios_.size(), " viscosity ratios for ", cells_.size(),
-                                  " cells; give one per cell.");
+  core::require<core::InputError>(viscosityRatios_.size() == cells_.size(), "Got ", viscosityRatios_.size(),
+                                  " viscosity ratios for ", cells_.size(), " cells; give one per cell.");
   for (std::size_t c = 0; c < cells_.size(); ++c) {
     const double lambda = viscosityRatios_[c];
-    core::require<core::InputError>(std::isfinite(lambda) && lambda > 0.0, "The viscosity ratio of cell ",
-                                    c, " is ", lambda, "; it must be a finite number > 0.");
+    core::require<core::InputError>(std::isfinite(lambda) && lambda > 0.0, "The viscosity ratio of cell ", c, " is ",
+                                    lambda, "; it must be a finite number > 0.");
   }
   nodeOffsets_.assign(1, 0);
   elementOffsets_.assign(1, 0);
@@ -30,13 +29,12 @@ CellSurfaces::CellSurfaces(std::vector<mesh::SurfaceMesh> cells, std::vector<dou
 }
 
 CellSurfaces::CellSurfaces(std::vector<mesh::SurfaceMesh> cells, double viscosityRatio)
-  : CellSurfaces(cells, std::vector<double>(cells.size(), viscosityRatio))
+    : CellSurfaces(cells, std::vector<double>(cells.size(), viscosityRatio))
 {}
 
 bool CellSurfaces::allViscosityRatiosOne() const
 {
-  return std::all_of(viscosityRatios_.begin(), viscosityRatios_.end(),
-                     [](double lambda) { return lambda == 1.0; });
+  return std::all_of(viscosityRatios_.begin(), viscosityRatios_.end(), [](double lambda) { return lambda == 1.0; });
 }
 
 int CellSurfaces::cellOfNode(int node) const

@@ -47,18 +47,14 @@ void validate(const ContourDiscretisation2D& p)
   using core::InputError;
   using core::require;
   require<InputError>(p.gaussLegendrePoints >= 1 && p.gaussLegendrePoints <= 64,
-                      "Discretisation/Gauss-Legendre points must be from 1 to 64, got ",
-                      p.gaussLegendrePoints, ".");
-  require<InputError>(p.logWeightedPoints >= 1 &&
-                        p.logWeightedPoints <= quadrature::maxLogWeightedGaussOrder,
-                      "Discretisation/Log-weighted points must be from 1 to ",
-                      quadrature::maxLogWeightedGaussOrder, ", got ", p.logWeightedPoints, ".");
+                      "Discretisation/Gauss-Legendre points must be from 1 to 64, got ", p.gaussLegendrePoints, ".");
+  require<InputError>(p.logWeightedPoints >= 1 && p.logWeightedPoints <= quadrature::maxLogWeightedGaussOrder,
+                      "Discretisation/Log-weighted points must be from 1 to ", quadrature::maxLogWeightedGaussOrder,
+                      ", got ", p.logWeightedPoints, ".");
   require<InputError>(std::isfinite(p.nearSingularDistance) && p.nearSingularDistance >= 0.0,
-                      "Discretisation/Near-singular distance must be >= 0, got ",
-                      p.nearSingularDistance, ".");
+                      "Discretisation/Near-singular distance must be >= 0, got ", p.nearSingularDistance, ".");
   require<InputError>(p.nearSingularLevels >= 0 && p.nearSingularLevels <= 20,
-                      "Discretisation/Near-singular levels must be from 0 to 20, got ",
-                      p.nearSingularLevels, ".");
+                      "Discretisation/Near-singular levels must be from 0 to 20, got ", p.nearSingularLevels, ".");
 }
 
 } // namespace capsula::operators

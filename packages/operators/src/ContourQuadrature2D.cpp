@@ -49,10 +49,8 @@ contour::CubicSpline fitComponent(const contour::Contour& contour, const double*
 } // namespace
 
 ContourField2D::ContourField2D(const contour::Contour& contour, const double* nodalValues)
-    : knots_(contour.parameters()), x_(fitComponent(contour, nodalValues, 0)),
-      y_(fitComponent(contour, nodalValues, 1))
-{
-}
+    : knots_(contour.parameters()), x_(fitComponent(contour, nodalValues, 0)), y_(fitComponent(contour, nodalValues, 1))
+{}
 
 Eigen::Vector2d ContourField2D::at(int segment, double t) const
 {

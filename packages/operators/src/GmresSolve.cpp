@@ -38,8 +38,7 @@ GmresResult finish(Solver& solver)
 
 GmresResult solveWithGmres(const Teuchos::RCP<const Tpetra::Operator<double>>& A,
                            const Teuchos::RCP<const Tpetra::MultiVector<double>>& b,
-                           const Teuchos::RCP<Tpetra::MultiVector<double>>& x,
-                           const SolverParameters& parameters)
+                           const Teuchos::RCP<Tpetra::MultiVector<double>>& x, const SolverParameters& parameters)
 {
   using MV = Tpetra::MultiVector<double>;
   using OP = Tpetra::Operator<double>;
@@ -53,8 +52,8 @@ GmresResult solveWithGmres(const Teuchos::RCP<const Tpetra::Operator<double>>& A
 GmresResult solveWithGmres(const Teuchos::RCP<const Tpetra::Operator<double>>& A,
                            const Teuchos::RCP<const Tpetra::Operator<double>>& M,
                            const Teuchos::RCP<const Tpetra::MultiVector<double>>& b,
-                           const Teuchos::RCP<Tpetra::MultiVector<double>>& x,
-                           const SolverParameters& parameters, bool zeroInitialGuess)
+                           const Teuchos::RCP<Tpetra::MultiVector<double>>& x, const SolverParameters& parameters,
+                           bool zeroInitialGuess)
 {
   using MV = Tpetra::MultiVector<double>;
   using OP = Tpetra::Operator<double>;

@@ -20,7 +20,7 @@ class KernelInterfaceVelocity2D final : public InterfaceVelocity2D {
 public:
   KernelInterfaceVelocity2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes,
                             const ContourDiscretisation2D& discretisation, const SolverParameters& solver)
-    : distribution_(comm, numNodes, 2), potentials_(discretisation), solver_(solver)
+      : distribution_(comm, numNodes, 2), potentials_(discretisation), solver_(solver)
   {
     validate(solver_);
   }
@@ -74,22 +74,22 @@ public:
     std::vector<double> rowScale(static_cast<std::size_t>(owned), coefficient);
     for (std::size_t k = 0; k < rowScale.size(); ++k) {
       if (fixed[k]) {
-        rowScale[k] = 0.0;   // a prescribed velocity: the row is the identity
+        rowScale[k] = 0.0; // a prescribed velocity: the row is the identity
       }
     }
     auto A = Teuchos::rcp(new SecondKindOperator(
-      distribution_.map(),
-      [this](const double* density, double* rows) {
-        potentials_.doubleLayerAtNodes(density, DoubleLayerForm::Subtracted, rows);
-      },
-      {}, std::move(rowScale), 2));
+        distribution_.map(),
+        [this](const double* density, double* rows) {
+          potentials_.doubleLayerAtNodes(density, DoubleLayerForm::Subtracted, rows);
+        },
+        {}, std::move(rowScale), 2));
     // The start: the lambda = 1 velocity, or the warm start's combination of the last
     // solutions (every rank forms the same guess from the same global vectors).
     std::vector<double> globalRhs, guess;
     if (history) {
       globalRhs = distribution_.gather(rhs);
       if (!history->empty() && history->length() != globalRhs.size()) {
-        *history = WarmStartHistory(history->depth());   // another contour: its solutions do not apply
+        *history = WarmStartHistory(history->depth()); // another contour: its solutions do not apply
       }
       guess = history->initialGuess(globalRhs);
     }
@@ -106,10 +106,10 @@ public:
       }
     }
     const GmresResult result = solveWithGmres(A, b, x, solver_);
-    core::require<core::NumericalError>(
-      result.converged, "GMRES did not converge for the viscosity ratio ", lambda, " after ", result.iterations,
-      " iterations (relative residual ", result.residual, ", Solver/Tolerance ", solver_.tolerance,
-      "): raise Solver/Maximum iterations or Solver/Tolerance.");
+    core::require<core::NumericalError>(result.converged, "GMRES did not converge for the viscosity ratio ", lambda,
+                                        " after ", result.iterations, " iterations (relative residual ",
+                                        result.residual, ", Solver/Tolerance ", solver_.tolerance,
+                                        "): raise Solver/Maximum iterations or Solver/Tolerance.");
     std::vector<double> ownedVelocity(rhs.size());
     {
       const auto xData = x->getData(0);
@@ -172,11 +172,9 @@ private:
 
 } // namespace
 
-std::unique_ptr<InterfaceVelocity2D> makeInterfaceVelocity2D(bool wall,
-                                                             const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
-                                                             int numNodes,
-                                                             const ContourDiscretisation2D& discretisation,
-                                                             const SolverParameters& solver)
+std::unique_ptr<InterfaceVelocity2D>
+makeInterfaceVelocity2D(bool wall, const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes,
+                        const ContourDiscretisation2D& discretisation, const SolverParameters& solver)
 {
   if (wall) {
     return std::make_unique<KernelInterfaceVelocity2D<greens::Wall2D>>(comm, numNodes, discretisation, solver);

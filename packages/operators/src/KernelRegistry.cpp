@@ -37,9 +37,8 @@ const KernelRegistry::Entry& KernelRegistry::entry(const std::string& name) cons
       known << (known.tellp() > 0 ? ", " : "") << registered;
     }
     const auto closest = core::closestMatch(name, names());
-    throw core::InputError(core::message("There is no Green's function kernel named '", name,
-                                         "'; registered: ", known.str(), ".",
-                                         closest ? " Did you mean '" + *closest + "'?" : ""));
+    throw core::InputError(core::message("There is no Green's function kernel named '", name, "'; registered: ",
+                                         known.str(), ".", closest ? " Did you mean '" + *closest + "'?" : ""));
   }
   return it->second;
 }
@@ -49,9 +48,11 @@ const std::string& KernelRegistry::description(const std::string& name) const
   return entry(name).description;
 }
 
-std::unique_ptr<BoundaryIntegralSolver> KernelRegistry::create(
-  const std::string& name, const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
-  const DiscretisationParameters& discretisation, const SolverParameters& solver) const
+std::unique_ptr<BoundaryIntegralSolver> KernelRegistry::create(const std::string& name,
+                                                               const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                                                               CellSurfaces surfaces,
+                                                               const DiscretisationParameters& discretisation,
+                                                               const SolverParameters& solver) const
 {
   return entry(name).factory(comm, std::move(surfaces), discretisation, solver);
 }
@@ -59,8 +60,7 @@ std::unique_ptr<BoundaryIntegralSolver> KernelRegistry::create(
 void registerBuiltInKernels(KernelRegistry& registry)
 {
   registry.add("FreeSpace", "Unbounded fluid (thesis eqs 3.11-3.12).", solverFactory<FreeSpace3DKernel>());
-  registry.add("Wall", "Plane wall y = 0, fluid y > 0 (Blake 1971; thesis App. B.2).",
-               solverFactory<Wall3DKernel>());
+  registry.add("Wall", "Plane wall y = 0, fluid y > 0 (Blake 1971; thesis App. B.2).", solverFactory<Wall3DKernel>());
 }
 
 KernelRegistry builtInKernels()

@@ -11,7 +11,7 @@ namespace capsula::operators {
 
 NodeDistribution::NodeDistribution(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes,
                                    int unknownsPerNode)
-  : comm_(comm), numNodes_(numNodes), unknownsPerNode_(unknownsPerNode)
+    : comm_(comm), numNodes_(numNodes), unknownsPerNode_(unknownsPerNode)
 {
   core::require<core::InputError>(numNodes > 0, "a node distribution needs nodes, got ", numNodes);
   core::require<core::InputError>(unknownsPerNode == 2 || unknownsPerNode == 3,
@@ -22,8 +22,8 @@ NodeDistribution::NodeDistribution(const Teuchos::RCP<const Teuchos::Comm<int>>&
   const auto stride = static_cast<std::size_t>(unknownsPerNode);
   map_ = Teuchos::rcp(new Map(stride * static_cast<Tpetra::global_size_t>(numNodes),
                               stride * static_cast<std::size_t>(numOwned_), 0, comm_));
-  replicatedMap_ = Teuchos::rcp(new Map(stride * static_cast<Tpetra::global_size_t>(numNodes), 0, comm_,
-                                        Tpetra::LocallyReplicated));
+  replicatedMap_ =
+      Teuchos::rcp(new Map(stride * static_cast<Tpetra::global_size_t>(numNodes), 0, comm_, Tpetra::LocallyReplicated));
   gather_ = Teuchos::rcp(new Tpetra::Import<>(map_, replicatedMap_));
 }
 
@@ -53,8 +53,7 @@ std::pair<int, int> NodeDistribution::share(int n) const
   return {first, first + base + (rank < extra ? 1 : 0)};
 }
 
-std::vector<double> NodeDistribution::gatherShares(const std::vector<double>& shareValues, int n,
-                                                   int width) const
+std::vector<double> NodeDistribution::gatherShares(const std::vector<double>& shareValues, int n, int width) const
 {
   // Each entry is written by one rank and zero on the others: the sum is exact.
   std::vector<double> mine(static_cast<std::size_t>(n) * width, 0.0);

@@ -66,7 +66,8 @@ void declareSolverKeys(Teuchos::ParameterList& solver, double defaultTolerance, 
   const SolverParameters defaults;
   core::declareReal(solver, "Tolerance", defaultTolerance,
                     "GMRES stopping tolerance on the relative residual ||b - A u|| / ||b|| of the "
-                    "viscosity-ratio equation (used only when some cell has lambda != 1)." + toleranceDoc,
+                    "viscosity-ratio equation (used only when some cell has lambda != 1)." +
+                        toleranceDoc,
                     core::greaterThan(0.0), core::lessThan(1.0));
   core::declareInt(solver, "Restart", defaults.restart,
                    "Krylov vectors GMRES keeps before it restarts (Belos 'Num Blocks').", 1, 1000);
@@ -100,10 +101,10 @@ void declareSurfaceSolverParameters(Teuchos::ParameterList& solver)
 
 void declareOperatorParameters(Teuchos::ParameterList& deck)
 {
-  declareDiscretisationParameters(core::declareSublist(
-    deck, "Discretisation", "Quadrature of the boundary integrals (thesis Section 3.6)."));
-  declareSurfaceSolverParameters(core::declareSublist(
-    deck, "Solver", "GMRES for the viscosity-ratio equation (thesis Section 3.8)."));
+  declareDiscretisationParameters(
+      core::declareSublist(deck, "Discretisation", "Quadrature of the boundary integrals (thesis Section 3.6)."));
+  declareSurfaceSolverParameters(
+      core::declareSublist(deck, "Solver", "GMRES for the viscosity-ratio equation (thesis Section 3.8)."));
 }
 
 DiscretisationParameters readDiscretisationParameters(const Teuchos::ParameterList& discretisation)
@@ -132,16 +133,15 @@ SolverParameters readSolverParameters(const Teuchos::ParameterList& solver)
 void validate(const DiscretisationParameters& p)
 {
   const auto counts = quadrature::supportedTriangleRules();
-  core::require<core::InputError>(
-    std::find(counts.begin(), counts.end(), p.quadraturePoints) != counts.end(),
-    "'Discretisation/Quadrature points' = ", p.quadraturePoints,
-    " has no symmetric triangle rule; use one of ", supportedRuleList(), ".");
+  core::require<core::InputError>(std::find(counts.begin(), counts.end(), p.quadraturePoints) != counts.end(),
+                                  "'Discretisation/Quadrature points' = ", p.quadraturePoints,
+                                  " has no symmetric triangle rule; use one of ", supportedRuleList(), ".");
   core::require<core::InputError>(p.singularQuadraturePoints >= 2 && p.singularQuadraturePoints <= 32,
-                                  "'Discretisation/Singular quadrature points' = ",
-                                  p.singularQuadraturePoints, " must lie in [2, 32].");
+                                  "'Discretisation/Singular quadrature points' = ", p.singularQuadraturePoints,
+                                  " must lie in [2, 32].");
   core::require<core::InputError>(p.nearSingularTolerance > 0.0 && p.nearSingularTolerance < 1.0,
-                                  "'Discretisation/Near-singular tolerance' = ",
-                                  p.nearSingularTolerance, " must lie in (0, 1), e.g. 1e-6.");
+                                  "'Discretisation/Near-singular tolerance' = ", p.nearSingularTolerance,
+                                  " must lie in (0, 1), e.g. 1e-6.");
   core::require<core::InputError>(std::isfinite(p.nearSingularDistance) && p.nearSingularDistance >= 0.0,
                                   "'Discretisation/Near-singular distance' = ", p.nearSingularDistance,
                                   " must be >= 0 (element sizes; 0 turns the treatment off).");
@@ -152,12 +152,11 @@ void validate(const DiscretisationParameters& p)
 
 void validate(const SolverParameters& p)
 {
-  core::require<core::InputError>(p.tolerance > 0.0 && p.tolerance < 1.0, "'Solver/Tolerance' = ",
-                                  p.tolerance, " must lie in (0, 1), e.g. 1e-7.");
-  core::require<core::InputError>(p.restart >= 1, "'Solver/Restart' = ", p.restart,
-                                  " must be >= 1, e.g. 50.");
-  core::require<core::InputError>(p.maximumIterations >= 1, "'Solver/Maximum iterations' = ",
-                                  p.maximumIterations, " must be >= 1.");
+  core::require<core::InputError>(p.tolerance > 0.0 && p.tolerance < 1.0, "'Solver/Tolerance' = ", p.tolerance,
+                                  " must lie in (0, 1), e.g. 1e-7.");
+  core::require<core::InputError>(p.restart >= 1, "'Solver/Restart' = ", p.restart, " must be >= 1, e.g. 50.");
+  core::require<core::InputError>(p.maximumIterations >= 1, "'Solver/Maximum iterations' = ", p.maximumIterations,
+                                  " must be >= 1.");
 }
 
 } // namespace capsula::operators

@@ -78,8 +78,8 @@ void singularRule(int localNode, const mesh::ShapeParameters& shape, const quadr
   rule.clear();
   if (localNode < 3) {
     // Eq 3.42 at vertex P: the single sub-triangle spanned by the other two vertices.
-    appendPolarRule(equilateral[localNode], equilateral[(localNode + 1) % 3],
-                    equilateral[(localNode + 2) % 3], gauss, rule);
+    appendPolarRule(equilateral[localNode], equilateral[(localNode + 1) % 3], equilateral[(localNode + 2) % 3], gauss,
+                    rule);
     toParametric(rule, 0);
     return;
   }

@@ -8,9 +8,8 @@ namespace {
 
 // Clones of a function declared in a header need their definition in every caller's
 // translation unit; this one is local and the public function forwards to it.
-CAPSULA_KERNEL_CLONES void solidAngleSums(TargetBlock& block, const double* x, const double* y,
-                                          const double* z, const double* ax, const double* ay,
-                                          const double* az, int begin, int end)
+CAPSULA_KERNEL_CLONES void solidAngleSums(TargetBlock& block, const double* x, const double* y, const double* z,
+                                          const double* ax, const double* ay, const double* az, int begin, int end)
 {
   const int n = block.paddedSize;
   for (int q = begin; q < end; ++q) {
@@ -26,8 +25,8 @@ CAPSULA_KERNEL_CLONES void solidAngleSums(TargetBlock& block, const double* x, c
 
 } // namespace
 
-void addSolidAngleSums(TargetBlock& block, const double* x, const double* y, const double* z,
-                       const double* ax, const double* ay, const double* az, int begin, int end)
+void addSolidAngleSums(TargetBlock& block, const double* x, const double* y, const double* z, const double* ax,
+                       const double* ay, const double* az, int begin, int end)
 {
   solidAngleSums(block, x, y, z, ax, ay, az, begin, end);
 }

@@ -27,9 +27,8 @@ CAPSULA_KERNEL_CLONES void wallSums(const double* px, const double* py, const do
 }
 
 CAPSULA_KERNEL_CLONES void freeSpaceSums(const double* px, const double* py, const double* fx, const double* fy,
-                                         int pointsPerSegment, int numSegments, const double* tx,
-                                         const double* ty, int paddedTargets, const double* mask, double* ux,
-                                         double* uy)
+                                         int pointsPerSegment, int numSegments, const double* tx, const double* ty,
+                                         int paddedTargets, const double* mask, double* ux, double* uy)
 {
   for (int k = 0; k < numSegments; ++k) {
     const double* use = mask + static_cast<long>(k) * paddedTargets;
@@ -45,8 +44,10 @@ CAPSULA_KERNEL_CLONES void freeSpaceSums(const double* px, const double* py, con
   }
 }
 
-CAPSULA_KERNEL_CLONES void wallPairs(const double* __restrict x, const double* __restrict y, const double* __restrict fx, const double* __restrict fy,
-                                     const double* __restrict x0, const double* __restrict y0, int count, double* __restrict ux, double* __restrict uy)
+CAPSULA_KERNEL_CLONES void wallPairs(const double* __restrict x, const double* __restrict y,
+                                     const double* __restrict fx, const double* __restrict fy,
+                                     const double* __restrict x0, const double* __restrict y0, int count,
+                                     double* __restrict ux, double* __restrict uy)
 {
   for (int i = 0; i < count; ++i) {
     double u0 = 0.0, u1 = 0.0;
@@ -56,8 +57,10 @@ CAPSULA_KERNEL_CLONES void wallPairs(const double* __restrict x, const double* _
   }
 }
 
-CAPSULA_KERNEL_CLONES void freeSpacePairs(const double* __restrict x, const double* __restrict y, const double* __restrict fx, const double* __restrict fy,
-                                          const double* __restrict x0, const double* __restrict y0, int count, double* __restrict ux, double* __restrict uy)
+CAPSULA_KERNEL_CLONES void freeSpacePairs(const double* __restrict x, const double* __restrict y,
+                                          const double* __restrict fx, const double* __restrict fy,
+                                          const double* __restrict x0, const double* __restrict y0, int count,
+                                          double* __restrict ux, double* __restrict uy)
 {
   for (int i = 0; i < count; ++i) {
     double u0 = 0.0, u1 = 0.0;
@@ -67,9 +70,8 @@ CAPSULA_KERNEL_CLONES void freeSpacePairs(const double* __restrict x, const doub
   }
 }
 
-CAPSULA_KERNEL_CLONES void markNear(const double* segments, const double* reach2, int numSegments,
-                                    const double* tx, const double* ty, int paddedTargets, bool withImage,
-                                    double* mask)
+CAPSULA_KERNEL_CLONES void markNear(const double* segments, const double* reach2, int numSegments, const double* tx,
+                                    const double* ty, int paddedTargets, bool withImage, double* mask)
 {
   const double imageSign = withImage ? -1.0 : 1.0;
   for (int k = 0; k < numSegments; ++k) {
@@ -98,8 +100,8 @@ void wallStokesletPairs2D(const double* x, const double* y, const double* fx, co
   wallPairs(x, y, fx, fy, x0, y0, count, ux, uy);
 }
 
-void freeSpaceStokesletPairs2D(const double* x, const double* y, const double* fx, const double* fy,
-                               const double* x0, const double* y0, int count, double* ux, double* uy)
+void freeSpaceStokesletPairs2D(const double* x, const double* y, const double* fx, const double* fy, const double* x0,
+                               const double* y0, int count, double* ux, double* uy)
 {
   freeSpacePairs(x, y, fx, fy, x0, y0, count, ux, uy);
 }

@@ -11,15 +11,15 @@ namespace capsula::operators {
 SecondKindOperator::SecondKindOperator(Teuchos::RCP<const Map> map, DoubleLayerRows doubleLayer,
                                        std::vector<double> densityScale, std::vector<double> rowScale,
                                        int unknownsPerNode)
-  : map_(std::move(map)),
-    replicatedMap_(Teuchos::rcp(new Map(map_->getGlobalNumElements(), 0, map_->getComm(),
-                                        Tpetra::LocallyReplicated))),
-    gather_(Teuchos::rcp(new Tpetra::Import<>(map_, replicatedMap_))),
-    doubleLayer_(std::move(doubleLayer)),
-    densityScale_(std::move(densityScale)),
-    rowScale_(std::move(rowScale)),
-    unknownsPerNode_(static_cast<std::size_t>(unknownsPerNode)),
-    timer_(core::timer("Double-layer application"))
+    : map_(std::move(map)),
+      replicatedMap_(
+          Teuchos::rcp(new Map(map_->getGlobalNumElements(), 0, map_->getComm(), Tpetra::LocallyReplicated))),
+      gather_(Teuchos::rcp(new Tpetra::Import<>(map_, replicatedMap_))),
+      doubleLayer_(std::move(doubleLayer)),
+      densityScale_(std::move(densityScale)),
+      rowScale_(std::move(rowScale)),
+      unknownsPerNode_(static_cast<std::size_t>(unknownsPerNode)),
+      timer_(core::timer("Double-layer application"))
 {
   core::require(unknownsPerNode == 2 || unknownsPerNode == 3, "SecondKindOperator: 2 or 3 unknowns per node, not ",
                 unknownsPerNode, ".");

@@ -76,7 +76,7 @@ void SplineDoubleLayer2D::apply(const contour::Contour& contour, const double* n
       const contour::CubicPiece& p = spline.piece(piece);
       const double h = s[static_cast<std::size_t>(piece) + 1] - s[static_cast<std::size_t>(piece)];
       knotData_[4 * static_cast<std::size_t>(k) + 2 + static_cast<std::size_t>(c)] =
-        k == piece ? 2.0 * p.b : 6.0 * p.a * h + 2.0 * p.b;
+          k == piece ? 2.0 * p.b : 6.0 * p.a * h + 2.0 * p.b;
     }
   }
   const auto lanes = static_cast<std::size_t>(paddedTargets_);
@@ -107,10 +107,10 @@ namespace {
 // segment and block rather than once per point. Always inlined into the target clones
 // below: a separate instance would be compiled for the baseline instruction set only.
 template <class Weight>
-[[gnu::always_inline]] inline void coefficientsOfSegments(const double* px, const double* py, const double* ax, const double* ay,
-                                   const double* basis, int pointsPerSegment, int numSegments, const double* tx,
-                                   const double* ty, const double* mask, SplineDoubleLayer2D& layer,
-                                   Weight weight)
+[[gnu::always_inline]] inline void coefficientsOfSegments(const double* px, const double* py, const double* ax,
+                                                          const double* ay, const double* basis, int pointsPerSegment,
+                                                          int numSegments, const double* tx, const double* ty,
+                                                          const double* mask, SplineDoubleLayer2D& layer, Weight weight)
 {
   constexpr int block = 64;
   const int lanes = layer.paddedTargets();
@@ -170,10 +170,10 @@ CAPSULA_KERNEL_CLONES void wallCoefficients(const double* px, const double* py, 
                          });
 }
 
-CAPSULA_KERNEL_CLONES void freeSpaceCoefficients(const double* px, const double* py, const double* ax,
-                                                 const double* ay, const double* basis, int pointsPerSegment,
-                                                 int numSegments, const double* tx, const double* ty,
-                                                 const double* mask, SplineDoubleLayer2D& layer)
+CAPSULA_KERNEL_CLONES void freeSpaceCoefficients(const double* px, const double* py, const double* ax, const double* ay,
+                                                 const double* basis, int pointsPerSegment, int numSegments,
+                                                 const double* tx, const double* ty, const double* mask,
+                                                 SplineDoubleLayer2D& layer)
 {
   coefficientsOfSegments(px, py, ax, ay, basis, pointsPerSegment, numSegments, tx, ty, mask, layer,
                          [](double x, double y, double a0, double a1, double x0, double y0, double W[4]) {
@@ -184,17 +184,15 @@ CAPSULA_KERNEL_CLONES void freeSpaceCoefficients(const double* px, const double*
 } // namespace
 
 void addWallDoubleLayerCoefficients2D(const double* px, const double* py, const double* ax, const double* ay,
-                                      const double* basis, int pointsPerSegment, int numSegments,
-                                      const double* tx, const double* ty, const double* mask,
-                                      SplineDoubleLayer2D& layer)
+                                      const double* basis, int pointsPerSegment, int numSegments, const double* tx,
+                                      const double* ty, const double* mask, SplineDoubleLayer2D& layer)
 {
   wallCoefficients(px, py, ax, ay, basis, pointsPerSegment, numSegments, tx, ty, mask, layer);
 }
 
-void addFreeSpaceDoubleLayerCoefficients2D(const double* px, const double* py, const double* ax,
-                                           const double* ay, const double* basis, int pointsPerSegment,
-                                           int numSegments, const double* tx, const double* ty,
-                                           const double* mask, SplineDoubleLayer2D& layer)
+void addFreeSpaceDoubleLayerCoefficients2D(const double* px, const double* py, const double* ax, const double* ay,
+                                           const double* basis, int pointsPerSegment, int numSegments, const double* tx,
+                                           const double* ty, const double* mask, SplineDoubleLayer2D& layer)
 {
   freeSpaceCoefficients(px, py, ax, ay, basis, pointsPerSegment, numSegments, tx, ty, mask, layer);
 }

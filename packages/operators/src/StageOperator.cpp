@@ -7,14 +7,13 @@
 namespace capsula::operators {
 
 StageOperator::StageOperator(Teuchos::RCP<const Map> map, Action jacobian)
-  : map_(std::move(map)), jacobian_(std::move(jacobian))
+    : map_(std::move(map)), jacobian_(std::move(jacobian))
 {
   core::require(!map_->isDistributed(), "StageOperator: the map must be locally replicated");
   core::require(static_cast<bool>(jacobian_), "StageOperator: no Jacobian action");
 }
 
-void StageOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode, double alpha,
-                          double beta) const
+void StageOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode, double alpha, double beta) const
 {
   if (mode != Teuchos::NO_TRANS) {
     throw std::invalid_argument("StageOperator has no transpose apply (hasTransposeApply() is false).");

@@ -5,9 +5,7 @@
 
 namespace capsula::operators {
 
-SurfaceQuadrature::SurfaceQuadrature(int numQuadraturePoints)
-  : rule_(&quadrature::triangleRule(numQuadraturePoints))
-{}
+SurfaceQuadrature::SurfaceQuadrature(int numQuadraturePoints) : rule_(&quadrature::triangleRule(numQuadraturePoints)) {}
 
 void SurfaceQuadrature::update(const CellSurfaces& surfaces)
 {

@@ -6,14 +6,13 @@
 
 namespace capsula::operators {
 
-WallShearStress wallShearStress(BoundaryIntegralSolver& solver, const std::vector<double>& wallPoints,
-                                double step, const LoadDensity& load, const double* nodeVelocities,
-                                const FlowConditions& flow)
+WallShearStress wallShearStress(BoundaryIntegralSolver& solver, const std::vector<double>& wallPoints, double step,
+                                const LoadDensity& load, const double* nodeVelocities, const FlowConditions& flow)
 {
-  core::require<core::InputError>(step > 0.0 && std::isfinite(step), "The wall shear stress step is ",
-                                  step, "; it must be a finite number > 0.");
-  core::require<core::InputError>(wallPoints.size() % 2 == 0,
-                                  "Wall points come as (x, z) pairs; got ", wallPoints.size(), " numbers.");
+  core::require<core::InputError>(step > 0.0 && std::isfinite(step), "The wall shear stress step is ", step,
+                                  "; it must be a finite number > 0.");
+  core::require<core::InputError>(wallPoints.size() % 2 == 0, "Wall points come as (x, z) pairs; got ",
+                                  wallPoints.size(), " numbers.");
   // One-sided fourth-order stencil on heights 0, h, 2h, 3h, 4h: error h^4 u^(5) / 5.
   constexpr int levels = 5;
   constexpr double weights[levels] = {-25.0, 48.0, -36.0, 16.0, -3.0}; // / (12 h)

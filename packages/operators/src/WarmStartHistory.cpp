@@ -86,13 +86,12 @@ std::vector<double> WarmStartHistory::solutions() const
 WarmStartHistory WarmStartHistory::fromFlattened(int depth, int length, const std::vector<double>& rightHandSides,
                                                  const std::vector<double>& solutions)
 {
-  core::require<core::InputError>(length > 0 && rightHandSides.size() == solutions.size() &&
-                                    rightHandSides.size() % static_cast<std::size_t>(length) == 0 &&
-                                    rightHandSides.size() / static_cast<std::size_t>(length) <=
-                                      static_cast<std::size_t>(depth),
-                                  "Warm-start history: ", rightHandSides.size(), " right-hand side and ",
-                                  solutions.size(), " solution entries do not make at most ", depth,
-                                  " pairs of ", length, ".");
+  core::require<core::InputError>(
+      length > 0 && rightHandSides.size() == solutions.size() &&
+          rightHandSides.size() % static_cast<std::size_t>(length) == 0 &&
+          rightHandSides.size() / static_cast<std::size_t>(length) <= static_cast<std::size_t>(depth),
+      "Warm-start history: ", rightHandSides.size(), " right-hand side and ", solutions.size(),
+      " solution entries do not make at most ", depth, " pairs of ", length, ".");
   WarmStartHistory history(depth);
   for (std::size_t first = 0; first < rightHandSides.size(); first += static_cast<std::size_t>(length)) {
     history.add(std::vector<double>(rightHandSides.begin() + static_cast<std::ptrdiff_t>(first),

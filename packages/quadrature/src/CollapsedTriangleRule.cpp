@@ -7,8 +7,8 @@ namespace capsula::quadrature {
 
 TriangleRule collapsedTriangleRule(int nPerDirection)
 {
-  core::require<core::InputError>(nPerDirection >= 1, "collapsed triangle rule order ",
-                                  nPerDirection, " is invalid; use at least 1 point per direction.");
+  core::require<core::InputError>(nPerDirection >= 1, "collapsed triangle rule order ", nPerDirection,
+                                  " is invalid; use at least 1 point per direction.");
   const Rule1D gauss = gaussLegendre(nPerDirection, 0.0, 1.0);
   TriangleRule rule;
   // A polynomial of degree d in (xi, eta) becomes degree d + 1 in u (with the Jacobian

@@ -31,11 +31,9 @@ LegendreValue legendre(int n, double t)
 
 Rule1D gaussLegendre(int n, double a, double b)
 {
-  core::require<core::InputError>(n >= 1, "Gauss-Legendre order n = ", n,
-                                  " is invalid; use n >= 1.");
-  core::require<core::InputError>(std::isfinite(a) && std::isfinite(b) && a < b,
-                                  "Gauss-Legendre interval [", a, ", ", b,
-                                  "] is invalid; use finite a < b.");
+  core::require<core::InputError>(n >= 1, "Gauss-Legendre order n = ", n, " is invalid; use n >= 1.");
+  core::require<core::InputError>(std::isfinite(a) && std::isfinite(b) && a < b, "Gauss-Legendre interval [", a, ", ",
+                                  b, "] is invalid; use finite a < b.");
   const double pi = std::acos(-1.0);
   const double eps = std::numeric_limits<double>::epsilon();
   const double centre = 0.5 * (a + b);
@@ -50,8 +48,7 @@ Rule1D gaussLegendre(int n, double a, double b)
     double t = std::cos(pi * (i + 0.75) / (n + 0.5)); // Tricomi's first approximation
     if (2 * i + 1 == n) {
       t = 0.0;
-    }
-    else {
+    } else {
       bool converged = false;
       for (int iteration = 0; iteration < 100 && !converged; ++iteration) {
         const LegendreValue p = legendre(n, t);
@@ -59,8 +56,8 @@ Rule1D gaussLegendre(int n, double a, double b)
         t -= step;
         converged = std::abs(step) <= 4.0 * eps; // |t| < 1: an absolute test
       }
-      core::require<core::NumericalError>(converged, "Newton's method did not converge for root ",
-                                          i, " of the Legendre polynomial of order ", n, ".");
+      core::require<core::NumericalError>(converged, "Newton's method did not converge for root ", i,
+                                          " of the Legendre polynomial of order ", n, ".");
     }
     const double derivative = legendre(n, t).derivative;
     const double weight = 2.0 / ((1.0 - t * t) * derivative * derivative);

@@ -18,8 +18,14 @@ using Real = long double;
 
 // Recurrence coefficients of the monic shifted Legendre polynomials on [0, 1],
 // pi_{l+1} = (x - a_l) pi_l - b_l pi_{l-1}: the basis of the modified moments.
-Real legendreA(int /*l*/) { return 0.5L; }
-Real legendreB(int l) { return Real(l) * l / (4.0L * (4.0L * l * l - 1.0L)); }
+Real legendreA(int /*l*/)
+{
+  return 0.5L;
+}
+Real legendreB(int l)
+{
+  return Real(l) * l / (4.0L * (4.0L * l * l - 1.0L));
+}
 
 // Modified moments nu_l = int_0^1 -ln(x) pi_l(x) dx, l = 0 .. count-1. With
 // pi_l = P_l(2x - 1) (l!)^2 / (2l)!  and  int_0^1 -ln(x) P_l(2x - 1) dx = (-1)^l / (l (l+1))
@@ -53,10 +59,10 @@ Recurrence logWeightRecurrence(int n)
   std::vector<Real> sigmaOlder(2 * n, 0.0L); // sigma_{k-2, l}
   std::vector<Real> sigmaOld = nu;           // sigma_{k-1, l}
   for (int k = 1; k < n; ++k) {
-    std::vector<Real> sigma(2 * n, 0.0L);     // sigma_{k, l}, valid for k <= l <= 2n-k-1
+    std::vector<Real> sigma(2 * n, 0.0L); // sigma_{k, l}, valid for k <= l <= 2n-k-1
     for (int l = k; l < 2 * n - k; ++l) {
-      sigma[l] = sigmaOld[l + 1] - (rec.alpha[k - 1] - legendreA(l)) * sigmaOld[l]
-                 - rec.beta[k - 1] * sigmaOlder[l] + legendreB(l) * sigmaOld[l - 1];
+      sigma[l] = sigmaOld[l + 1] - (rec.alpha[k - 1] - legendreA(l)) * sigmaOld[l] - rec.beta[k - 1] * sigmaOlder[l] +
+                 legendreB(l) * sigmaOld[l - 1];
     }
     rec.alpha[k] = legendreA(k) + sigma[k + 1] / sigma[k] - sigmaOld[k] / sigmaOld[k - 1];
     rec.beta[k] = sigma[k] / sigmaOld[k - 1];
@@ -91,9 +97,8 @@ Real christoffelWeight(const Recurrence& rec, Real x)
   Real current = 1.0L / std::sqrt(rec.beta[0]);
   Real sum = current * current;
   for (std::size_t k = 0; k + 1 < rec.alpha.size(); ++k) {
-    const Real next = ((x - rec.alpha[k]) * current
-                       - ((k == 0) ? 0.0L : std::sqrt(rec.beta[k])) * previous)
-                      / std::sqrt(rec.beta[k + 1]);
+    const Real next = ((x - rec.alpha[k]) * current - ((k == 0) ? 0.0L : std::sqrt(rec.beta[k])) * previous) /
+                      std::sqrt(rec.beta[k + 1]);
     previous = current;
     current = next;
     sum += current * current;
@@ -105,9 +110,8 @@ Real christoffelWeight(const Recurrence& rec, Real x)
 
 Rule1D logWeightedGauss(int n)
 {
-  core::require<core::InputError>(n >= 1 && n <= maxLogWeightedGaussOrder,
-                                  "log-weighted Gauss order n = ", n, " is invalid; use 1 <= n <= ",
-                                  maxLogWeightedGaussOrder, ".");
+  core::require<core::InputError>(n >= 1 && n <= maxLogWeightedGaussOrder, "log-weighted Gauss order n = ", n,
+                                  " is invalid; use 1 <= n <= ", maxLogWeightedGaussOrder, ".");
   const Recurrence rec = logWeightRecurrence(n);
 
   // Golub-Welsch: the nodes are the eigenvalues of the Jacobi matrix.
@@ -120,8 +124,7 @@ Rule1D logWeightedGauss(int n)
   }
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver;
   solver.computeFromTridiagonal(diagonal, offDiagonal, Eigen::EigenvaluesOnly);
-  core::require<core::NumericalError>(solver.info() == Eigen::Success,
-                                      "the Jacobi matrix of the ", n,
+  core::require<core::NumericalError>(solver.info() == Eigen::Success, "the Jacobi matrix of the ", n,
                                       "-point log-weighted Gauss rule did not diagonalise.");
 
   Rule1D rule;

@@ -4,18 +4,38 @@ namespace capsula::run {
 
 namespace {
 
-
-
 // The metrics of one cell, in the order of cellValues. One cell: one row with these columns
 // ("cell" after mean_shear_stress); several cells: one row per output with a column
 // "NAME_c" for every metric and cell.
 const std::vector<std::string>& cellMetricNames()
 {
-  static const std::vector<std::string> names{
-    "D12", "D13", "D23", "x_c", "y_c", "z_c", "u_slip", "u_migr", "volume", "area", "reduced_volume",
-    "footprint_xz", "mean_shear_stress", "inclination_deg", "w_c", "u_slip_instant", "u_migr_instant",
-    "omega_x", "omega_y", "omega_z", "volume_change", "area_change", "max_shear_stress",
-    "mean_shear_stress_increase", "max_shear_stress_increase", "shape_change_rate", "u_lift"};
+  static const std::vector<std::string> names{"D12",
+                                              "D13",
+                                              "D23",
+                                              "x_c",
+                                              "y_c",
+                                              "z_c",
+                                              "u_slip",
+                                              "u_migr",
+                                              "volume",
+                                              "area",
+                                              "reduced_volume",
+                                              "footprint_xz",
+                                              "mean_shear_stress",
+                                              "inclination_deg",
+                                              "w_c",
+                                              "u_slip_instant",
+                                              "u_migr_instant",
+                                              "omega_x",
+                                              "omega_y",
+                                              "omega_z",
+                                              "volume_change",
+                                              "area_change",
+                                              "max_shear_stress",
+                                              "mean_shear_stress_increase",
+                                              "max_shear_stress_increase",
+                                              "shape_change_rate",
+                                              "u_lift"};
   return names;
 }
 
@@ -25,15 +45,32 @@ constexpr std::size_t kMetricsBeforeCellColumn = 13;
 std::vector<double> cellValues(const CellSample& s)
 {
   const auto& d = s.shape.deformation;
-  return {d.D12, d.D13, d.D23,
-          s.shape.centroid[0], s.shape.centroid[1], s.shape.centroid[2],
-          s.slipVelocity(), s.migrationVelocity(),
-          s.shape.volume, s.shape.area, s.shape.reducedVolume, s.shape.footprintXZ,
-          s.stress.mean, d.inclinationDegrees, s.splineVelocity[2],
-          s.shape.centroid[1] - s.instantVelocity[0], s.instantVelocity[1],
-          s.rotation[0], s.rotation[1], s.rotation[2],
-          s.volumeChange, s.areaChange, s.stress.maximum,
-          s.meanStressIncrease, s.maximumStressIncrease, s.shapeChangeRate,
+  return {d.D12,
+          d.D13,
+          d.D23,
+          s.shape.centroid[0],
+          s.shape.centroid[1],
+          s.shape.centroid[2],
+          s.slipVelocity(),
+          s.migrationVelocity(),
+          s.shape.volume,
+          s.shape.area,
+          s.shape.reducedVolume,
+          s.shape.footprintXZ,
+          s.stress.mean,
+          d.inclinationDegrees,
+          s.splineVelocity[2],
+          s.shape.centroid[1] - s.instantVelocity[0],
+          s.instantVelocity[1],
+          s.rotation[0],
+          s.rotation[1],
+          s.rotation[2],
+          s.volumeChange,
+          s.areaChange,
+          s.stress.maximum,
+          s.meanStressIncrease,
+          s.maximumStressIncrease,
+          s.shapeChangeRate,
           s.unconstrainedVelocity[1]};
 }
 
@@ -42,8 +79,8 @@ std::vector<double> cellValues(const CellSample& s)
 // table (after the wall stress columns): older readers of the leading columns still work.
 const std::vector<std::string>& stabilityMetricNames()
 {
-  static const std::vector<std::string> names{"min_angle_deg", "max_edge_ratio", "min_tension",
-                                              "wall_gap_per_h", "max_distortion"};
+  static const std::vector<std::string> names{"min_angle_deg", "max_edge_ratio", "min_tension", "wall_gap_per_h",
+                                              "max_distortion"};
   return names;
 }
 
@@ -85,8 +122,7 @@ std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool
   const auto pairs = pairColumns(numCells);
   columns.insert(columns.end(), pairs.begin(), pairs.end());
   if (wallShearStress) {
-    columns.insert(columns.end(),
-                   {"wall_stress_min", "wall_stress_max", "wall_area_upstream", "wall_area_downstream"});
+    columns.insert(columns.end(), {"wall_stress_min", "wall_stress_max", "wall_area_upstream", "wall_area_downstream"});
     if (isolatedRange) {
       columns.insert(columns.end(), {"wall_area_below_isolated", "wall_area_above_isolated"});
     }
@@ -104,7 +140,10 @@ std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool
   return columns;
 }
 
-std::vector<std::string> metricsColumns(bool wallShearStress) { return metricsColumns(wallShearStress, 1, false); }
+std::vector<std::string> metricsColumns(bool wallShearStress)
+{
+  return metricsColumns(wallShearStress, 1, false);
+}
 
 std::vector<double> metricsRow(double time, std::int64_t acceptedSteps, double lastStep,
                                const std::vector<CellSample>& samples, const std::vector<PairSample>& pairs,
@@ -115,7 +154,7 @@ std::vector<double> metricsRow(double time, std::int64_t acceptedSteps, double l
     const std::vector<double> values = cellValues(samples.front());
     const auto split = values.begin() + static_cast<std::ptrdiff_t>(kMetricsBeforeCellColumn);
     row.insert(row.end(), values.begin(), split);
-    row.push_back(0.0);   // the cell's index
+    row.push_back(0.0); // the cell's index
     row.insert(row.end(), split, values.end());
   } else {
     std::vector<std::vector<double>> values;

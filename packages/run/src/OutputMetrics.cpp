@@ -20,33 +20,31 @@ using scene::rigidMotionFit;
 
 namespace {
 
-std::string indexed(const std::string& name, int cell) { return "metrics." + name + "." + std::to_string(cell); }
+std::string indexed(const std::string& name, int cell)
+{
+  return "metrics." + name + "." + std::to_string(cell);
+}
 
 } // namespace
 
-double shapeChangeRate(const double* nodeVelocities, const std::vector<Vec3>& nodeNormals,
-                       const Vec3& centroidVelocity)
+double shapeChangeRate(const double* nodeVelocities, const std::vector<Vec3>& nodeNormals, const Vec3& centroidVelocity)
 {
   double sum = 0.0;
   for (std::size_t i = 0; i < nodeNormals.size(); ++i) {
     const double normalSpeed =
-      (mesh::nodeAt(nodeVelocities, static_cast<int>(i)) - centroidVelocity).dot(nodeNormals[i]);
+        (mesh::nodeAt(nodeVelocities, static_cast<int>(i)) - centroidVelocity).dot(nodeNormals[i]);
     sum += normalSpeed * normalSpeed;
   }
   return nodeNormals.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(nodeNormals.size()));
 }
 
-OutputMetrics::OutputMetrics(int numCells)
-    : numCells_(numCells), centroids_(static_cast<std::size_t>(numCells))
-{
-}
+OutputMetrics::OutputMetrics(int numCells) : numCells_(numCells), centroids_(static_cast<std::size_t>(numCells)) {}
 
 std::vector<CellSample> OutputMetrics::record(double t, const scene::Scene& scene, const scene::SceneFields& fields)
 {
-  core::require(scene.numCells() == numCells_, "OutputMetrics: ", scene.numCells(), " cells, expected ",
-                numCells_);
-  core::require(times_.empty() || t > times_.back(), "OutputMetrics: output time ", t,
-                " does not follow ", times_.empty() ? 0.0 : times_.back());
+  core::require(scene.numCells() == numCells_, "OutputMetrics: ", scene.numCells(), " cells, expected ", numCells_);
+  core::require(times_.empty() || t > times_.back(), "OutputMetrics: output time ", t, " does not follow ",
+                times_.empty() ? 0.0 : times_.back());
   const bool first = times_.empty();
   times_.push_back(t);
   std::vector<CellSample> samples(static_cast<std::size_t>(numCells_));
@@ -57,8 +55,8 @@ std::vector<CellSample> OutputMetrics::record(double t, const scene::Scene& scen
     s.shape = measureShape(cell);
     s.stress = membraneStress(cell, fields.elementLoads.data() + 3 * static_cast<std::size_t>(scene.elementOffset(c)));
     s.instantVelocity = centroidVelocity(cell, velocities);
-    s.unconstrainedVelocity = centroidVelocity(
-      cell, fields.solverVelocities.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(c)));
+    s.unconstrainedVelocity =
+        centroidVelocity(cell, fields.solverVelocities.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(c)));
     s.rotation = rigidMotionFit(cell, velocities, s.shape.centroid).rotation;
     s.shapeChangeRate = shapeChangeRate(velocities, scene.membrane(c).nodeNormals(), s.instantVelocity);
     s.gmresIterations = fields.gmresIterations;
@@ -110,14 +108,14 @@ void OutputMetrics::load(const io::Checkpoint& checkpoint, const std::string& so
 {
   const auto array = [&](const std::string& name) -> const std::vector<double>& {
     const auto it = checkpoint.arrays.find(name);
-    core::require<core::IoError>(it != checkpoint.arrays.end(), "The checkpoint '", source,
-                                 "' lacks the array '", name, "'; it was not written by this application.");
+    core::require<core::IoError>(it != checkpoint.arrays.end(), "The checkpoint '", source, "' lacks the array '", name,
+                                 "'; it was not written by this application.");
     return it->second;
   };
   const auto real = [&](const std::string& name) {
     const auto it = checkpoint.reals.find(name);
-    core::require<core::IoError>(it != checkpoint.reals.end(), "The checkpoint '", source,
-                                 "' lacks the value '", name, "'; it was not written by this application.");
+    core::require<core::IoError>(it != checkpoint.reals.end(), "The checkpoint '", source, "' lacks the value '", name,
+                                 "'; it was not written by this application.");
     return it->second;
   };
   times_ = array("metrics.times");

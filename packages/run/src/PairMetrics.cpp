@@ -53,8 +53,8 @@ std::vector<PairSample> pairSamples(const scene::Scene& scene, const std::vector
       pair.relativeSlip = a.slipVelocity() - b.slipVelocity();
       pair.gap = gapBetween(scene, positions, i, j);
       // The cells hold the positions of this output (Scene::evaluate set them).
-      const double size = std::max(elementSizeNear(scene.cell(i), pair.gap.onFirst),
-                                   elementSizeNear(scene.cell(j), pair.gap.onSecond));
+      const double size =
+          std::max(elementSizeNear(scene.cell(i), pair.gap.onFirst), elementSizeNear(scene.cell(j), pair.gap.onSecond));
       pair.gapPerElementSize = size > 0.0 ? pair.gap.distance / size : 0.0;
       pairs.push_back(pair);
     }
@@ -78,9 +78,9 @@ std::vector<std::string> pairColumns(int numCells)
 
 std::vector<double> pairValues(const PairSample& pair)
 {
-  return {pair.separation[0],       pair.separation[1],       pair.separation[2],
-          pair.distance,            pair.relativeVelocity[0], pair.relativeVelocity[1],
-          pair.relativeVelocity[2], pair.relativeSlip,        pair.gap.distance};
+  return {pair.separation[0],       pair.separation[1],       pair.separation[2],       pair.distance,
+          pair.relativeVelocity[0], pair.relativeVelocity[1], pair.relativeVelocity[2], pair.relativeSlip,
+          pair.gap.distance};
 }
 
 ClosestPair closestPair(const scene::Scene& scene, const std::vector<double>& positions)

@@ -19,8 +19,7 @@ void removeRestartFreeKeys(Teuchos::ParameterList& deck)
 }
 
 // The first key whose value differs (or that only one list has), "" if none.
-std::string firstDifference(const Teuchos::ParameterList& a, const Teuchos::ParameterList& b,
-                            const std::string& prefix)
+std::string firstDifference(const Teuchos::ParameterList& a, const Teuchos::ParameterList& b, const std::string& prefix)
 {
   for (auto it = a.begin(); it != a.end(); ++it) {
     const std::string& name = a.name(it);
@@ -59,10 +58,10 @@ void requireSameRun(const Teuchos::ParameterList& current, const std::string& ch
   removeRestartFreeKeys(*now);
   removeRestartFreeKeys(*then);
   const std::string key = firstDifference(*then, *now, "");
-  core::require<core::InputError>(
-    key.empty(), "Cannot restart from '", checkpointPath, "': the deck differs from the one the run was ",
-    "started with at '", key, "'. Only 'Time integration/End time' and 'Output/Directory' may change on ",
-    "restart (use the deck.xml written next to the checkpoint).");
+  core::require<core::InputError>(key.empty(), "Cannot restart from '", checkpointPath,
+                                  "': the deck differs from the one the run was ", "started with at '", key,
+                                  "'. Only 'Time integration/End time' and 'Output/Directory' may change on ",
+                                  "restart (use the deck.xml written next to the checkpoint).");
 }
 
 } // namespace capsula::run

@@ -12,9 +12,8 @@ namespace fs = std::filesystem;
 
 RunOutputs::RunOutputs(Teuchos::RCP<const Teuchos::Comm<int>> comm, std::string directory,
                        std::optional<std::string> restartDirectory)
-  : comm_(std::move(comm)), directory_(std::move(directory)), restartDirectory_(std::move(restartDirectory))
-{
-}
+    : comm_(std::move(comm)), directory_(std::move(directory)), restartDirectory_(std::move(restartDirectory))
+{}
 
 std::string RunOutputs::path(const std::string& file) const
 {

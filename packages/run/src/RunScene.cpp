@@ -17,9 +17,8 @@ using scene::Scene;
 RunScene::RunScene(const scene::SceneDescription& description, const Teuchos::ParameterList& deck,
                    Teuchos::RCP<const Teuchos::Comm<int>> comm, const operators::KernelRegistry& kernels,
                    const timeint::IntegrationState& state, std::ostream& log)
-  : description_(description), deck_(deck), comm_(std::move(comm)), kernels_(kernels), state_(state), log_(log)
-{
-}
+    : description_(description), deck_(deck), comm_(std::move(comm)), kernels_(kernels), state_(state), log_(log)
+{}
 
 void RunScene::build()
 {
@@ -48,14 +47,14 @@ void RunScene::regulariseMeshes(timeint::IntegrationState& state)
   if (done.empty()) {
     return;
   }
-  timeint::stateChangedOutside(state);   // new slopes, and the stability limit again
+  timeint::stateChangedOutside(state); // new slopes, and the stability limit again
   for (const auto& event : done) {
     ++regularisations_;
     log_ << std::setprecision(5) << "t = " << state.time << ": redistributed the nodes of '"
          << description_.cells[static_cast<std::size_t>(event.cell)].path << "' (smallest angle "
-         << event.minAngleBefore << " -> " << event.minAngleAfter << " degrees, reference "
-         << event.referenceMinAngle << ", " << event.passes << " passes, largest move " << event.maxDisplacement
-         << ", volume offset " << event.volumeOffset << ")\n";
+         << event.minAngleBefore << " -> " << event.minAngleAfter << " degrees, reference " << event.referenceMinAngle
+         << ", " << event.passes << " passes, largest move " << event.maxDisplacement << ", volume offset "
+         << event.volumeOffset << ")\n";
   }
 }
 
@@ -92,7 +91,7 @@ void RunScene::adaptMeshes(timeint::IntegrationState& state)
 
 void RunScene::save(io::Checkpoint& checkpoint) const
 {
-  if (const auto* warm = scene_->gmresWarmStart(); warm && !warm->empty()) {   // the next solve's start
+  if (const auto* warm = scene_->gmresWarmStart(); warm && !warm->empty()) { // the next solve's start
     checkpoint.arrays["scene.gmresWarmStart.rhs"] = warm->rightHandSides();
     checkpoint.arrays["scene.gmresWarmStart.solutions"] = warm->solutions();
   }
@@ -119,7 +118,7 @@ void RunScene::load(const io::Checkpoint& checkpoint, const std::string& source)
   scene_ = restoredScene(checkpoint, source);
   const auto* rhs = io::optionalArray(checkpoint, "scene.gmresWarmStart.rhs");
   const auto* solutions = io::optionalArray(checkpoint, "scene.gmresWarmStart.solutions");
-  if (rhs && solutions) {   // lambda != 1: the next solve starts where the interrupted run's would
+  if (rhs && solutions) { // lambda != 1: the next solve starts where the interrupted run's would
     scene_->restoreGmresWarmStart(*rhs, *solutions);
   }
   const auto count = [&](const char* name) {

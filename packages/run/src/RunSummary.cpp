@@ -25,9 +25,9 @@ io::JsonValue statisticsJson(const timeint::IntegrationStatistics& statistics)
     steps["linear solves"] = static_cast<long long>(statistics.linearSolves);
     steps["linear iterations"] = static_cast<long long>(statistics.linearIterations);
     steps["linear iterations per stiff step"] =
-      statistics.stiffSteps > 0
-        ? static_cast<double>(statistics.linearIterations) / static_cast<double>(statistics.stiffSteps)
-        : 0.0;
+        statistics.stiffSteps > 0
+            ? static_cast<double>(statistics.linearIterations) / static_cast<double>(statistics.stiffSteps)
+            : 0.0;
     steps["largest linear iterations"] = static_cast<long long>(statistics.largestLinearIterations);
     steps["failed linear solves"] = static_cast<long long>(statistics.failedLinearSolves);
     steps["method switches"] = static_cast<long long>(statistics.methodSwitches);
@@ -36,9 +36,8 @@ io::JsonValue statisticsJson(const timeint::IntegrationStatistics& statistics)
 }
 
 RunSummary::RunSummary(std::string application, const Teuchos::ParameterList& validatedDeck, int ranks)
-  : application_(std::move(application)), deckXml_(core::deckToXml(validatedDeck, false)), ranks_(ranks)
-{
-}
+    : application_(std::move(application)), deckXml_(core::deckToXml(validatedDeck, false)), ranks_(ranks)
+{}
 
 void RunSummary::begin(const timeint::IntegrationStatistics& statistics, bool restarted)
 {
@@ -88,7 +87,7 @@ io::JsonValue RunSummary::json(const std::string& status, const std::string& not
   const std::int64_t evaluations = statistics.rhsEvaluations - evaluationsAtStart_;
   summary["timings"]["wall seconds (this process)"] = wall;
   summary["timings"]["seconds per rhs evaluation (this process)"] =
-    wall / static_cast<double>(std::max<std::int64_t>(1, evaluations));
+      wall / static_cast<double>(std::max<std::int64_t>(1, evaluations));
   for (const auto& timer : core::timerTotals()) {
     summary["timings"][timer.name] = timer.seconds;
   }

@@ -23,8 +23,7 @@ int runSceneApplication(int argc, char** argv, const core::AppDescription& app)
     runScene(*context.deck, context.comm, options, kernels);
   };
   return core::runApplication(
-    argc, argv, app, [name](const Teuchos::ParameterList& deck) { return validSceneRunParameters(deck, name); },
-    run);
+      argc, argv, app, [name](const Teuchos::ParameterList& deck) { return validSceneRunParameters(deck, name); }, run);
 }
 
 } // namespace capsula::run

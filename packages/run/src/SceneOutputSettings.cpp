@@ -21,13 +21,11 @@ void declareWallShearStressParameters(Teuchos::ParameterList& wall)
                     "radii.",
                     core::atLeast(0.0));
   core::declareReal(wall, "Downstream extent", 6.0,
-                    "Length of wall covered downstream of (ahead of) the centroid of the cells.",
-                    core::atLeast(0.0));
+                    "Length of wall covered downstream of (ahead of) the centroid of the cells.", core::atLeast(0.0));
   core::declareReal(wall, "Half width", 4.0,
                     "Half the width of the covered strip across the flow (z), centred on the cells.",
                     core::atLeast(0.0));
-  core::declareReal(wall, "Spacing", 0.25, "Grid spacing on the wall, in cell radii.",
-                    core::greaterThan(0.0));
+  core::declareReal(wall, "Spacing", 0.25, "Grid spacing on the wall, in cell radii.", core::greaterThan(0.0));
   core::declareReal(wall, "Threshold", 1.05,
                     "Elevated stress: at least this multiple of the ambient wall stress (1 in units "
                     "of mu k); the thesis uses 5% above ambient.",
@@ -67,9 +65,9 @@ void declareSceneOutputParameters(Teuchos::ParameterList& output)
                          "Points (x1, y1, z1, x2, y2, z2, ...) where the fluid velocity is written "
                          "to probes.csv at every output (empty: none).");
   declareWallShearStressParameters(
-    core::declareSublist(output, "Wall shear stress", "Principal shear stress on the wall."));
-  auto& stability = core::declareSublist(
-    output, "Stability", "Bounds on the diagnostics of every output (docs/stability.md).");
+      core::declareSublist(output, "Wall shear stress", "Principal shear stress on the wall."));
+  auto& stability =
+      core::declareSublist(output, "Stability", "Bounds on the diagnostics of every output (docs/stability.md).");
   core::declareReal(stability, "Minimum angle", 5.0,
                     "Stop the run with an error (keeping the last good checkpoint and outputs) when "
                     "an element's smallest corner angle falls below this many degrees at an "
@@ -88,21 +86,19 @@ SceneOutputSettings readSceneOutputSettings(const Teuchos::ParameterList& deck, 
   out.checkpoint = output.get<bool>("Checkpoint");
   out.progressSteps = output.get<int>("Progress steps");
   const auto& probes = output.get<Teuchos::Array<double>>("Flow probes");
-  core::require<core::InputError>(probes.size() % 3 == 0, "'Output/Flow probes' has ",
-                                  probes.size(),
+  core::require<core::InputError>(probes.size() % 3 == 0, "'Output/Flow probes' has ", probes.size(),
                                   " numbers; give whole points, three coordinates each.");
   for (Teuchos::Array<double>::size_type k = 0; k < probes.size(); k += 3) {
     out.flowProbes.emplace_back(probes[k], probes[k + 1], probes[k + 2]);
-    core::require<core::InputError>(!scene.wall || probes[k + 1] > 0.0, "'Output/Flow probes' point ",
-                                    k / 3, " lies at y = ", probes[k + 1],
-                                    ", not in the fluid above the wall y = 0.");
+    core::require<core::InputError>(!scene.wall || probes[k + 1] > 0.0, "'Output/Flow probes' point ", k / 3,
+                                    " lies at y = ", probes[k + 1], ", not in the fluid above the wall y = 0.");
   }
   out.minimumAngle = output.sublist("Stability").get<double>("Minimum angle");
-  core::require<core::InputError>(
-    !scene.meshRegularisation.enabled || scene.meshRegularisation.triggerAngle > out.minimumAngle,
-    "'Mesh regularisation/Minimum angle' = ", scene.meshRegularisation.triggerAngle,
-    " must be above 'Output/Stability/Minimum angle' = ", out.minimumAngle,
-    ": the run would stop before the nodes are ever redistributed.");
+  core::require<core::InputError>(!scene.meshRegularisation.enabled ||
+                                      scene.meshRegularisation.triggerAngle > out.minimumAngle,
+                                  "'Mesh regularisation/Minimum angle' = ", scene.meshRegularisation.triggerAngle,
+                                  " must be above 'Output/Stability/Minimum angle' = ", out.minimumAngle,
+                                  ": the run would stop before the nodes are ever redistributed.");
   const auto& wallStress = output.sublist("Wall shear stress");
   WallShearStressOutput& ws = out.wallShearStress;
   ws.enabled = wallStress.get<bool>("Enabled");

@@ -19,7 +19,7 @@ using mesh::Vec3;
 
 namespace {
 
-constexpr const char* kSnapshotBase = "snapshots";   // snapshots.h5 + snapshots.xdmf
+constexpr const char* kSnapshotBase = "snapshots"; // snapshots.h5 + snapshots.xdmf
 
 std::vector<std::string> probeColumns(std::size_t probes)
 {
@@ -41,14 +41,13 @@ struct SceneOutputs::WallSample {
 
 SceneOutputs::SceneOutputs(RunScene& live, const scene::SceneDescription& description,
                            const SceneOutputSettings& settings, RunOutputs& files, double steadyTolerance)
-  : live_(live),
-    description_(description),
-    settings_(settings),
-    files_(files),
-    steadyTolerance_(steadyTolerance),
-    metrics_(description.numCells())
-{
-}
+    : live_(live),
+      description_(description),
+      settings_(settings),
+      files_(files),
+      steadyTolerance_(steadyTolerance),
+      metrics_(description.numCells())
+{}
 
 std::vector<std::string> SceneOutputs::terms() const
 {
@@ -56,9 +55,8 @@ std::vector<std::string> SceneOutputs::terms() const
   if (settings_.wallShearStress.enabled) {
     const auto& wall = settings_.wallShearStress;
     std::ostringstream line;
-    line << "output: wall shear stress on a grid of spacing " << wall.spacing << " (" << wall.upstream
-         << " upstream, " << wall.downstream << " downstream, half width " << wall.halfWidth << "), threshold "
-         << wall.threshold;
+    line << "output: wall shear stress on a grid of spacing " << wall.spacing << " (" << wall.upstream << " upstream, "
+         << wall.downstream << " downstream, half width " << wall.halfWidth << "), threshold " << wall.threshold;
     terms.push_back(line.str());
   }
   if (!settings_.flowProbes.empty()) {
@@ -116,12 +114,12 @@ std::optional<SceneOutputs::WallSample> SceneOutputs::sampleWallStress(const tim
   const double step = std::min(gap / 20.0, wallOutput.spacing / 5.0);
   scene::Scene& scene = live_.scene();
   operators::WallShearStress stress =
-    wallShearStressOnGrid(scene.solver(), grid, step, operators::LoadDensity(fields.loadDensity.data()),
-                          fields.solverVelocities.data(), scene.flow());
+      wallShearStressOnGrid(scene.solver(), grid, step, operators::LoadDensity(fields.loadDensity.data()),
+                            fields.solverVelocities.data(), scene.flow());
   lastWallAreas_ = elevatedStressAreas(grid, stress.magnitude, centre[0], wallOutput.threshold);
   if (wallOutput.isolatedRange) {
     lastOutsideIsolated_ =
-      areasOutsideRange(grid, stress.magnitude, wallOutput.isolatedMinimum, wallOutput.isolatedMaximum);
+        areasOutsideRange(grid, stress.magnitude, wallOutput.isolatedMinimum, wallOutput.isolatedMaximum);
   }
   return WallSample{std::move(grid), std::move(stress)};
 }
@@ -215,7 +213,7 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
     });
   }
   if (!degraded.empty()) {
-    throw core::NumericalError(degraded);   // the run records it in summary.json
+    throw core::NumericalError(degraded); // the run records it in summary.json
   }
   if (settings_.checkpoint) {
     files_.writeCheckpoint([&] { return checkpoint(state); });
@@ -260,11 +258,11 @@ void SceneOutputs::addResults(io::JsonValue& summary) const
       summary["elements per cell"].append(scene.cell(c).numElements());
     }
   }
-  if (std::isfinite(smallestAngle_)) {   // extremes over the outputs of this process
+  if (std::isfinite(smallestAngle_)) { // extremes over the outputs of this process
     summary["stability"]["smallest angle (degrees)"] = smallestAngle_;
     summary["stability"]["largest edge ratio"] = largestEdgeRatio_;
     summary["stability"]["most compressive tension"] = mostCompressiveTension_;
-    if (description_.wall) {   // without a wall the column measures from the plane y = 0
+    if (description_.wall) { // without a wall the column measures from the plane y = 0
       summary["stability"]["smallest wall gap per element size"] = smallestWallGap_;
     }
     summary["stability"]["minimum angle bound"] = settings_.minimumAngle;

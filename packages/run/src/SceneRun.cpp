@@ -97,7 +97,7 @@ private:
   // The stiff methods' Jacobian, built for the scene it belongs to (again after an adaption).
   std::shared_ptr<scene::VelocityJacobian> jacobian_;
   const scene::Scene* jacobianScene_ = nullptr;
-  std::vector<std::pair<double, std::string>> methodSwitches_;   // Auto's, this process's
+  std::vector<std::pair<double, std::string>> methodSwitches_; // Auto's, this process's
   bool restarted_ = false;
   bool tooClose_ = false;
   std::string stopReason_;
@@ -107,23 +107,21 @@ private:
 
 SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
                          const SceneRunOptions& options, const operators::KernelRegistry& kernels)
-  : deck_(deck),
-    comm_(comm),
-    options_(options),
-    kernels_(kernels),
-    log_(options.log && comm->getRank() == 0 ? options.log : &quiet_),
-    description_(scene::describeScene(deck)),
-    settings_(readSceneOutputSettings(deck, description_)),
-    // The scene is looked up at every call: a mesh adaption replaces it during the run.
-    integrator_(integrationSettings(deck),
-                [this](double t, const std::vector<double>& y, std::vector<double>& dydt) {
-                  live_.scene().velocity(t, y, dydt);
-                }),
-    files_(comm, outputDirectory(options, settings_), options.restartDirectory),
-    live_(description_, deck, comm, kernels, state_, *log_),
-    outputs_(live_, description_, settings_, files_, integrator_.settings().steadyTolerance),
-    stateSection_(state_, "timeint."),
-    summary_(options.application, deck, comm->getSize())
+    : deck_(deck),
+      comm_(comm),
+      options_(options),
+      kernels_(kernels),
+      log_(options.log && comm->getRank() == 0 ? options.log : &quiet_),
+      description_(scene::describeScene(deck)),
+      settings_(readSceneOutputSettings(deck, description_)),
+      // The scene is looked up at every call: a mesh adaption replaces it during the run.
+      integrator_(integrationSettings(deck), [this](double t, const std::vector<double>& y,
+                                                    std::vector<double>& dydt) { live_.scene().velocity(t, y, dydt); }),
+      files_(comm, outputDirectory(options, settings_), options.restartDirectory),
+      live_(description_, deck, comm, kernels, state_, *log_),
+      outputs_(live_, description_, settings_, files_, integrator_.settings().steadyTolerance),
+      stateSection_(state_, "timeint."),
+      summary_(options.application, deck, comm->getSize())
 {
   // Loaded in this order: the scene's meshes take their positions from the state.
   if (options_.restartDirectory) {
@@ -132,9 +130,8 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
   live_.build();
   outputs_.setCheckpointSections({&stateSection_, &outputs_, &live_});
   if (live_.scene().hasConstraints()) {
-    integrator_.setStageConstraint([this](double, const std::vector<double>& y, std::vector<double>& dydt) {
-      live_.scene().constrain(y, dydt);
-    });
+    integrator_.setStageConstraint(
+        [this](double, const std::vector<double>& y, std::vector<double>& dydt) { live_.scene().constrain(y, dydt); });
   }
   std::vector<std::string> terms = live_.scene().terms();
   for (auto& term : outputs_.terms()) {
@@ -211,7 +208,7 @@ timeint::ObserverVerdict SceneRunner::afterStep(timeint::IntegrationState& state
     methodSwitches_.emplace_back(state.time, report.switchReason);
     log() << std::setprecision(6) << "t = " << state.time << ": " << report.switchReason << "\n";
   }
-  attachJacobian();   // RunScene, observed first, may have rebuilt the scene
+  attachJacobian(); // RunScene, observed first, may have rebuilt the scene
   tooClose_ = cellsTooClose(state);
   if (tooClose_) {
     return timeint::ObserverVerdict::Stop;
@@ -239,11 +236,12 @@ void SceneRunner::progress(const timeint::IntegrationState& state)
        << 100.0 * state.time / end << "%)  step " << state.statistics.acceptedSteps << "  dt " << std::scientific
        << std::setprecision(2) << state.statistics.lastStep << std::defaultfloat << std::setprecision(4) << "  D12 "
        << outputs_.lastD12() << "  ETA " << wallClock(timeLeft(elapsed, simulatedStart_, state.time, end));
-  if (jacobian_) {   // the stiff methods: which one runs, and the Krylov work so far
+  if (jacobian_) { // the stiff methods: which one runs, and the Krylov work so far
     const auto& stats = state.statistics;
     line << "  [" << integrator_.activeMethodName(state) << std::setprecision(3) << ", "
-         << (stats.linearSolves > 0 ? static_cast<double>(stats.linearIterations) / static_cast<double>(stats.linearSolves)
-                                    : 0.0)
+         << (stats.linearSolves > 0
+                 ? static_cast<double>(stats.linearIterations) / static_cast<double>(stats.linearSolves)
+                 : 0.0)
          << " GMRES it/solve]";
   }
   log() << line.str() << std::endl;
@@ -310,15 +308,15 @@ void SceneRunner::report(const std::string& status)
     log() << "Steady state at t = " << state_.time << ": the shape changes slower than "
           << integrator_.settings().steadyTolerance << "\n";
   }
-  log() << "Done: " << status << " at t = " << state_.time << " after " << state_.statistics.acceptedSteps
-        << " steps (" << state_.statistics.rejectedSteps << " rejected); outputs in " << files_.directory() << "\n";
+  log() << "Done: " << status << " at t = " << state_.time << " after " << state_.statistics.acceptedSteps << " steps ("
+        << state_.statistics.rejectedSteps << " rejected); outputs in " << files_.directory() << "\n";
   const auto& samples = outputs_.lastSamples();
   for (std::size_t c = 0; c < samples.size(); ++c) {
     const CellSample& sample = samples[c];
     log() << "  " << description_.cells[c].path << ": D12 " << sample.shape.deformation.D12 << ", centroid ("
           << sample.shape.centroid[0] << ", " << sample.shape.centroid[1] << ", " << sample.shape.centroid[2]
-          << "), u_slip " << sample.slipVelocity() << ", u_migr " << sample.migrationVelocity()
-          << ", volume change " << sample.volumeChange << ", mean shear stress " << sample.stress.mean << "\n";
+          << "), u_slip " << sample.slipVelocity() << ", u_migr " << sample.migrationVelocity() << ", volume change "
+          << sample.volumeChange << ", mean shear stress " << sample.stress.mean << "\n";
   }
   log() << "  metrics.csv (one row per output), summary.json (final and steady values)";
   if (settings_.snapshots) {
@@ -329,9 +327,8 @@ void SceneRunner::report(const std::string& status)
 
 } // namespace
 
-SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck,
-                        const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const SceneRunOptions& options,
-                        const operators::KernelRegistry& kernels)
+SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                        const SceneRunOptions& options, const operators::KernelRegistry& kernels)
 {
   SceneRunner run(validatedDeck, comm, options, kernels);
   return run.execute();

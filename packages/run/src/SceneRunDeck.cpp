@@ -16,12 +16,12 @@ Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos
   auto valid = Teuchos::rcp(new Teuchos::ParameterList(appName));
   scene::declareSceneParameters(*valid, deck);
   timeint::declareTimeIntegrationParameters(
-    core::declareSublist(*valid, "Time integration", "Time stepping (Section 3.10; docs/stiff-integration.md)."),
-    /*stabilityLimitDefault=*/true);
+      core::declareSublist(*valid, "Time integration", "Time stepping (Section 3.10; docs/stiff-integration.md)."),
+      /*stabilityLimitDefault=*/true);
   operators::declareOperatorParameters(*valid);
   scene::declareStiffSolverParameters(core::declareSublist(
-    valid->sublist("Solver"), "Stiff",
-    "The linear solves of the stiff time integrators (Time integration/Method ROS34PW2, ROS2, Auto)."));
+      valid->sublist("Solver"), "Stiff",
+      "The linear solves of the stiff time integrators (Time integration/Method ROS34PW2, ROS2, Auto)."));
   scene::declareMeshEvolutionParameters(*valid);
   declareSceneOutputParameters(core::declareSublist(*valid, "Output", "What is written, where and when."));
   return valid;

@@ -43,8 +43,7 @@ io::JsonValue pairJson(const PairSample& p)
   io::JsonValue v = io::JsonValue::object();
   v["separation"] = io::JsonValue::array({p.separation[0], p.separation[1], p.separation[2]});
   v["distance"] = p.distance;
-  v["relative velocity"] =
-    io::JsonValue::array({p.relativeVelocity[0], p.relativeVelocity[1], p.relativeVelocity[2]});
+  v["relative velocity"] = io::JsonValue::array({p.relativeVelocity[0], p.relativeVelocity[1], p.relativeVelocity[2]});
   v["relative u_slip"] = p.relativeSlip;
   v["gap"] = p.gap.distance;
   v["gap per element size"] = p.gapPerElementSize;

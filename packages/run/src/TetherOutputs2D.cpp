@@ -18,11 +18,10 @@ void declareOutputParameters2D(Teuchos::ParameterList& output)
   const OutputSettings2D defaults;
   core::declareString(output, "Directory", defaults.directory,
                       "Where the run writes (empty: nowhere). --output overrides it.");
-  core::declareReal(output, "Interval", defaults.interval,
-                    "tau = k t / lambda between rows of the metrics tables.", core::greaterThan(0.0));
+  core::declareReal(output, "Interval", defaults.interval, "tau = k t / lambda between rows of the metrics tables.",
+                    core::greaterThan(0.0));
   core::declareInt(output, "Snapshot every", defaults.snapshotEvery,
-                   "Outputs between contour snapshots (HDF5 + XDMF); 0: none but the first and last.", 0,
-                   1000000);
+                   "Outputs between contour snapshots (HDF5 + XDMF); 0: none but the first and last.", 0, 1000000);
   core::declareInt(output, "Checkpoint every", defaults.checkpointEvery,
                    "Outputs between checkpoints (checkpoint.h5, overwritten); 0: at the end only.", 0, 1000000);
 }
@@ -75,7 +74,7 @@ io::Snapshot snapshotOf(const contour::Contour& contour, const elasticity::Membr
     block.connectivity.push_back(i % n);
   }
   io::Field tension{"tension", 1, {}}, stretch{"stretch", 1, {}}, load{"load", 2, {}}, velocity{"velocity", 2, {}},
-    parameter{"s_over_smax", 1, {}};
+      parameter{"s_over_smax", 1, {}};
   const std::vector<double>& s = contour.parameters();
   for (int i = 0; i < n; ++i) {
     tension.values.push_back(membrane.tension()(i));
@@ -100,17 +99,16 @@ TetherOutputs2D::TetherOutputs2D(scene2d::CapsuleModel2D& model, const TetherSta
                                  const OutputSettings2D& settings, const timeint::TimeIntegrationSettings& integration,
                                  double forceTransient, RunOutputs& files, timeint::IntegrationState& state,
                                  std::string deckXml, std::ostream* log)
-  : model_(model),
-    stages_(stages),
-    settings_(settings),
-    integration_(integration),
-    forceTransient_(forceTransient),
-    files_(files),
-    state_(state),
-    deckXml_(std::move(deckXml)),
-    log_(log)
-{
-}
+    : model_(model),
+      stages_(stages),
+      settings_(settings),
+      integration_(integration),
+      forceTransient_(forceTransient),
+      files_(files),
+      state_(state),
+      deckXml_(std::move(deckXml)),
+      log_(log)
+{}
 
 void TetherOutputs2D::beginStage(std::optional<double> resumeAfter)
 {
@@ -217,8 +215,8 @@ timeint::ObserverVerdict TetherOutputs2D::atOutput(const timeint::IntegrationSta
   if (stages_.preparing()) {
     observe(lastStep_.stepSize, stages_.preparationRate(), false);
   } else {
-    const bool last = reason == timeint::OutputReason::SteadyState ||
-                      stages_.tau(state.time) >= integration_.endTime * (1.0 - 1e-12);
+    const bool last =
+        reason == timeint::OutputReason::SteadyState || stages_.tau(state.time) >= integration_.endTime * (1.0 - 1e-12);
     observe(lastStep_.stepSize, lastStep_.steadyMeasure, last);
   }
   if (settings_.checkpointEvery > 0 && outputIndex() % settings_.checkpointEvery == 0) {

@@ -46,16 +46,16 @@ void addResults(io::JsonValue& summary, const TetherRunResult2D& result)
 
 TetherRun2D::TetherRun2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
                          std::ostream* log, std::string deckSource)
-  : comm_(comm),
-    deck_(deck),
-    log_(log),
-    deckSource_(std::move(deckSource)),
-    tether_(scene2d::readTetherSettings2D(deck.sublist("Tether"))),
-    output_(readOutputSettings2D(deck.sublist("Output"))),
-    model_(comm, scene2d::readCellSettings2D(deck.sublist("Cell")),
-           scene2d::readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall")),
-           operators::readContourDiscretisation2D(deck.sublist("Discretisation")),
-           operators::readSolverParameters(deck.sublist("Solver")))
+    : comm_(comm),
+      deck_(deck),
+      log_(log),
+      deckSource_(std::move(deckSource)),
+      tether_(scene2d::readTetherSettings2D(deck.sublist("Tether"))),
+      output_(readOutputSettings2D(deck.sublist("Output"))),
+      model_(comm, scene2d::readCellSettings2D(deck.sublist("Cell")),
+             scene2d::readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall")),
+             operators::readContourDiscretisation2D(deck.sublist("Discretisation")),
+             operators::readSolverParameters(deck.sublist("Solver")))
 {
   core::require<core::InputError>(!tether_.enabled || model_.flow().wall,
                                   "Tether/Enabled needs the wall (Wall/Enabled = true): the tether point is "
@@ -70,8 +70,7 @@ class MethodSwitchLog2D final : public timeint::IntegrationObserver {
 public:
   MethodSwitchLog2D(const TetherStages2D& stages, std::ostream* log) : stages_(stages), log_(log) {}
 
-  timeint::ObserverVerdict afterStep(timeint::IntegrationState& state, const timeint::StepReport& report,
-                                     bool) override
+  timeint::ObserverVerdict afterStep(timeint::IntegrationState& state, const timeint::StepReport& report, bool) override
   {
     if (!report.switchReason.empty()) {
       const double tau = stages_.tau(state.time);
@@ -100,7 +99,7 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
                                    const std::optional<std::string>& restartDirectory)
 {
   const timeint::TimeIntegrationSettings settings = timeint::timeIntegrationSettings(deck_.sublist("Time integration"));
-  const double endTau = settings.endTime;   // the tethered (or free) stage's duration in tau
+  const double endTau = settings.endTime; // the tethered (or free) stage's duration in tau
   timeint::TimeIntegrator integrator(settings, [this](double, const std::vector<double>& y, std::vector<double>& dydt) {
     model_.rightHandSide(y, dydt);
   });
@@ -133,11 +132,10 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     const std::string path = *restartDirectory + "/checkpoint.h5";
     const io::Checkpoint checkpoint = io::readCheckpoint(path);
     io::loadSections(checkpoint, path, {&stateSection, &stages, &model_, &outputs});
-    state.steady = false;   // a restart goes on from where the stopped run was
+    state.steady = false; // a restart goes on from where the stopped run was
     outputs.beginStage(checkpoint.time);
     if (log_ != nullptr) {
-      *log_ << "Restarting from " << path << " at tau = " << checkpoint.time << " (step " << checkpoint.step
-            << ")\n";
+      *log_ << "Restarting from " << path << " at tau = " << checkpoint.time << " (step " << checkpoint.step << ")\n";
     }
   } else {
     state = integrator.start(0.0, model_.initialState());

@@ -22,14 +22,13 @@ using scene2d::preparationComplete;
 TetherStages2D::TetherStages2D(scene2d::CapsuleModel2D& model, const scene2d::TetherSettings2D& tether,
                                const timeint::TimeIntegrator& integrator, timeint::IntegrationState& state,
                                std::ostream* log)
-  : model_(model),
-    tether_(tether),
-    integrator_(integrator),
-    state_(state),
-    log_(log),
-    lambda_(model.flow().conditions.viscosityRatio)
-{
-}
+    : model_(model),
+      tether_(tether),
+      integrator_(integrator),
+      state_(state),
+      log_(log),
+      lambda_(model.flow().conditions.viscosityRatio)
+{}
 
 timeint::OutputSchedule TetherStages2D::schedule(double interval, double endTau) const
 {
@@ -66,7 +65,7 @@ void TetherStages2D::restartWith(const double* y, std::size_t n, bool newStage)
   // The stiff methods: Auto's choice and its trials carry over (the membrane is the same).
   fresh.stiffActive = state_.stiffActive;
   fresh.stiffTrialsFailed = state_.stiffTrialsFailed;
-  if (!newStage) {   // the stage's outputs go on
+  if (!newStage) { // the stage's outputs go on
     fresh.outputOrigin = state_.outputOrigin;
     fresh.nextOutput = state_.nextOutput;
   }
@@ -81,9 +80,10 @@ double TetherStages2D::nextEvent(const timeint::IntegrationState& state)
   // The preparation lands on its check times (multiples of the window), on the predicted
   // end, and while placing on the predicted passage of a node through the bottom.
   const double stageEnd = tether_.maximumPreparationTime;
-  const double nextCheckTau = placing_                ? stageEnd
-                              : preparationEnd_ > 0.0 ? std::min(preparationEnd_, stageEnd)
-                                                      : std::min(nextPreparationCheck(tether_, tau(state.time)), stageEnd);
+  const double nextCheckTau = placing_ ? stageEnd
+                              : preparationEnd_ > 0.0
+                                  ? std::min(preparationEnd_, stageEnd)
+                                  : std::min(nextPreparationCheck(tether_, tau(state.time)), stageEnd);
   checkTime_ = origin_ + lambda_ * nextCheckTau;
   placementTime_ = placing_ && placeTarget_ > state.time ? placeTarget_ : checkTime_;
   return std::min(checkTime_, placementTime_);
@@ -123,7 +123,7 @@ bool TetherStages2D::windowCheckSettles(double tau)
   if (!settled && end > tau) {
     preparationEnd_ = end;
   } else if (!settled && end > 0.0) {
-    settled = true;   // the extrapolated crossing lies inside the last window: now
+    settled = true; // the extrapolated crossing lies inside the last window: now
   }
   return settled;
 }
@@ -159,14 +159,14 @@ timeint::ObserverVerdict TetherStages2D::afterStep(timeint::IntegrationState& st
   }
   lastStepSize_ = report.stepSize;
   stoppedAtOutputTime_ = atOutputTime;
-  state.steady = false;   // the steady-state criterion applies to the tethered (or free) stage
+  state.steady = false; // the steady-state criterion applies to the tethered (or free) stage
   const double tau = this->tau(state.time);
   bool done = tau >= tether_.maximumPreparationTime * (1.0 - 1e-12);
-  bool settled = false;   // the shape criterion holds: wait for a node at the bottom
+  bool settled = false; // the shape criterion holds: wait for a node at the bottom
   if (placing_) {
     done = placementDone(state) || done;
   } else if (state.time == checkTime_ && preparationEnd_ > 0.0) {
-    settled = true;   // landed on the predicted end (TetherProcedure2D.hpp)
+    settled = true; // landed on the predicted end (TetherProcedure2D.hpp)
   } else if (state.time == checkTime_) {
     settled = windowCheckSettles(tau);
   }
@@ -189,7 +189,7 @@ void TetherStages2D::tether()
   const scene2d::TetherPlacement2D placement = scene2d::tetherPlacement(nodes, anchor);
   Eigen::Matrix2Xd tethered;
   preparationTime_ = tau(state_.time);
-  if (tether_.regrid) {   // new markers graded towards the lowest point (TetherRegrid2D.hpp)
+  if (tether_.regrid) { // new markers graded towards the lowest point (TetherRegrid2D.hpp)
     const scene2d::TetherRegrid2D regrid = regridAtTether(contour::Contour(model_.freeReferenceNodes()),
                                                           model_.contour(state_.y), tether_.grading, anchor);
     tethered = regrid.currentNodes;
@@ -233,7 +233,7 @@ void TetherStages2D::save(io::Checkpoint& checkpoint) const
   }
   if (const Eigen::Matrix2Xd& regridded = model_.regriddedReference(); regridded.size() > 0) {
     checkpoint.arrays["run regridded reference nodes"] =
-      std::vector<double>(regridded.data(), regridded.data() + regridded.size());
+        std::vector<double>(regridded.data(), regridded.data() + regridded.size());
   }
 }
 
@@ -241,8 +241,8 @@ void TetherStages2D::load(const io::Checkpoint& checkpoint, const std::string& s
 {
   const int n = model_.numberOfNodes();
   core::require<core::InputError>(state_.y.size() == 2 * static_cast<std::size_t>(n), "The checkpoint ", source,
-                                  " holds ", state_.y.size() / 2, " nodes but the deck asks for Cell/Number of points = ",
-                                  n, ".");
+                                  " holds ", state_.y.size() / 2,
+                                  " nodes but the deck asks for Cell/Number of points = ", n, ".");
   const auto integer = [&](const char* name) { return io::requiredInteger(checkpoint, name, source); };
   const auto real = [&](const char* name) { return io::requiredReal(checkpoint, name, source); };
   stage_ = static_cast<TetherStage>(integer("run stage"));

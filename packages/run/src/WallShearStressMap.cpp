@@ -21,11 +21,9 @@ std::vector<mesh::Vec3> WallGrid::nodes() const
   return points;
 }
 
-WallGrid WallGrid::around(double cx, double cz, double upstream, double downstream,
-                          double halfWidth, double spacing)
+WallGrid WallGrid::around(double cx, double cz, double upstream, double downstream, double halfWidth, double spacing)
 {
-  core::require<core::InputError>(spacing > 0.0 && upstream >= 0.0 && downstream >= 0.0 &&
-                                    halfWidth >= 0.0,
+  core::require<core::InputError>(spacing > 0.0 && upstream >= 0.0 && downstream >= 0.0 && halfWidth >= 0.0,
                                   "wall grid: the spacing must be > 0 and the extents >= 0.");
   const int up = static_cast<int>(std::ceil(upstream / spacing - 1e-9));
   const int down = static_cast<int>(std::ceil(downstream / spacing - 1e-9));
@@ -39,16 +37,14 @@ WallGrid WallGrid::around(double cx, double cz, double upstream, double downstre
   return grid;
 }
 
-operators::WallShearStress wallShearStressOnGrid(operators::BoundaryIntegralSolver& solver,
-                                                 const WallGrid& grid, double step,
-                                                 const operators::LoadDensity& load,
-                                                 const double* nodeVelocities,
-                                                 const operators::FlowConditions& flow)
+operators::WallShearStress wallShearStressOnGrid(operators::BoundaryIntegralSolver& solver, const WallGrid& grid,
+                                                 double step, const operators::LoadDensity& load,
+                                                 const double* nodeVelocities, const operators::FlowConditions& flow)
 {
-  core::require<core::InputError>(step > 0.0 && std::isfinite(step), "wall shear stress: the stencil step is ",
-                                  step, "; it must be > 0.");
+  core::require<core::InputError>(step > 0.0 && std::isfinite(step), "wall shear stress: the stencil step is ", step,
+                                  "; it must be > 0.");
   constexpr int levels = 4;
-  constexpr double weights[levels] = {48.0, -36.0, 16.0, -3.0};   // / (12 h), u(0) = 0
+  constexpr double weights[levels] = {48.0, -36.0, 16.0, -3.0}; // / (12 h), u(0) = 0
   const std::vector<mesh::Vec3> nodes = grid.nodes();
   std::vector<double> points;
   points.reserve(3 * levels * nodes.size());
@@ -76,11 +72,11 @@ operators::WallShearStress wallShearStressOnGrid(operators::BoundaryIntegralSolv
   return stress;
 }
 
-ElevatedStressAreas elevatedStressAreas(const WallGrid& grid, const std::vector<double>& stress,
-                                        double xCell, double threshold)
+ElevatedStressAreas elevatedStressAreas(const WallGrid& grid, const std::vector<double>& stress, double xCell,
+                                        double threshold)
 {
-  core::require(static_cast<int>(stress.size()) == grid.numNodes(), "elevatedStressAreas: ",
-                stress.size(), " values for ", grid.numNodes(), " grid nodes");
+  core::require(static_cast<int>(stress.size()) == grid.numNodes(), "elevatedStressAreas: ", stress.size(),
+                " values for ", grid.numNodes(), " grid nodes");
   ElevatedStressAreas areas;
   if (stress.empty()) {
     return areas;

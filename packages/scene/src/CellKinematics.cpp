@@ -13,16 +13,15 @@ namespace core = capsula::core;
 using mesh::Mat3;
 using mesh::Vec3;
 
-Vec3 centroidVelocity(const mesh::SurfaceMesh& cell, const double* nodeVelocities,
-                      int numQuadraturePoints)
+Vec3 centroidVelocity(const mesh::SurfaceMesh& cell, const double* nodeVelocities, int numQuadraturePoints)
 {
   const auto& rule = quadrature::triangleRule(numQuadraturePoints);
   // Volume and centroid (the same integrals as mesh::enclosedVolume and mesh::centroid,
   // with this rule) and the flux moments, in one pass.
   double volume = 0.0;
-  Vec3 squareMoment = Vec3::Zero();     // int x_i^2 n_i dS = 2 V x_c,i
-  Vec3 fluxMoment = Vec3::Zero();       // int x (u . n) dS
-  double flux = 0.0;                    // int u . n dS
+  Vec3 squareMoment = Vec3::Zero(); // int x_i^2 n_i dS = 2 V x_c,i
+  Vec3 fluxMoment = Vec3::Zero();   // int x (u . n) dS
+  double flux = 0.0;                // int u . n dS
   double phi[6];
   for (int e = 0; e < cell.numElements(); ++e) {
     const mesh::ElementNodes x = cell.elementNodes(e);
@@ -43,14 +42,13 @@ Vec3 centroidVelocity(const mesh::SurfaceMesh& cell, const double* nodeVelocitie
       flux += w * un;
     }
   }
-  core::require<core::NumericalError>(volume > 0.0, "centroidVelocity: the cell's volume is ",
-                                      volume, "; its surface is inverted or degenerate.");
+  core::require<core::NumericalError>(volume > 0.0, "centroidVelocity: the cell's volume is ", volume,
+                                      "; its surface is inverted or degenerate.");
   const Vec3 centre = squareMoment / (2.0 * volume);
   return (fluxMoment - flux * centre) / volume;
 }
 
-RigidMotion rigidMotionFit(const mesh::SurfaceMesh& cell, const double* nodeVelocities,
-                           const Vec3& referencePoint)
+RigidMotion rigidMotionFit(const mesh::SurfaceMesh& cell, const double* nodeVelocities, const Vec3& referencePoint)
 {
   // Normal equations of the 6 unknowns (U, Omega): u_i ~ U + Omega x r_i = U - [r_i]x Omega.
   Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
@@ -58,7 +56,7 @@ RigidMotion rigidMotionFit(const mesh::SurfaceMesh& cell, const double* nodeVelo
   for (int i = 0; i < cell.numNodes(); ++i) {
     const Vec3 r = cell.position(i) - referencePoint;
     Mat3 cross;
-    cross << 0.0, -r[2], r[1], r[2], 0.0, -r[0], -r[1], r[0], 0.0;   // [r]x v = r x v
+    cross << 0.0, -r[2], r[1], r[2], 0.0, -r[0], -r[1], r[0], 0.0; // [r]x v = r x v
     Eigen::Matrix<double, 3, 6> row;
     row << Mat3::Identity(), -cross;
     normal += row.transpose() * row;

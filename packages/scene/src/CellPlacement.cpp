@@ -67,24 +67,21 @@ void requireAboveWall(const mesh::SurfaceMesh& cell, const std::string& path)
     }
   }
   const double y = cell.position(lowest)[1];
-  core::require<core::InputError>(
-    y > 0.0, "'", path, "' crosses the wall: node ", lowest, " lies at y = ", y,
-    " but the fluid is y > 0 when 'Wall/Enabled' is true. Raise '", path,
-    "/Center' (its y component is the height of the centre) by more than ", -y,
-    ", or disable the wall.");
+  core::require<core::InputError>(y > 0.0, "'", path, "' crosses the wall: node ", lowest, " lies at y = ", y,
+                                  " but the fluid is y > 0 when 'Wall/Enabled' is true. Raise '", path,
+                                  "/Center' (its y component is the height of the centre) by more than ", -y,
+                                  ", or disable the wall.");
 }
 
 double windingNumber(const mesh::SurfaceMesh& surface, const Vec3& point)
 {
   // Four flat sub-triangles per element, oriented like the element (outward normal).
-  static constexpr std::array<std::array<int, 3>, 4> pieces{
-    {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}}};
+  static constexpr std::array<std::array<int, 3>, 4> pieces{{{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}}};
   double total = 0.0;
   for (int e = 0; e < surface.numElements(); ++e) {
     const auto& nodes = surface.element(e);
     for (const auto& piece : pieces) {
-      total += solidAngle(surface.position(nodes[piece[0]]) - point,
-                          surface.position(nodes[piece[1]]) - point,
+      total += solidAngle(surface.position(nodes[piece[0]]) - point, surface.position(nodes[piece[1]]) - point,
                           surface.position(nodes[piece[2]]) - point);
     }
   }
@@ -94,26 +91,26 @@ double windingNumber(const mesh::SurfaceMesh& surface, const Vec3& point)
 bool surfacesOverlap(const mesh::SurfaceMesh& a, const mesh::SurfaceMesh& b)
 {
   const Box boxA = boundingBox(a), boxB = boundingBox(b);
-  const bool boxesMeet = (boxA.lower.array() <= boxB.upper.array()).all()
-                         && (boxB.lower.array() <= boxA.upper.array()).all();
+  const bool boxesMeet =
+      (boxA.lower.array() <= boxB.upper.array()).all() && (boxB.lower.array() <= boxA.upper.array()).all();
   return boxesMeet && (anyNodeInside(a, b) || anyNodeInside(b, a));
 }
 
-void requireNoOverlap(const std::vector<const mesh::SurfaceMesh*>& cells,
-                      const std::vector<std::string>& paths, double minimumGap)
+void requireNoOverlap(const std::vector<const mesh::SurfaceMesh*>& cells, const std::vector<std::string>& paths,
+                      double minimumGap)
 {
   for (std::size_t i = 0; i < cells.size(); ++i) {
     for (std::size_t j = i + 1; j < cells.size(); ++j) {
       core::require<core::InputError>(
-        !surfacesOverlap(*cells[i], *cells[j]), "'", paths[i], "' and '", paths[j],
-        "' overlap at the start: a node of one lies inside the other. Move their 'Center's "
-        "apart (or make the cells smaller).");
+          !surfacesOverlap(*cells[i], *cells[j]), "'", paths[i], "' and '", paths[j],
+          "' overlap at the start: a node of one lies inside the other. Move their 'Center's "
+          "apart (or make the cells smaller).");
       const SurfaceGap gap = minimumSurfaceGap(*cells[i], *cells[j]);
-      core::require<core::InputError>(
-        gap.distance > minimumGap, "'", paths[i], "' and '", paths[j], "' touch at the start: their surfaces are ",
-        gap.distance, " apart (near (", gap.onFirst[0], ", ", gap.onFirst[1], ", ", gap.onFirst[2],
-        ")), not more than 'Cells/Minimum gap' = ", minimumGap,
-        ". Move their 'Center's apart (or lower 'Cells/Minimum gap').");
+      core::require<core::InputError>(gap.distance > minimumGap, "'", paths[i], "' and '", paths[j],
+                                      "' touch at the start: their surfaces are ", gap.distance, " apart (near (",
+                                      gap.onFirst[0], ", ", gap.onFirst[1], ", ", gap.onFirst[2],
+                                      ")), not more than 'Cells/Minimum gap' = ", minimumGap,
+                                      ". Move their 'Center's apart (or lower 'Cells/Minimum gap').");
     }
   }
 }

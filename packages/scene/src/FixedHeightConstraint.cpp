@@ -6,16 +6,14 @@
 
 namespace capsula::scene {
 
-FixedHeightConstraint::FixedHeightConstraint(std::vector<mesh::SurfaceMesh> cells,
-                                             std::vector<int> nodeOffsets)
+FixedHeightConstraint::FixedHeightConstraint(std::vector<mesh::SurfaceMesh> cells, std::vector<int> nodeOffsets)
     : cells_(std::move(cells)), nodeOffsets_(std::move(nodeOffsets))
 {
-  core::require(cells_.size() == nodeOffsets_.size(), "FixedHeightConstraint: ", cells_.size(),
-                " cells but ", nodeOffsets_.size(), " node offsets");
+  core::require(cells_.size() == nodeOffsets_.size(), "FixedHeightConstraint: ", cells_.size(), " cells but ",
+                nodeOffsets_.size(), " node offsets");
 }
 
-void FixedHeightConstraint::apply(const std::vector<double>& positions,
-                                  std::vector<double>& velocities)
+void FixedHeightConstraint::apply(const std::vector<double>& positions, std::vector<double>& velocities)
 {
   for (std::size_t k = 0; k < cells_.size(); ++k) {
     mesh::SurfaceMesh& cell = cells_[k];

@@ -26,7 +26,7 @@ void LocalMobilityPreconditioner::setCell(int cell, int firstNode, const elastic
   entries.reserve(stiffness.elements().size() * 18 * 18);
   stiffness.forEachEntry([&entries](int row, int column, double value) { entries.emplace_back(row, column, value); });
   SparseMatrix H(n, n);
-  H.setFromTriplets(entries.begin(), entries.end());   // sums the element contributions
+  H.setFromTriplets(entries.begin(), entries.end()); // sums the element contributions
   const bool samePattern = block.patternAnalysed && block.firstNode == firstNode && block.stiffness.rows() == n &&
                            block.stiffness.nonZeros() == H.nonZeros();
   block.firstNode = firstNode;
@@ -36,7 +36,7 @@ void LocalMobilityPreconditioner::setCell(int cell, int firstNode, const elastic
     block.inverseMobility[k] = 1.0 / mobility[static_cast<std::size_t>(k / 3)];
   }
   block.patternAnalysed = samePattern;
-  shift_ = -1.0;   // refactorise at the next setShift
+  shift_ = -1.0; // refactorise at the next setShift
 }
 
 void LocalMobilityPreconditioner::setShift(double shift)
@@ -46,7 +46,7 @@ void LocalMobilityPreconditioner::setShift(double shift)
   }
   for (CellBlock& block : cells_) {
     SparseMatrix A = shift * block.stiffness;
-    A.diagonal() += block.inverseMobility;   // H has every diagonal entry (a node couples to itself)
+    A.diagonal() += block.inverseMobility; // H has every diagonal entry (a node couples to itself)
     A.makeCompressed();
     if (!block.ldlt) {
       block.ldlt = std::make_unique<Eigen::SimplicialLDLT<SparseMatrix>>();
@@ -62,8 +62,8 @@ void LocalMobilityPreconditioner::setShift(double shift)
       block.lu = std::make_unique<Eigen::SparseLU<SparseMatrix>>();
       block.lu->compute(A);
       core::require<core::NumericalError>(block.lu->info() == Eigen::Success,
-                                          "The preconditioner of the stiff stage solve is singular (shift ",
-                                          shift, "): set 'Solver/Stiff/Preconditioner' to None.");
+                                          "The preconditioner of the stiff stage solve is singular (shift ", shift,
+                                          "): set 'Solver/Stiff/Preconditioner' to None.");
     }
   }
   shift_ = shift;
@@ -80,7 +80,7 @@ void LocalMobilityPreconditioner::apply(const MultiVector& X, MultiVector& Y, Te
     const auto x = X.getData(v);
     auto y = Y.getDataNonConst(v);
     const std::size_t total = map_->getNodeNumElements();
-    std::vector<double> z(x.begin(), x.end());   // nodes of no cell: identity
+    std::vector<double> z(x.begin(), x.end()); // nodes of no cell: identity
     for (const CellBlock& block : cells_) {
       const auto n = block.stiffness.rows();
       const std::size_t first = 3 * static_cast<std::size_t>(block.firstNode);

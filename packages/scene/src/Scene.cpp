@@ -38,8 +38,8 @@ std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMes
   if (cell.prestress > 0.0) {
     line << cell.prestress;
   }
-  line << "; mesh level " << cell.meshLevel << " (" << surface.numElements() << " elements, "
-       << surface.numNodes() << " nodes)";
+  line << "; mesh level " << cell.meshLevel << " (" << surface.numElements() << " elements, " << surface.numNodes()
+       << " nodes)";
   return line.str();
 }
 
@@ -63,8 +63,7 @@ std::vector<mesh::SurfaceMesh> initialSurfaces(const SceneDescription& descripti
 Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& deck,
              const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const operators::KernelRegistry& kernels)
     : Scene(description, deck, comm, kernels, initialSurfaces(description), {})
-{
-}
+{}
 
 Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& deck,
              const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const operators::KernelRegistry& kernels,
@@ -84,8 +83,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   core::require<core::InputError>(description_.viscosityRatio > 0.0 && std::isfinite(description_.viscosityRatio),
                                   "'Flow/Viscosity ratio' = ", description_.viscosityRatio,
                                   " must be a finite number > 0.");
-  core::require(cells_.size() == static_cast<std::size_t>(n), "Scene: ", cells_.size(), " surfaces for ", n,
-                " cells");
+  core::require(cells_.size() == static_cast<std::size_t>(n), "Scene: ", cells_.size(), " surfaces for ", n, " cells");
   core::require(references.empty() || references.size() == cells_.size(), "Scene: ", references.size(),
                 " reference shapes for ", n, " cells");
 
@@ -112,15 +110,14 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     elasticity::MembraneLawParameters parameters;
     parameters.shearModulus = cell.shearModulus;
     parameters.areaDilation = cell.areaDilation;
-    std::shared_ptr<const elasticity::MembraneLaw> law =
-      elasticity::makeMembraneLaw(cell.membraneLaw, parameters);
+    std::shared_ptr<const elasticity::MembraneLaw> law = elasticity::makeMembraneLaw(cell.membraneLaw, parameters);
     const mesh::SurfaceMesh& surface = cells_[static_cast<std::size_t>(c)];
-    std::vector<double> reference = !references.empty() ? std::move(references[static_cast<std::size_t>(c)])
+    std::vector<double> reference = !references.empty()    ? std::move(references[static_cast<std::size_t>(c)])
                                     : cell.prestress > 0.0 ? elasticity::prestressedReference(surface, cell.prestress)
                                                            : surface.positions();
     membraneDiscretisation.forceMethod = elasticity::membraneForceMethod(cell.membraneForces);
-    membranes_.push_back(std::make_unique<elasticity::MembraneMechanics>(
-      surface, std::move(reference), std::move(law), membraneDiscretisation));
+    membranes_.push_back(std::make_unique<elasticity::MembraneMechanics>(surface, std::move(reference), std::move(law),
+                                                                         membraneDiscretisation));
     terms_.push_back(describeMembrane(cell, surface));
   }
 
@@ -135,8 +132,9 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   }
   {
     std::ostringstream line;
-    line << "kernel: " << kernel << " (" << solver_->kernelName() << "), single layer with N_Q = "
-         << discretisation.quadraturePoints << ", N_GL = " << discretisation.singularQuadraturePoints;
+    line << "kernel: " << kernel << " (" << solver_->kernelName()
+         << "), single layer with N_Q = " << discretisation.quadraturePoints
+         << ", N_GL = " << discretisation.singularQuadraturePoints;
     terms_.push_back(line.str());
   }
   {
@@ -144,9 +142,8 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     if (description_.viscosityRatio == 1.0) {
       line << "viscosity ratio 1: explicit velocity (no double layer, no linear solve)";
     } else {
-      line << "viscosity ratio " << description_.viscosityRatio
-           << ": double layer and Belos GMRES (tolerance " << solverParameters.tolerance
-           << (solverParameters.warmStart ? ", warm start" : "") << ")";
+      line << "viscosity ratio " << description_.viscosityRatio << ": double layer and Belos GMRES (tolerance "
+           << solverParameters.tolerance << (solverParameters.warmStart ? ", warm start" : "") << ")";
     }
     terms_.push_back(line.str());
   }
@@ -165,8 +162,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     if (description_.cells[static_cast<std::size_t>(c)].fixedHeight) {
       fixed.push_back(cells_[static_cast<std::size_t>(c)]);
       offsets.push_back(nodeOffset(c));
-      terms_.push_back("constraint: fixed centroid height of " +
-                       description_.cells[static_cast<std::size_t>(c)].path);
+      terms_.push_back("constraint: fixed centroid height of " + description_.cells[static_cast<std::size_t>(c)].path);
     }
   }
   if (!fixed.empty()) {
@@ -175,8 +171,8 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   if (description_.meshRegularisation.enabled) {
     std::ostringstream line;
     const auto& settings = description_.meshRegularisation;
-    line << "mesh regularisation: tangential node redistribution below " << settings.triggerAngle
-         << " degrees (up to " << settings.options.passes << " passes, relaxation " << settings.options.relaxation
+    line << "mesh regularisation: tangential node redistribution below " << settings.triggerAngle << " degrees (up to "
+         << settings.options.passes << " passes, relaxation " << settings.options.relaxation
          << (settings.options.preserveVolume ? ", volume kept" : "") << "), reference positions carried along";
     terms_.push_back(line.str());
   }
@@ -194,23 +190,23 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
 
 void Scene::setPositions(double t, const std::vector<double>& positions)
 {
-  core::require(positions.size() == 3 * static_cast<std::size_t>(numNodes()), "Scene: a state of ",
-                positions.size(), " numbers for ", numNodes(), " nodes");
+  core::require(positions.size() == 3 * static_cast<std::size_t>(numNodes()), "Scene: a state of ", positions.size(),
+                " numbers for ", numNodes(), " nodes");
   for (int c = 0; c < numCells(); ++c) {
     const double* x = positions.data() + 3 * static_cast<std::size_t>(nodeOffset(c));
     mesh::SurfaceMesh& surface = cells_[static_cast<std::size_t>(c)];
     for (int i = 0; i < surface.numNodes(); ++i) {
       const double* p = x + 3 * i;
+      core::require<core::NumericalError>(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]),
+                                          "At t = ", t, " node ", i, " of '",
+                                          description_.cells[static_cast<std::size_t>(c)].path,
+                                          "' has a non-finite position: the run has become unstable. Reduce 'Time "
+                                          "integration/Tolerance' or refine the mesh.");
       core::require<core::NumericalError>(
-        std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]), "At t = ", t, " node ", i,
-        " of '", description_.cells[static_cast<std::size_t>(c)].path,
-        "' has a non-finite position: the run has become unstable. Reduce 'Time "
-        "integration/Tolerance' or refine the mesh.");
-      core::require<core::NumericalError>(
-        !description_.wall || p[1] > 0.0, "At t = ", t, " node ", i, " of '",
-        description_.cells[static_cast<std::size_t>(c)].path, "' reached the wall (y = ", p[1],
-        "). The boundary-integral model has no contact force; start the cell higher or "
-        "stop earlier.");
+          !description_.wall || p[1] > 0.0, "At t = ", t, " node ", i, " of '",
+          description_.cells[static_cast<std::size_t>(c)].path, "' reached the wall (y = ", p[1],
+          "). The boundary-integral model has no contact force; start the cell higher or "
+          "stop earlier.");
     }
     surface.setPositions(x);
   }
@@ -237,15 +233,15 @@ std::vector<MeshRegularisation> Scene::regulariseMeshes(double t, std::vector<do
     // costs shape (O(h^3) per move); 10 degrees above the trigger gives the passes room.
     options.improveBelow = std::min(60.0, settings.triggerAngle + 10.0);
     const mesh::RedistributedNodes moved =
-      mesh::redistributeNodes(surface, surface.positions(), membrane.referencePositions(), options);
-    if (moved.passes == 0) {   // no pass improved the smallest angle: leave the cell as it is
+        mesh::redistributeNodes(surface, surface.positions(), membrane.referencePositions(), options);
+    if (moved.passes == 0) { // no pass improved the smallest angle: leave the cell as it is
       continue;
     }
     std::copy(moved.positions.begin(), moved.positions.end(), x);
     surface.setPositions(x);
     try {
       membranes_[static_cast<std::size_t>(c)] =
-        std::make_unique<elasticity::MembraneMechanics>(membrane.withReference(moved.reference));
+          std::make_unique<elasticity::MembraneMechanics>(membrane.withReference(moved.reference));
     } catch (const core::InputError& e) {
       throw core::NumericalError(core::message("At t = ", t, ", redistributing the nodes of '",
                                                description_.cells[static_cast<std::size_t>(c)].path,
@@ -272,7 +268,7 @@ std::optional<AdaptedCells> Scene::adaptedCells(const std::vector<double>& posit
     mesh::SurfaceMesh current = cells_[static_cast<std::size_t>(c)];
     current.setPositions(positions.data() + 3 * static_cast<std::size_t>(nodeOffset(c)));
     mesh::AdaptedMembraneMesh refined =
-      mesh::adaptMembraneMesh(current, referencePositions(c), settings.options, settings.maxElements);
+        mesh::adaptMembraneMesh(current, referencePositions(c), settings.options, settings.maxElements);
     any = any || refined.markedElements > 0;
     adapted.cells.push_back(std::move(refined.current));
     adapted.references.push_back(std::move(refined.reference));
@@ -298,9 +294,9 @@ void Scene::computeLoads(double t, elasticity::MembraneEvaluation what)
     try {
       membrane.evaluate(cells_[static_cast<std::size_t>(c)].positionData(), what);
     } catch (const core::NumericalError& e) {
-      throw core::NumericalError(core::message(
-        "At t = ", t, ", the membrane of '", description_.cells[static_cast<std::size_t>(c)].path,
-        "' failed: ", e.what()));
+      throw core::NumericalError(core::message("At t = ", t, ", the membrane of '",
+                                               description_.cells[static_cast<std::size_t>(c)].path,
+                                               "' failed: ", e.what()));
     }
     // Delta f at the six nodes of each element (operators/LoadDensity.hpp), and its
     // element averages for the outputs.
@@ -318,12 +314,12 @@ void Scene::computeLoads(double t, elasticity::MembraneEvaluation what)
 void Scene::velocity(double t, const std::vector<double>& positions, std::vector<double>& velocities)
 {
   setPositions(t, positions);
-  computeLoads(t, elasticity::MembraneEvaluation::LoadOnly);   // no output reads the tensions of a stage
+  computeLoads(t, elasticity::MembraneEvaluation::LoadOnly); // no output reads the tensions of a stage
   Teuchos::TimeMonitor guard(*velocityTimer_);
   // Warm start: GMRES begins at a combination of the last solutions (O(step) away).
   const operators::LoadDensity load(loadDensity_.data());
   operators::VelocitySolution solution =
-    warmStart_ ? solver_->nodeVelocities(load, flow_, *warmStart_) : solver_->nodeVelocities(load, flow_);
+      warmStart_ ? solver_->nodeVelocities(load, flow_, *warmStart_) : solver_->nodeVelocities(load, flow_);
   velocities = std::move(solution.velocities);
 }
 
@@ -349,8 +345,7 @@ SceneFields Scene::evaluate(double t, const std::vector<double>& positions)
   computeLoads(t, elasticity::MembraneEvaluation::Everything);
   {
     Teuchos::TimeMonitor guard(*velocityTimer_);
-    operators::VelocitySolution solution =
-      solver_->nodeVelocities(operators::LoadDensity(loadDensity_.data()), flow_);
+    operators::VelocitySolution solution = solver_->nodeVelocities(operators::LoadDensity(loadDensity_.data()), flow_);
     fields.solverVelocities = std::move(solution.velocities);
     fields.gmresIterations = solution.iterations;
   }

@@ -47,10 +47,8 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
   core::require<core::InputError>(n >= 1, "'Cells' has no cell: add a sublist 'Cells/Cell 0'.");
   for (int c = 0; c < n; ++c) {
     const std::string name = cellSublistName(c);
-    core::require<core::InputError>(cells.isSublist(name), "'Cells' holds ", n,
-                                    " cell sublists but no '", name,
-                                    "': number the cells 'Cell 0' to 'Cell ", n - 1,
-                                    "' without gaps.");
+    core::require<core::InputError>(cells.isSublist(name), "'Cells' holds ", n, " cell sublists but no '", name,
+                                    "': number the cells 'Cell 0' to 'Cell ", n - 1, "' without gaps.");
     const auto& list = cells.sublist(name);
     CellDescription cell;
     cell.path = "Cells/" + name;

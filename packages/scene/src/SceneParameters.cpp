@@ -43,7 +43,10 @@ void declareMinimumGap(Teuchos::ParameterList& cells)
                     core::greaterThan(0.0));
 }
 
-std::string cellSublistName(int index) { return "Cell " + std::to_string(index); }
+std::string cellSublistName(int index)
+{
+  return "Cell " + std::to_string(index);
+}
 
 void declareCellParameters(Teuchos::ParameterList& cell)
 {
@@ -112,9 +115,10 @@ void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::Parame
 void declareMeshEvolutionParameters(Teuchos::ParameterList& valid)
 {
   mesh::declareRedistributionParameters(core::declareSublist(
-    valid, "Mesh regularisation", "Tangential redistribution of the nodes of a running cell (docs/stability.md)."));
-  mesh::declareAdaptionParameters(core::declareSublist(
-    valid, "Mesh adaption", "Curvature-driven refinement of a running cell's mesh (thesis eq 4.3, docs/stability.md)."));
+      valid, "Mesh regularisation", "Tangential redistribution of the nodes of a running cell (docs/stability.md)."));
+  mesh::declareAdaptionParameters(
+      core::declareSublist(valid, "Mesh adaption",
+                           "Curvature-driven refinement of a running cell's mesh (thesis eq 4.3, docs/stability.md)."));
 }
 
 } // namespace capsula::scene

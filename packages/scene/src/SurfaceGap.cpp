@@ -28,8 +28,8 @@ constexpr std::array<std::array<int, 3>, 4> kPieces{{{0, 3, 5}, {3, 1, 4}, {5, 4
 
 struct FlatTriangle {
   Vec3 a, b, c;
-  Vec3 centre;     // of the vertices
-  double radius;   // largest distance from the centre to a vertex
+  Vec3 centre;   // of the vertices
+  double radius; // largest distance from the centre to a vertex
 };
 
 Vec3 nodeAt(const double* x, int node)
@@ -133,8 +133,7 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
   return a + (vb / sum) * ab + (vc / sum) * ac;
 }
 
-SurfaceGap minimumSurfaceGap(const mesh::SurfaceMesh& a, const double* xa, const mesh::SurfaceMesh& b,
-                             const double* xb)
+SurfaceGap minimumSurfaceGap(const mesh::SurfaceMesh& a, const double* xa, const mesh::SurfaceMesh& b, const double* xb)
 {
   SurfaceGap gap;
   gap.distance = HUGE_VAL;

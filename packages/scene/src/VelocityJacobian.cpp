@@ -23,26 +23,28 @@ constexpr double kMassSolveTolerance = 1e-11;
 
 VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& deck,
                                    const operators::KernelRegistry& kernels)
-  : scene_(scene),
-    settings_(readStiffSolverSettings(deck.sublist("Solver").sublist("Stiff"))),
-    lineariseTimer_(core::timer("Stiff Jacobian: linearise")),
-    applyTimer_(core::timer("Stiff Jacobian: apply")),
-    preconditionerTimer_(core::timer("Stiff Jacobian: preconditioner"))
+    : scene_(scene),
+      settings_(readStiffSolverSettings(deck.sublist("Solver").sublist("Stiff"))),
+      lineariseTimer_(core::timer("Stiff Jacobian: linearise")),
+      applyTimer_(core::timer("Stiff Jacobian: apply")),
+      preconditionerTimer_(core::timer("Stiff Jacobian: preconditioner"))
 {
   const SceneDescription& description = scene.description();
   for (const CellDescription& cell : description.cells) {
     core::require<core::InputError>(
-      cell.membraneForces == "Virtual work", "The stiff time integration ('Time integration/Method' ROS34PW2, ROS2 or ",
-      "Auto) needs the membranes' tangent stiffness, the second variation of their strain energy; '", cell.path,
-      "/Membrane forces' = '", cell.membraneForces, "' is not an energy gradient. Set it to 'Virtual work' or "
-      "choose an explicit method (RKF45, DormandPrince45, RK4).");
+        cell.membraneForces == "Virtual work",
+        "The stiff time integration ('Time integration/Method' ROS34PW2, ROS2 or ",
+        "Auto) needs the membranes' tangent stiffness, the second variation of their strain energy; '", cell.path,
+        "/Membrane forces' = '", cell.membraneForces,
+        "' is not an energy gradient. Set it to 'Virtual work' or "
+        "choose an explicit method (RKF45, DormandPrince45, RK4).");
   }
   std::vector<mesh::SurfaceMesh> cells;
   for (int c = 0; c < scene.numCells(); ++c) {
     cells.push_back(scene.cell(c));
   }
   operators::DiscretisationParameters discretisation =
-    operators::readDiscretisationParameters(deck.sublist("Discretisation"));
+      operators::readDiscretisationParameters(deck.sublist("Discretisation"));
   if (settings_.quadraturePoints > 0) {
     discretisation.quadraturePoints = settings_.quadraturePoints;
     try {
@@ -56,8 +58,8 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
                            operators::CellSurfaces(std::move(cells), description.viscosityRatio), discretisation,
                            operators::readSolverParameters(deck.sublist("Solver")));
   const int numNodes = scene.numNodes();
-  map_ = Teuchos::rcp(new Tpetra::Map<>(3 * static_cast<Tpetra::global_size_t>(numNodes), 0, scene.comm(),
-                                        Tpetra::LocallyReplicated));
+  map_ = Teuchos::rcp(
+      new Tpetra::Map<>(3 * static_cast<Tpetra::global_size_t>(numNodes), 0, scene.comm(), Tpetra::LocallyReplicated));
   stage_ = Teuchos::rcp(new operators::StageOperator(map_, [this](const double* x, double* y) { apply(x, y); }));
   if (settings_.preconditioned) {
     preconditioner_ = Teuchos::rcp(new LocalMobilityPreconditioner(map_));
@@ -85,8 +87,8 @@ void VelocityJacobian::linearise(double /*t*/, const std::vector<double>& y)
     try {
       stiffness_.push_back(scene_.membrane(c).tangentStiffness(positions));
     } catch (const core::NumericalError& e) {
-      throw core::NumericalError(
-        core::message("The membrane of '", description.cells[static_cast<std::size_t>(c)].path, "' failed: ", e.what()));
+      throw core::NumericalError(core::message("The membrane of '", description.cells[static_cast<std::size_t>(c)].path,
+                                               "' failed: ", e.what()));
     }
     mass_[static_cast<std::size_t>(c)]->assemble(positions);
     if (preconditioner_.is_null()) {
@@ -149,7 +151,7 @@ timeint::LinearSolveReport VelocityJacobian::solve(double shift, const std::vect
   }
   norm = std::sqrt(norm);
   const double target = residualRms * std::sqrt(static_cast<double>(n));
-  if (norm <= target) {   // x = 0 is already close enough
+  if (norm <= target) { // x = 0 is already close enough
     x.assign(n, 0.0);
     report.converged = true;
     report.residualRms = norm / std::sqrt(static_cast<double>(n));
@@ -175,7 +177,7 @@ timeint::LinearSolveReport VelocityJacobian::solve(double shift, const std::vect
   parameters.tolerance = std::max(target / norm, 1e-14);
   const bool zeroGuess = std::all_of(x.begin(), x.end(), [](double v) { return v == 0.0; });
   const operators::GmresResult result =
-    operators::solveWithGmres(stage_, preconditioner_, b, solution, parameters, zeroGuess);
+      operators::solveWithGmres(stage_, preconditioner_, b, solution, parameters, zeroGuess);
   const auto xData = solution->getData(0);
   x.assign(xData.begin(), xData.end());
   report.converged = result.converged;
@@ -187,9 +189,9 @@ timeint::LinearSolveReport VelocityJacobian::solve(double shift, const std::vect
 std::string VelocityJacobian::settingsHint() const
 {
   std::ostringstream hint;
-  hint << "(raise 'Solver/Stiff/Maximum iterations' = " << settings_.maximumIterations << " or 'Solver/Stiff/Restart' = "
-       << settings_.restart << (settings_.preconditioned ? "" : ", or set 'Solver/Stiff/Preconditioner' to 'Local mobility'")
-       << ")";
+  hint << "(raise 'Solver/Stiff/Maximum iterations' = " << settings_.maximumIterations
+       << " or 'Solver/Stiff/Restart' = " << settings_.restart
+       << (settings_.preconditioned ? "" : ", or set 'Solver/Stiff/Preconditioner' to 'Local mobility'") << ")";
   return hint.str();
 }
 

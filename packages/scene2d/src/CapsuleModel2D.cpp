@@ -27,17 +27,20 @@ contour::ContourOptions optionsFor(contour::Closure closure, contour::TetherEnds
 CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const CellSettings2D& cell,
                                const FlowSettings2D& flow, const operators::ContourDiscretisation2D& discretisation,
                                const operators::SolverParameters& solver)
-  : cell_(cell), flow_(flow), discretisation_(discretisation), referenceNodes_(initialCellNodes(cell)),
-    freeReference_(elasticity::prestressedReference2D(referenceNodes_, cell.prestress))
+    : cell_(cell),
+      flow_(flow),
+      discretisation_(discretisation),
+      referenceNodes_(initialCellNodes(cell)),
+      freeReference_(elasticity::prestressedReference2D(referenceNodes_, cell.prestress))
 {
   core::require<core::InputError>(!flow.wall || cell.lowestPointHeight > 0.0,
-                                  "Cell/Lowest point height must be > 0 above the wall, got ",
-                                  cell.lowestPointHeight, ": raise it or set Wall/Enabled to false.");
+                                  "Cell/Lowest point height must be > 0 above the wall, got ", cell.lowestPointHeight,
+                                  ": raise it or set Wall/Enabled to false.");
   const contour::Contour initial(referenceNodes_);
   referenceLength_ = initial.length();
   referenceArea_ = contour::enclosedArea(initial);
-  membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(contour::Contour(freeReference_),
-                                                              elasticity::HookeanLaw2D(1.0));
+  membrane_ =
+      std::make_unique<elasticity::ElasticMembrane2D>(contour::Contour(freeReference_), elasticity::HookeanLaw2D(1.0));
   velocity_ = operators::makeInterfaceVelocity2D(flow.wall, comm, numberOfNodes(), discretisation, solver);
   if (solver.warmStart && flow.conditions.viscosityRatio != 1.0) {
     warmStart_.emplace();
@@ -48,9 +51,9 @@ void CapsuleModel2D::restoreGmresWarmStart(const std::vector<double>& rightHandS
                                            const std::vector<double>& solutions)
 {
   core::require<core::InputError>(warmStart_.has_value(), "A checkpoint holds a GMRES warm start but this run has "
-                                  "none (lambda = 1 or 'Solver/Warm start' = false).");
-  warmStart_ = operators::WarmStartHistory::fromFlattened(warmStart_->depth(), 2 * numberOfNodes(), rightHandSides,
-                                                          solutions);
+                                                          "none (lambda = 1 or 'Solver/Warm start' = false).");
+  warmStart_ =
+      operators::WarmStartHistory::fromFlattened(warmStart_->depth(), 2 * numberOfNodes(), rightHandSides, solutions);
 }
 
 std::vector<std::string> CapsuleModel2D::terms() const
@@ -68,7 +71,7 @@ std::vector<std::string> CapsuleModel2D::terms() const
 void CapsuleModel2D::save(io::Checkpoint& checkpoint) const
 {
   checkpoint.reals["run cell prestress"] = cell_.prestress;
-  if (warmStart_ && !warmStart_->empty()) {   // the next solve's start
+  if (warmStart_ && !warmStart_->empty()) { // the next solve's start
     checkpoint.arrays["run gmres warm start rhs"] = warmStart_->rightHandSides();
     checkpoint.arrays["run gmres warm start solutions"] = warmStart_->solutions();
   }
@@ -77,12 +80,12 @@ void CapsuleModel2D::save(io::Checkpoint& checkpoint) const
 void CapsuleModel2D::load(const io::Checkpoint& checkpoint, const std::string& source)
 {
   const double prestress = io::requiredReal(checkpoint, "run cell prestress", source);
-  core::require<core::InputError>(prestress == cell_.prestress, "The checkpoint ", source,
-                                  " was written with Cell/Prestress = ", prestress, " but the deck has ",
-                                  cell_.prestress, ": the membrane's reference would change; restart with the run's deck.");
+  core::require<core::InputError>(
+      prestress == cell_.prestress, "The checkpoint ", source, " was written with Cell/Prestress = ", prestress,
+      " but the deck has ", cell_.prestress, ": the membrane's reference would change; restart with the run's deck.");
   const auto* rhs = io::optionalArray(checkpoint, "run gmres warm start rhs");
   const auto* solutions = io::optionalArray(checkpoint, "run gmres warm start solutions");
-  if (rhs && solutions) {   // the next solve starts where it would have
+  if (rhs && solutions) { // the next solve starts where it would have
     restoreGmresWarmStart(*rhs, *solutions);
   }
 }
@@ -98,7 +101,7 @@ void CapsuleModel2D::tether(int offset)
                                    optionsFor(contour::Closure::Tethered, cell_.tetherEnds));
   membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
   tetherOffset_ = offset;
-  if (warmStart_) {   // relabelled nodes and a fixed row: the old solutions do not apply
+  if (warmStart_) { // relabelled nodes and a fixed row: the old solutions do not apply
     warmStart_.emplace(warmStart_->depth());
   }
 }
@@ -108,24 +111,25 @@ void CapsuleModel2D::regridFree(const Eigen::Matrix2Xd& referenceNodes)
   core::require<core::InputError>(!tethered() && referenceNodes.cols() == numberOfNodes(),
                                   "CapsuleModel2D::regridFree: ", referenceNodes.cols(), " reference nodes for a ",
                                   tethered() ? "tethered" : "free", " cell of ", numberOfNodes());
-  membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(contour::Contour(referenceNodes),
-                                                              elasticity::HookeanLaw2D(1.0));
+  membrane_ =
+      std::make_unique<elasticity::ElasticMembrane2D>(contour::Contour(referenceNodes), elasticity::HookeanLaw2D(1.0));
   freeReference_ = referenceNodes;
   freeRegridded_ = true;
-  if (warmStart_) {   // new markers: the old solutions do not apply
+  if (warmStart_) { // new markers: the old solutions do not apply
     warmStart_.emplace(warmStart_->depth());
   }
 }
 
 void CapsuleModel2D::tether(const Eigen::Matrix2Xd& referenceNodes)
 {
-  core::require<core::InputError>(referenceNodes.cols() == numberOfNodes(), "CapsuleModel2D::tether: ",
-                                  referenceNodes.cols(), " reference nodes for a cell of ", numberOfNodes());
+  core::require<core::InputError>(referenceNodes.cols() == numberOfNodes(),
+                                  "CapsuleModel2D::tether: ", referenceNodes.cols(), " reference nodes for a cell of ",
+                                  numberOfNodes());
   const contour::Contour reference(referenceNodes, optionsFor(contour::Closure::Tethered, cell_.tetherEnds));
   membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
   tetherOffset_ = 0;
   regriddedReference_ = referenceNodes;
-  if (warmStart_) {   // new markers and a fixed row: the old solutions do not apply
+  if (warmStart_) { // new markers and a fixed row: the old solutions do not apply
     warmStart_.emplace(warmStart_->depth());
   }
 }
@@ -135,9 +139,9 @@ contour::Contour CapsuleModel2D::contour(const std::vector<double>& state) const
   core::require(state.size() == 2 * static_cast<std::size_t>(numberOfNodes()), "CapsuleModel2D: the state has ",
                 state.size(), " entries, expected ", 2 * numberOfNodes());
   Eigen::Matrix2Xd nodes = Eigen::Map<const Eigen::Matrix2Xd>(state.data(), 2, numberOfNodes());
-  return contour::Contour(std::move(nodes),
-                          optionsFor(tethered() ? contour::Closure::Tethered : contour::Closure::Periodic,
-                                     cell_.tetherEnds));
+  return contour::Contour(
+      std::move(nodes),
+      optionsFor(tethered() ? contour::Closure::Tethered : contour::Closure::Periodic, cell_.tetherEnds));
 }
 
 elasticity::MembraneState2D CapsuleModel2D::membrane(const contour::Contour& contour) const
@@ -153,7 +157,7 @@ operators::VelocitySolution2D CapsuleModel2D::velocities(const contour::Contour&
   };
   const std::vector<int> fixed = tethered() ? std::vector<int>{0} : std::vector<int>{};
   operators::VelocitySolution2D solution =
-    velocity_->nodeVelocities(contour, load, flow_.conditions, fixed, warmStart_ ? &*warmStart_ : nullptr);
+      velocity_->nodeVelocities(contour, load, flow_.conditions, fixed, warmStart_ ? &*warmStart_ : nullptr);
   lastIterations_ = solution.iterations;
   return solution;
 }

@@ -27,7 +27,8 @@ ContourExtremum2D contourMaximum(const contour::Contour& contour, int axis)
     if (std::abs(qa) < 1e-300) {
       if (std::abs(qb) > 0.0) {
         const double r = -qc / qb;
-        if (r > 0.0 && r < span) consider(k, r, span);
+        if (r > 0.0 && r < span)
+          consider(k, r, span);
       }
       continue;
     }
@@ -57,8 +58,8 @@ CellMetrics2D cellMetrics2D(const CapsuleModel2D& model, const contour::Contour&
   m.tetherForce = force.norm();
   const ContourExtremum2D front = contourMaximum(contour, 0);
   const operators::ContourField2D velocity(contour, velocities.data());
-  m.leadingEdgeVelocity = model.flow().conditions.viscosityRatio * velocity.at(front.segment, front.t).x() /
-                          flowSemiAxis(model.cell());
+  m.leadingEdgeVelocity =
+      model.flow().conditions.viscosityRatio * velocity.at(front.segment, front.t).x() / flowSemiAxis(model.cell());
   m.area = contour::enclosedArea(contour);
   m.areaDrift = (m.area - model.referenceArea()) / model.referenceArea();
   m.D12 = contour::taylorDeformation(contour);
@@ -71,14 +72,25 @@ CellMetrics2D cellMetrics2D(const CapsuleModel2D& model, const contour::Contour&
 
 std::vector<std::string> metricColumns()
 {
-  return {"contour_length_ratio", "cell_length", "tether_force_x", "tether_force_y", "tether_force",
-          "leading_edge_velocity", "area", "area_drift", "D12", "centroid_x", "centroid_y", "lowest_point"};
+  return {"contour_length_ratio",
+          "cell_length",
+          "tether_force_x",
+          "tether_force_y",
+          "tether_force",
+          "leading_edge_velocity",
+          "area",
+          "area_drift",
+          "D12",
+          "centroid_x",
+          "centroid_y",
+          "lowest_point"};
 }
 
 std::vector<double> metricValues(const CellMetrics2D& m)
 {
-  return {m.contourLengthRatio, m.cellLength, m.tetherForceX, m.tetherForceY, m.tetherForce,
-          m.leadingEdgeVelocity, m.area, m.areaDrift, m.D12, m.centroidX, m.centroidY, m.lowestPoint};
+  return {m.contourLengthRatio,  m.cellLength, m.tetherForceX, m.tetherForceY, m.tetherForce,
+          m.leadingEdgeVelocity, m.area,       m.areaDrift,    m.D12,          m.centroidX,
+          m.centroidY,           m.lowestPoint};
 }
 
 } // namespace capsula::scene2d

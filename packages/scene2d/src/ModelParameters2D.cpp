@@ -19,11 +19,12 @@ void declareModelParameters2D(Teuchos::ParameterList& valid)
   declareCellParameters2D(declareSublist(valid, "Cell", "The initial cell contour (thesis Fig. 4.1)."));
   declareTetherParameters2D(declareSublist(valid, "Tether", "The tether procedure (thesis Section 4.1)."));
   operators::declareContourDiscretisation2D(
-    declareSublist(valid, "Discretisation", "Quadrature of the contour integrals (thesis App. A.6)."));
+      declareSublist(valid, "Discretisation", "Quadrature of the contour integrals (thesis App. A.6)."));
   auto& solver = declareSublist(valid, "Solver", "GMRES for the viscosity-ratio equation (thesis App. A.7).");
   operators::declareSolverParameters(solver);
   declareStiffSolverParameters2D(declareSublist(
-    solver, "Stiff", "The linear solves of the stiff time integrators (Time integration/Method ROS34PW2, ROS2, Auto)."));
+      solver, "Stiff",
+      "The linear solves of the stiff time integrators (Time integration/Method ROS34PW2, ROS2, Auto)."));
 }
 
 } // namespace capsula::scene2d

@@ -16,9 +16,8 @@ std::string describeNode(int node, double x, double y)
 } // namespace
 
 NodeOutsideFluid::NodeOutsideFluid(int node, double x, double y)
-  : timeint::StateOutsideDomain(describeNode(node, x, y)), node_(node), x_(x), y_(y)
-{
-}
+    : timeint::StateOutsideDomain(describeNode(node, x, y)), node_(node), x_(x), y_(y)
+{}
 
 int firstNodeOutsideFluid(const std::vector<double>& state)
 {

@@ -59,11 +59,10 @@ StiffSolverSettings2D readStiffSolverSettings2D(const Teuchos::ParameterList& st
   s.maximumIterations = stiff.get<int>("Maximum iterations");
   s.restart = stiff.get<int>("Restart");
   const std::string preconditioner = stiff.get<std::string>("Preconditioner");
-  s.preconditioner = preconditioner == toString(StiffPreconditioner2D::PointSingleLayer)
-                       ? StiffPreconditioner2D::PointSingleLayer
-                     : preconditioner == toString(StiffPreconditioner2D::LocalMobility)
-                       ? StiffPreconditioner2D::LocalMobility
-                       : StiffPreconditioner2D::None;
+  s.preconditioner =
+      preconditioner == toString(StiffPreconditioner2D::PointSingleLayer) ? StiffPreconditioner2D::PointSingleLayer
+      : preconditioner == toString(StiffPreconditioner2D::LocalMobility)  ? StiffPreconditioner2D::LocalMobility
+                                                                          : StiffPreconditioner2D::None;
   s.mobilityFactor = stiff.get<double>("Mobility factor");
   s.gaussLegendrePoints = stiff.get<int>("Gauss-Legendre points");
   return s;

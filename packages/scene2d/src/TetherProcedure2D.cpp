@@ -37,8 +37,7 @@ void declareTetherParameters2D(Teuchos::ParameterList& tether)
   core::declareReal(tether, "Minimum preparation time", defaults.minimumPreparationTime,
                     "tau before which the preparation stage never ends.", core::atLeast(0.0));
   core::declareReal(tether, "Maximum preparation time", defaults.maximumPreparationTime,
-                    "tau at which the preparation stage ends whatever the deformation rate.",
-                    core::atLeast(0.0));
+                    "tau at which the preparation stage ends whatever the deformation rate.", core::atLeast(0.0));
   core::declareReal(tether, "Force transient", defaults.forceTransient,
                     "tau after tethering left out of summary.json's max.tether_force_after_transient "
                     "(max.tether_force takes every step). Right after tethering a fast mode next to "
@@ -90,8 +89,10 @@ TetherSettings2D readTetherSettings2D(const Teuchos::ParameterList& tether)
                                   "Tether/Preparation regrid interval = ", s.preparationRegridInterval,
                                   " needs Tether/Regrid at tethering = true (the tether must be placed on the "
                                   "graded markers too).");
-  core::require<core::InputError>(s.grading.tetherSpacing <= 1.0, "Tether/Spacing at the tether must be <= 1 "
-                                  "(a fraction of the far spacing), got ", s.grading.tetherSpacing);
+  core::require<core::InputError>(s.grading.tetherSpacing <= 1.0,
+                                  "Tether/Spacing at the tether must be <= 1 "
+                                  "(a fraction of the far spacing), got ",
+                                  s.grading.tetherSpacing);
   core::require<core::InputError>(s.minimumPreparationTime <= s.maximumPreparationTime,
                                   "Tether/Minimum preparation time (", s.minimumPreparationTime,
                                   ") exceeds Tether/Maximum preparation time (", s.maximumPreparationTime,

@@ -53,7 +53,8 @@ std::vector<double> gradedArcLengths(int markers, double length, const TetherGra
                                   " markers over a length ", length);
   core::require<core::InputError>(grading.tetherSpacing > 0.0 && grading.tetherSpacing <= 1.0,
                                   "Tether/Spacing at the tether must lie in (0, 1] (a fraction of the far "
-                                  "spacing), got ", grading.tetherSpacing);
+                                  "spacing), got ",
+                                  grading.tetherSpacing);
   core::require<core::InputError>(grading.gradedLength > 0.0, "Tether/Graded length must be > 0, got ",
                                   grading.gradedLength);
   HalfGrading half;

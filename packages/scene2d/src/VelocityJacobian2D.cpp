@@ -38,11 +38,11 @@ constexpr int kColumnSpacing = 24;
 
 VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
                                        const Teuchos::ParameterList& deck)
-  : model_(model),
-    settings_(readStiffSolverSettings2D(deck.sublist("Solver").sublist("Stiff"))),
-    lineariseTimer_(core::timer("Stiff Jacobian 2D: linearise")),
-    applyTimer_(core::timer("Stiff Jacobian 2D: apply")),
-    preconditionerTimer_(core::timer("Stiff Jacobian 2D: preconditioner"))
+    : model_(model),
+      settings_(readStiffSolverSettings2D(deck.sublist("Solver").sublist("Stiff"))),
+      lineariseTimer_(core::timer("Stiff Jacobian 2D: linearise")),
+      applyTimer_(core::timer("Stiff Jacobian 2D: apply")),
+      preconditionerTimer_(core::timer("Stiff Jacobian 2D: preconditioner"))
 {
   operators::ContourDiscretisation2D discretisation = model.discretisation();
   if (settings_.gaussLegendrePoints > 0) {
@@ -51,8 +51,7 @@ VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP
   const int n = model.numberOfNodes();
   velocity_ = operators::makeInterfaceVelocity2D(model.flow().wall, comm, n, discretisation,
                                                  operators::readSolverParameters(deck.sublist("Solver")));
-  map_ = Teuchos::rcp(
-    new Tpetra::Map<>(2 * static_cast<Tpetra::global_size_t>(n), 0, comm, Tpetra::LocallyReplicated));
+  map_ = Teuchos::rcp(new Tpetra::Map<>(2 * static_cast<Tpetra::global_size_t>(n), 0, comm, Tpetra::LocallyReplicated));
   stage_ = Teuchos::rcp(new operators::StageOperator(map_, [this](const double* x, double* y) { apply(x, y); }));
   if (settings_.preconditioner != StiffPreconditioner2D::None) {
     preconditioner_ = Teuchos::rcp(new StagePreconditioner2D(map_));
@@ -218,8 +217,8 @@ void VelocityJacobian2D::apply(const double* x, double* y)
   }
 }
 
-timeint::LinearSolveReport VelocityJacobian2D::solve(double shift, const std::vector<double>& r,
-                                                     std::vector<double>& x, double residualRms)
+timeint::LinearSolveReport VelocityJacobian2D::solve(double shift, const std::vector<double>& r, std::vector<double>& x,
+                                                     double residualRms)
 {
   timeint::LinearSolveReport report;
   const std::size_t n = r.size();
@@ -229,7 +228,7 @@ timeint::LinearSolveReport VelocityJacobian2D::solve(double shift, const std::ve
   }
   norm = std::sqrt(norm);
   const double target = residualRms * std::sqrt(static_cast<double>(n));
-  if (norm <= target) {   // x = 0 is already close enough
+  if (norm <= target) { // x = 0 is already close enough
     x.assign(n, 0.0);
     report.converged = true;
     report.residualRms = norm / std::sqrt(static_cast<double>(n));
@@ -255,7 +254,7 @@ timeint::LinearSolveReport VelocityJacobian2D::solve(double shift, const std::ve
   parameters.tolerance = std::max(target / norm, 1e-14);
   const bool zeroGuess = std::all_of(x.begin(), x.end(), [](double v) { return v == 0.0; });
   const operators::GmresResult result =
-    operators::solveWithGmres(stage_, preconditioner_, b, solution, parameters, zeroGuess);
+      operators::solveWithGmres(stage_, preconditioner_, b, solution, parameters, zeroGuess);
   const auto xData = solution->getData(0);
   x.assign(xData.begin(), xData.end());
   report.converged = result.converged;
@@ -267,7 +266,7 @@ timeint::LinearSolveReport VelocityJacobian2D::solve(double shift, const std::ve
 const Eigen::MatrixXf& VelocityJacobian2D::approximateJacobian() const
 {
   core::require(!preconditioner_.is_null(), "VelocityJacobian2D: 'Solver/Stiff/Preconditioner' = None forms no "
-                "approximate Jacobian");
+                                            "approximate Jacobian");
   return preconditioner_->jacobian();
 }
 

@@ -16,7 +16,7 @@ DenseLinearisedSystem::DenseLinearisedSystem(JacobianFunction jacobian) : jacobi
 DenseLinearisedSystem DenseLinearisedSystem::finiteDifferences(RightHandSide rhs, StageConstraint constraint)
 {
   return DenseLinearisedSystem([rhs = std::move(rhs), constraint = std::move(constraint)](
-                                 double t, const std::vector<double>& y, std::vector<double>& J) {
+                                   double t, const std::vector<double>& y, std::vector<double>& J) {
     const std::size_t n = y.size();
     std::vector<double> f0(n), f1(n), probe(y);
     rhs(t, y, f0);

@@ -9,12 +9,10 @@ namespace capsula::timeint {
 namespace {
 
 template <typename Map>
-const typename Map::mapped_type& entry(const Map& map, const std::string& key,
-                                       const std::string& source)
+const typename Map::mapped_type& entry(const Map& map, const std::string& key, const std::string& source)
 {
   const auto it = map.find(key);
-  core::require<core::InputError>(it != map.end(), "The time-integration record in '", source,
-                                  "' has no entry '", key,
+  core::require<core::InputError>(it != map.end(), "The time-integration record in '", source, "' has no entry '", key,
                                   "': it was not written by this version of Capsula.");
   return it->second;
 }
@@ -96,11 +94,9 @@ IntegrationState fromRecord(const StateRecord& record, const std::string& source
   const auto fsal = record.arrays.find("first stage derivative");
   if (fsal != record.arrays.end()) {
     s.firstStageDerivative = fsal->second;
-    core::require<core::InputError>(s.firstStageDerivative.size() == s.y.size(),
-                                    "The time-integration record in '", source,
-                                    "' is inconsistent: 'first stage derivative' has ",
-                                    s.firstStageDerivative.size(), " entries, 'state' has ",
-                                    s.y.size(), ".");
+    core::require<core::InputError>(s.firstStageDerivative.size() == s.y.size(), "The time-integration record in '",
+                                    source, "' is inconsistent: 'first stage derivative' has ",
+                                    s.firstStageDerivative.size(), " entries, 'state' has ", s.y.size(), ".");
   }
   const auto stability = record.arrays.find("stability vector");
   if (stability != record.arrays.end()) {

@@ -87,10 +87,10 @@ std::string TimeIntegrator::solveStages(IntegrationState& state, double h, doubl
   combine(state.y, R.m.data(), increments_, s, newState_);
   const std::size_t bad = firstNonFinite(newState_.data(), n);
   if (bad != n) {
-    throw core::NumericalError(core::message(
-      "Time integration failed: the new state is not finite at t = ", shown(tNew), " (entry ", bad, " of ", n, "; ",
-      R.name, " step from t = ", shown(state.time), " with dt = ", shown(h), "). The state at t = ", shown(state.time),
-      " is the last accepted one."));
+    throw core::NumericalError(
+        core::message("Time integration failed: the new state is not finite at t = ", shown(tNew), " (entry ", bad,
+                      " of ", n, "; ", R.name, " step from t = ", shown(state.time), " with dt = ", shown(h),
+                      "). The state at t = ", shown(state.time), " is the last accepted one."));
   }
   if (domainCheck_) {
     domainCheck_(newState_);
@@ -125,7 +125,8 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
   report.stiff = true;
   std::vector<double> difference(static_cast<std::size_t>(s));
   for (int i = 0; i < s; ++i) {
-    difference[static_cast<std::size_t>(i)] = R.m[static_cast<std::size_t>(i)] - R.mEmbedded[static_cast<std::size_t>(i)];
+    difference[static_cast<std::size_t>(i)] =
+        R.m[static_cast<std::size_t>(i)] - R.mEmbedded[static_cast<std::size_t>(i)];
   }
   for (;;) {
     const double proposed = trial                ? trialStep
@@ -155,9 +156,9 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
     }
     if (!unsolved.empty() || !outside.empty()) {
       core::require<core::NumericalError>(
-        settings_.adaptive, "Time integration failed: ", unsolved.empty() ? outside : unsolved, " in the fixed ",
-        R.name, " step from t = ", shown(state.time), " (dt = ", shown(h), "). The state at t = ",
-        shown(state.time), " is the last accepted one.");
+          settings_.adaptive, "Time integration failed: ", unsolved.empty() ? outside : unsolved, " in the fixed ",
+          R.name, " step from t = ", shown(state.time), " (dt = ", shown(h), "). The state at t = ", shown(state.time),
+          " is the last accepted one.");
       ++report.rejectedAttempts;
       ++stats.rejectedSteps;
       // A solve that fails is tried again with a quarter of the step (W closer to I); a
@@ -166,15 +167,16 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
       if (state.proposedStep < settings_.minimumStep) {
         if (!unsolved.empty()) {
           throw core::NumericalError(core::message(
-            "Time integration failed at t = ", shown(state.time), ": ", unsolved, ", for every step down to ",
-            shown(h), " (below that: 'Time integration/Minimum step' = ", settings_.minimumStep,
-            "). The state at t = ", shown(state.time), " is the last accepted one. Allow the linear solver more work ",
-            system_->settingsHint(), ", or relax 'Time integration/Linear tolerance'."));
+              "Time integration failed at t = ", shown(state.time), ": ", unsolved, ", for every step down to ",
+              shown(h), " (below that: 'Time integration/Minimum step' = ", settings_.minimumStep,
+              "). The state at t = ", shown(state.time),
+              " is the last accepted one. Allow the linear solver more work ", system_->settingsHint(),
+              ", or relax 'Time integration/Linear tolerance'."));
         }
         throw core::NumericalError(core::message(
-          "Time integration failed: ", outside, " at t = ", shown(state.time), " for every step down to ", shown(h),
-          " (below that: 'Time integration/Minimum step' = ", settings_.minimumStep, "). The state at t = ",
-          shown(state.time), " is the last accepted one."));
+            "Time integration failed: ", outside, " at t = ", shown(state.time), " for every step down to ", shown(h),
+            " (below that: 'Time integration/Minimum step' = ", settings_.minimumStep,
+            "). The state at t = ", shown(state.time), " is the last accepted one."));
       }
       continue;
     }
@@ -200,11 +202,11 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
       state.proposedStep = decision.nextStep;
       if (state.proposedStep < settings_.minimumStep) {
         throw core::NumericalError(core::message(
-          "Time integration failed: the step size collapsed to ", shown(state.proposedStep),
-          " (below Time integration/Minimum step = ", settings_.minimumStep, ") at t = ", shown(state.time),
-          " after ", report.rejectedAttempts, " rejected attempts (last error estimate ", errorNorm, ", ", R.name,
-          " tolerance ", settings_.tolerance, "). The state at t = ", shown(state.time),
-          " is the last accepted one."));
+            "Time integration failed: the step size collapsed to ", shown(state.proposedStep),
+            " (below Time integration/Minimum step = ", settings_.minimumStep, ") at t = ", shown(state.time),
+            " after ", report.rejectedAttempts, " rejected attempts (last error estimate ", errorNorm, ", ", R.name,
+            " tolerance ", settings_.tolerance, "). The state at t = ", shown(state.time),
+            " is the last accepted one."));
       }
       continue;
     }
@@ -220,7 +222,7 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
     ++stats.stiffSteps;
     stats.stiffRhsEvaluations += stats.rhsEvaluations - rhsBefore;
     if (state.stepsSinceStabilityEstimate < std::numeric_limits<std::int64_t>::max()) {
-      ++state.stepsSinceStabilityEstimate;   // Auto re-estimates the explicit limit now and then
+      ++state.stepsSinceStabilityEstimate; // Auto re-estimates the explicit limit now and then
     }
     stats.smallestStep = std::min(stats.smallestStep, h);
     stats.largestStep = std::max(stats.largestStep, h);

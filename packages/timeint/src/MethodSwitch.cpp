@@ -68,14 +68,15 @@ void TimeIntegrator::countStabilityHolds(IntegrationState& state, const StepRepo
 
 bool TimeIntegrator::tryStiffMethod(IntegrationState& state, double tStop, StepReport& report)
 {
-  const std::int64_t needed = settings_.switchSteps * (std::int64_t{1} << std::min(state.stiffTrialsFailed, maximumBackOff));
+  const std::int64_t needed =
+      settings_.switchSteps * (std::int64_t{1} << std::min(state.stiffTrialsFailed, maximumBackOff));
   if (state.stiffnessHeldSteps < needed) {
     return false;
   }
   const double limit = state.stabilityStep;
   const double trialStep = settings_.switchMargin * stiffStepCost(state) / explicitStepCost() * limit;
   if (!(trialStep <= settings_.maximumStep) || trialStep > tStop - state.time) {
-    return false;   // no room for the trial before the next output: keep counting
+    return false; // no room for the trial before the next output: keep counting
   }
   state.stiffnessHeldSteps = 0;
   const double previousError = state.previousErrorNorm;

@@ -47,8 +47,8 @@ void transformRosenbrockTableau(RosenbrockTableau& t)
   const int s = t.stages;
   const auto ss = static_cast<std::size_t>(s * s);
   core::require(s >= 1 && t.alpha.size() == ss && t.gammaOffDiagonal.size() == ss &&
-                  t.b.size() == static_cast<std::size_t>(s) && t.bEmbedded.size() == static_cast<std::size_t>(s) &&
-                  t.gamma > 0.0,
+                    t.b.size() == static_cast<std::size_t>(s) && t.bEmbedded.size() == static_cast<std::size_t>(s) &&
+                    t.gamma > 0.0,
                 "internal: inconsistent Rosenbrock tableau ", t.name);
   std::vector<double> Gamma = t.gammaOffDiagonal;
   for (int i = 0; i < s; ++i) {
@@ -70,7 +70,7 @@ void transformRosenbrockTableau(RosenbrockTableau& t)
   for (int i = 0; i < s; ++i) {
     for (int j = 0; j < i; ++j) {
       double sum = 0.0;
-      for (int k = j; k < i; ++k) {   // alpha is strictly lower, Gamma^-1 lower
+      for (int k = j; k < i; ++k) { // alpha is strictly lower, Gamma^-1 lower
         sum += t.alpha[static_cast<std::size_t>(i * s + k)] * inverse[static_cast<std::size_t>(k * s + j)];
       }
       t.a[static_cast<std::size_t>(i * s + j)] = sum;
@@ -110,14 +110,25 @@ RosenbrockTableau ros34pw2()
   t.order = 3;
   t.embeddedOrder = 2;
   t.gamma = 4.3586652150845900e-1;
-  t.alpha = {0.0, 0.0, 0.0, 0.0,
-             8.7173304301691801e-1, 0.0, 0.0, 0.0,
-             8.4457060015369423e-1, -1.1299064236484185e-1, 0.0, 0.0,
-             0.0, 0.0, 1.0, 0.0};
-  t.gammaOffDiagonal = {0.0, 0.0, 0.0, 0.0,
-                        -8.7173304301691801e-1, 0.0, 0.0, 0.0,
-                        -9.0338057013044082e-1, 5.4180672388095326e-2, 0.0, 0.0,
-                        2.4212380706095346e-1, -1.2232505839045147, 5.4526025533510214e-1, 0.0};
+  t.alpha = {
+      0.0, 0.0, 0.0, 0.0, 8.7173304301691801e-1, 0.0, 0.0, 0.0, 8.4457060015369423e-1, -1.1299064236484185e-1, 0.0, 0.0,
+      0.0, 0.0, 1.0, 0.0};
+  t.gammaOffDiagonal = {0.0,
+                        0.0,
+                        0.0,
+                        0.0,
+                        -8.7173304301691801e-1,
+                        0.0,
+                        0.0,
+                        0.0,
+                        -9.0338057013044082e-1,
+                        5.4180672388095326e-2,
+                        0.0,
+                        0.0,
+                        2.4212380706095346e-1,
+                        -1.2232505839045147,
+                        5.4526025533510214e-1,
+                        0.0};
   t.b = {2.4212380706095346e-1, -1.2232505839045147, 1.5452602553351020, 4.3586652150845900e-1};
   t.bEmbedded = {3.7810903145819369e-1, -9.6042292212423178e-2, 0.5, 2.1793326075422950e-1};
   transformRosenbrockTableau(t);

@@ -18,7 +18,7 @@ void TimeIntegrator::estimateStabilityStep(IntegrationState& state)
   const std::size_t n = state.y.size();
   std::vector<double>& v = state.stabilityVector;
   int iterations = 3;
-  if (v.size() != n) {   // cold start: a fixed vector with every mode in it
+  if (v.size() != n) { // cold start: a fixed vector with every mode in it
     v.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       v[i] = std::sin(0.7 * static_cast<double>(i) + 0.3);
@@ -51,7 +51,7 @@ void TimeIntegrator::estimateStabilityStep(IntegrationState& state)
       growth += v[i] * v[i];
     }
     rho = std::sqrt(growth);
-    if (!(rho > 0.0)) {   // f does not depend on y (or not finitely): no limit
+    if (!(rho > 0.0)) { // f does not depend on y (or not finitely): no limit
       v.assign(n, 0.0);
       v[0] = 1.0;
       break;

@@ -19,14 +19,13 @@ std::string toString(SteadyStateCriterion criterion)
 
 SteadyStateCriterion steadyStateCriterionFromString(const std::string& word)
 {
-  for (const auto c : {SteadyStateCriterion::Off, SteadyStateCriterion::MaxChangeRate,
-                       SteadyStateCriterion::L2Change}) {
+  for (const auto c :
+       {SteadyStateCriterion::Off, SteadyStateCriterion::MaxChangeRate, SteadyStateCriterion::L2Change}) {
     if (word == toString(c)) {
       return c;
     }
   }
-  throw core::InputError("Unknown steady-state criterion '" + word +
-                         "': use one of Off, MaxChangeRate, L2Change.");
+  throw core::InputError("Unknown steady-state criterion '" + word + "': use one of Off, MaxChangeRate, L2Change.");
 }
 
 } // namespace capsula::timeint

@@ -36,14 +36,12 @@ void declareTimeIntegrationParameters(Teuchos::ParameterList& list, bool stabili
               atLeast(0.0));
   declareBool(list, "Local extrapolation", false,
               "RKF45 only: advance with the 5th-order solution instead of the thesis's 4th.");
-  declareReal(list, "Initial step", 1.0e-3,
-              "First step size tried; the fixed step size for RK4.", greaterThan(0.0));
+  declareReal(list, "Initial step", 1.0e-3, "First step size tried; the fixed step size for RK4.", greaterThan(0.0));
   declareReal(list, "Minimum step", 1.0e-12,
               "The run fails (keeping the last good state) if the controller needs a smaller "
               "step than this.",
               greaterThan(0.0));
-  declareReal(list, "Maximum step", 1.0, "Largest step the controller may take.",
-              greaterThan(0.0));
+  declareReal(list, "Maximum step", 1.0, "Largest step the controller may take.", greaterThan(0.0));
   declareBool(list, "Stability limit", stabilityLimitDefault,
               "Adaptive methods: keep every step within the explicit method's stability limit, "
               "0.8 r / rho, rho the fastest decay rate of the system (estimated by power "
@@ -98,8 +96,8 @@ TimeIntegrationSettings timeIntegrationSettings(const Teuchos::ParameterList& li
   s.switchSteps = list.get<int>("Auto switch steps");
   s.steadyTolerance = list.get<double>("Steady tolerance");
   s.steadyCriterion = s.steadyTolerance > 0.0
-                        ? steadyStateCriterionFromString(list.get<std::string>("Steady criterion"))
-                        : SteadyStateCriterion::Off;
+                          ? steadyStateCriterionFromString(list.get<std::string>("Steady criterion"))
+                          : SteadyStateCriterion::Off;
   return s;
 }
 
@@ -113,8 +111,8 @@ std::string describeTimeIntegration(const TimeIntegrationSettings& s)
     return line.str();
   case Method::ROS34PW2:
   case Method::ROS2:
-    line << " (Rosenbrock-W, order " << (s.method == Method::ROS2 ? 2 : 3) << ", L-stable), tolerance "
-         << s.tolerance << "; stage solves to " << s.linearTolerance << " x tolerance";
+    line << " (Rosenbrock-W, order " << (s.method == Method::ROS2 ? 2 : 3) << ", L-stable), tolerance " << s.tolerance
+         << "; stage solves to " << s.linearTolerance << " x tolerance";
     return line.str();
   case Method::Auto:
     line << ": RKF45 with the stability limit; after " << s.switchSteps

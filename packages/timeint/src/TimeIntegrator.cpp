@@ -18,9 +18,8 @@ namespace {
 /// out_i = y_i + h * sum_{j < count} w_j k_j,i, skipping zero weights (so a FSAL method's
 /// last stage state and its new solution, which differ only by a zero weight, agree bit
 /// for bit).
-inline void combineStages(const double* y, double h, const double* w,
-                          const std::vector<std::vector<double>>& k, int count, double* out,
-                          std::size_t n)
+inline void combineStages(const double* y, double h, const double* w, const std::vector<std::vector<double>>& k,
+                          int count, double* out, std::size_t n)
 {
   for (std::size_t i = 0; i < n; ++i) {
     double sum = 0.0;
@@ -34,8 +33,8 @@ inline void combineStages(const double* y, double h, const double* w,
 }
 
 /// e_i = h * sum_j d_j k_j,i.
-inline void errorEstimate(double h, const double* d, const std::vector<std::vector<double>>& k,
-                          int count, double* e, std::size_t n)
+inline void errorEstimate(double h, const double* d, const std::vector<std::vector<double>>& k, int count, double* e,
+                          std::size_t n)
 {
   for (std::size_t i = 0; i < n; ++i) {
     double sum = 0.0;
@@ -96,19 +95,16 @@ TimeIntegrationSettings checked(TimeIntegrationSettings s)
   require<InputError>(finitePositive(s.tolerance), "Time integration/Tolerance must be a real number > 0, got ",
                       s.tolerance, ".");
   require<InputError>(std::isfinite(s.relativeTolerance) && s.relativeTolerance >= 0.0,
-                      "Time integration/Relative tolerance must be a real number >= 0, got ",
-                      s.relativeTolerance, ".");
-  require<InputError>(finitePositive(s.initialStep), "Time integration/Initial step must be > 0, got ",
-                      s.initialStep, ".");
-  require<InputError>(finitePositive(s.minimumStep), "Time integration/Minimum step must be > 0, got ",
-                      s.minimumStep, ".");
-  require<InputError>(finitePositive(s.maximumStep), "Time integration/Maximum step must be > 0, got ",
-                      s.maximumStep, ".");
-  require<InputError>(std::isfinite(s.endTime), "Time integration/End time must be finite, got ",
-                      s.endTime, ".");
+                      "Time integration/Relative tolerance must be a real number >= 0, got ", s.relativeTolerance, ".");
+  require<InputError>(finitePositive(s.initialStep), "Time integration/Initial step must be > 0, got ", s.initialStep,
+                      ".");
+  require<InputError>(finitePositive(s.minimumStep), "Time integration/Minimum step must be > 0, got ", s.minimumStep,
+                      ".");
+  require<InputError>(finitePositive(s.maximumStep), "Time integration/Maximum step must be > 0, got ", s.maximumStep,
+                      ".");
+  require<InputError>(std::isfinite(s.endTime), "Time integration/End time must be finite, got ", s.endTime, ".");
   require<InputError>(std::isfinite(s.steadyTolerance) && s.steadyTolerance >= 0.0,
-                      "Time integration/Steady tolerance must be >= 0 (0 = off), got ",
-                      s.steadyTolerance, ".");
+                      "Time integration/Steady tolerance must be >= 0 (0 = off), got ", s.steadyTolerance, ".");
   require<InputError>(!s.localExtrapolation || s.method == Method::RKF45,
                       "Time integration/Local extrapolation applies to Method RKF45 only (Method is ",
                       toString(s.method), "): set it to false.");
@@ -127,8 +123,8 @@ TimeIntegrationSettings checked(TimeIntegrationSettings s)
   }
   if (s.adaptive) {
     require<InputError>(s.minimumStep <= s.initialStep && s.initialStep <= s.maximumStep,
-                        "Time integration: need Minimum step <= Initial step <= Maximum step, got ",
-                        s.minimumStep, ", ", s.initialStep, ", ", s.maximumStep,
+                        "Time integration: need Minimum step <= Initial step <= Maximum step, got ", s.minimumStep,
+                        ", ", s.initialStep, ", ", s.maximumStep,
                         ". Change Time integration/Initial step or the bounds.");
   }
   if (s.steadyTolerance == 0.0) {
@@ -140,17 +136,15 @@ TimeIntegrationSettings checked(TimeIntegrationSettings s)
 } // namespace
 
 TimeIntegrator::TimeIntegrator(TimeIntegrationSettings settings, RightHandSide rhs)
-  : settings_(checked(std::move(settings))),
-    rhs_(std::move(rhs)),
-    tableau_(tableauFor(settings_)),
-    rosenbrock_(rosenbrockFor(settings_)),
-    thesisController_(settings_.tolerance),
-    piController_(tableau_.hasErrorEstimate() ? tableau_.errorEstimateOrder() : 1,
-                  settings_.piController),
-    rosenbrockController_(rosenbrock_.errorEstimateOrder(), rosenbrockControllerFor(rosenbrock_))
+    : settings_(checked(std::move(settings))),
+      rhs_(std::move(rhs)),
+      tableau_(tableauFor(settings_)),
+      rosenbrock_(rosenbrockFor(settings_)),
+      thesisController_(settings_.tolerance),
+      piController_(tableau_.hasErrorEstimate() ? tableau_.errorEstimateOrder() : 1, settings_.piController),
+      rosenbrockController_(rosenbrock_.errorEstimateOrder(), rosenbrockControllerFor(rosenbrock_))
 {
-  core::require<core::InputError>(static_cast<bool>(rhs_),
-                                  "internal: the time integrator needs a right-hand side");
+  core::require<core::InputError>(static_cast<bool>(rhs_), "internal: the time integrator needs a right-hand side");
   if (tableau_.hasErrorEstimate()) {
     for (int j = 0; j < tableau_.stages; ++j) {
       const auto jj = static_cast<std::size_t>(j);
@@ -206,8 +200,7 @@ IntegrationState TimeIntegrator::start(double t0, std::vector<double> y0) const
   s.outputOrigin = t0;
   s.nextOutput = 0;
   const std::size_t bad = firstNonFinite(s.y.data(), s.y.size());
-  core::require<core::NumericalError>(bad == s.y.size(),
-                                      "Time integration: the initial state is not finite (entry ",
+  core::require<core::NumericalError>(bad == s.y.size(), "Time integration: the initial state is not finite (entry ",
                                       bad, " of ", s.y.size(), ") at t = ", t0, ".");
   return s;
 }
@@ -219,27 +212,26 @@ void TimeIntegrator::evaluate(double t, const std::vector<double>& y, std::vecto
   dydt.resize(n);
   rhs_(t, y, dydt);
   ++state.statistics.rhsEvaluations;
-  core::require(dydt.size() == n, "internal: the right-hand side resized its output from ", n,
-                " to ", dydt.size(), " entries");
+  core::require(dydt.size() == n, "internal: the right-hand side resized its output from ", n, " to ", dydt.size(),
+                " entries");
   if (constraint_) {
     constraint_(t, y, dydt);
   }
   const std::size_t bad = firstNonFinite(dydt.data(), n);
   if (bad != n) {
-    throw core::NumericalError(core::message(
-      "Time integration failed: the right-hand side is not finite at t = ", shown(t), " (entry ",
-      bad, " of ", n, " is ", dydt[bad], "; stage ", stage + 1, " of the ", activeMethodName(state),
-      " step from t = ", shown(state.time), " with dt = ", shown(step), "). The state at t = ",
-      shown(state.time), " is the last accepted one."));
+    throw core::NumericalError(
+        core::message("Time integration failed: the right-hand side is not finite at t = ", shown(t), " (entry ", bad,
+                      " of ", n, " is ", dydt[bad], "; stage ", stage + 1, " of the ", activeMethodName(state),
+                      " step from t = ", shown(state.time), " with dt = ", shown(step),
+                      "). The state at t = ", shown(state.time), " is the last accepted one."));
   }
 }
 
 StepReport TimeIntegrator::step(IntegrationState& state, double tStop)
 {
-  core::require(tStop > state.time, "internal: TimeIntegrator::step needs tStop (", tStop,
-                ") > t (", state.time, ")");
-  core::require<core::InputError>(!needsLinearisedSystem(settings_.method) || system_,
-                                  "Time integration/Method ", toString(settings_.method),
+  core::require(tStop > state.time, "internal: TimeIntegrator::step needs tStop (", tStop, ") > t (", state.time, ")");
+  core::require<core::InputError>(!needsLinearisedSystem(settings_.method) || system_, "Time integration/Method ",
+                                  toString(settings_.method),
                                   " needs the Jacobian of the system (a LinearisedSystem), which this model "
                                   "does not provide: use an explicit method (RKF45, DormandPrince45, RK4).");
   // On failure the state is the last accepted one: restore the controller's proposal too.
@@ -250,9 +242,9 @@ StepReport TimeIntegrator::step(IntegrationState& state, double tStop)
   try {
     StepReport report;
     if (settings_.method == Method::Auto && state.stiffActive) {
-      reconsiderExplicitMethod(state, report);   // may hand this step back to RKF45
+      reconsiderExplicitMethod(state, report); // may hand this step back to RKF45
     } else if (settings_.method == Method::Auto && tryStiffMethod(state, tStop, report)) {
-      return report;   // the trial step of ROS34PW2 was accepted
+      return report; // the trial step of ROS34PW2 was accepted
     }
     const std::string reason = report.switchReason;
     report = usesStiffMethod(state) ? attemptLinearlyImplicit(state, tStop) : attemptUntilAccepted(state, tStop);
@@ -286,16 +278,15 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
   } else {
     evaluate(state.time, state.y, slopes_[0], state, state.proposedStep, 0);
   }
-  const bool limited = settings_.adaptive && settings_.stabilityLimit;   // always for Auto
-  if (limited && (state.stabilityVector.size() != n ||
-                  state.stepsSinceStabilityEstimate >= settings_.stabilityInterval)) {
+  const bool limited = settings_.adaptive && settings_.stabilityLimit; // always for Auto
+  if (limited &&
+      (state.stabilityVector.size() != n || state.stepsSinceStabilityEstimate >= settings_.stabilityInterval)) {
     estimateStabilityStep(state);
   }
 
   StepReport report;
   for (;;) {
-    double proposed =
-      settings_.adaptive ? std::min(state.proposedStep, settings_.maximumStep) : state.proposedStep;
+    double proposed = settings_.adaptive ? std::min(state.proposedStep, settings_.maximumStep) : state.proposedStep;
     if (limited) {
       proposed = std::min(proposed, state.stabilityStep);
     }
@@ -303,12 +294,12 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
     double tNew = state.time + h;
     if (tStop - state.time <= proposed * (1.0 + stretchFraction)) {
       h = tStop - state.time;
-      tNew = tStop;   // exactly, whatever the rounding of time + h
+      tNew = tStop; // exactly, whatever the rounding of time + h
     }
     report.shortened = h < proposed;
     report.heldByStabilityLimit = limited && proposed == state.stabilityStep;
 
-    std::string outside;   // why a stage state or the result left the model's domain, or ""
+    std::string outside; // why a stage state or the result left the model's domain, or ""
     try {
       for (int i = 1; i < stages; ++i) {
         combineStages(state.y.data(), h, &tableau_.a[static_cast<std::size_t>(i * stages)], slopes_, i,
@@ -323,10 +314,10 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
       combineStages(state.y.data(), h, tableau_.b.data(), slopes_, stages, newState_.data(), n);
       const std::size_t bad = firstNonFinite(newState_.data(), n);
       if (bad != n) {
-        throw core::NumericalError(core::message(
-          "Time integration failed: the new state is not finite at t = ", shown(tNew), " (entry ",
-          bad, " of ", n, "; ", tableau_.name, " step from t = ", shown(state.time), " with dt = ",
-          shown(h), "). The state at t = ", shown(state.time), " is the last accepted one."));
+        throw core::NumericalError(
+            core::message("Time integration failed: the new state is not finite at t = ", shown(tNew), " (entry ", bad,
+                          " of ", n, "; ", tableau_.name, " step from t = ", shown(state.time), " with dt = ", shown(h),
+                          "). The state at t = ", shown(state.time), " is the last accepted one."));
       }
       if (domainCheck_) {
         domainCheck_(newState_);
@@ -335,18 +326,18 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
       outside = e.what();
     }
     if (!outside.empty()) {
-      core::require<core::NumericalError>(
-        settings_.adaptive, "Time integration failed: ", outside, " in the fixed ", tableau_.name,
-        " step from t = ", shown(state.time), " (dt = ", shown(h),
-        "); use a smaller 'Time integration/Initial step'. The state at t = ", shown(state.time),
-        " is the last accepted one.");
+      core::require<core::NumericalError>(settings_.adaptive, "Time integration failed: ", outside, " in the fixed ",
+                                          tableau_.name, " step from t = ", shown(state.time), " (dt = ", shown(h),
+                                          "); use a smaller 'Time integration/Initial step'. The state at t = ",
+                                          shown(state.time), " is the last accepted one.");
       ++report.rejectedAttempts;
       ++stats.rejectedSteps;
       state.proposedStep = 0.5 * h;
-      core::require<core::NumericalError>(
-        state.proposedStep >= settings_.minimumStep, "Time integration failed: ", outside, " at t = ",
-        shown(state.time), " for every step down to ", shown(h), " (below that: 'Time integration/Minimum step' = ",
-        settings_.minimumStep, "). The state at t = ", shown(state.time), " is the last accepted one.");
+      core::require<core::NumericalError>(state.proposedStep >= settings_.minimumStep,
+                                          "Time integration failed: ", outside, " at t = ", shown(state.time),
+                                          " for every step down to ", shown(h),
+                                          " (below that: 'Time integration/Minimum step' = ", settings_.minimumStep,
+                                          "). The state at t = ", shown(state.time), " is the last accepted one.");
       continue;
     }
 
@@ -355,12 +346,11 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
     if (settings_.adaptive) {
       errorEstimate(h, errorWeights_.data(), slopes_, stages, errorVector_.data(), n);
       if (settings_.method == Method::DormandPrince45) {
-        errorNorm = scaledRmsNorm(errorVector_.data(), state.y.data(), newState_.data(), n,
-                                  settings_.tolerance, settings_.relativeTolerance);
-        decision = piController_.decide(h, errorNorm, state.previousErrorNorm,
-                                        report.rejectedAttempts > 0);
+        errorNorm = scaledRmsNorm(errorVector_.data(), state.y.data(), newState_.data(), n, settings_.tolerance,
+                                  settings_.relativeTolerance);
+        decision = piController_.decide(h, errorNorm, state.previousErrorNorm, report.rejectedAttempts > 0);
       } else {
-        errorNorm = maxNorm(errorVector_.data(), n);   // eq 3.50's |x5 - x4|
+        errorNorm = maxNorm(errorVector_.data(), n); // eq 3.50's |x5 - x4|
         decision = thesisController_.decide(h, errorNorm, report.rejectedAttempts > 0);
       }
     }
@@ -370,15 +360,15 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
       ++stats.rejectedSteps;
       state.proposedStep = decision.nextStep;
       if (state.proposedStep < settings_.minimumStep) {
-        throw core::NumericalError(core::message(
-          "Time integration failed: the step size collapsed to ", shown(state.proposedStep),
-          " (below Time integration/Minimum step = ", settings_.minimumStep, ") at t = ",
-          shown(state.time), " after ", report.rejectedAttempts,
-          report.rejectedAttempts == 1 ? " rejected attempt" : " rejected attempts",
-          " (last error estimate ", errorNorm, ", ", tableau_.name, " tolerance ",
-          settings_.tolerance, "). The state at t = ", shown(state.time),
-          " is the last accepted one. The right-hand side may be non-smooth there, or the "
-          "tolerance too tight for round-off."));
+        throw core::NumericalError(
+            core::message("Time integration failed: the step size collapsed to ", shown(state.proposedStep),
+                          " (below Time integration/Minimum step = ", settings_.minimumStep,
+                          ") at t = ", shown(state.time), " after ", report.rejectedAttempts,
+                          report.rejectedAttempts == 1 ? " rejected attempt" : " rejected attempts",
+                          " (last error estimate ", errorNorm, ", ", tableau_.name, " tolerance ", settings_.tolerance,
+                          "). The state at t = ", shown(state.time),
+                          " is the last accepted one. The right-hand side may be non-smooth there, or the "
+                          "tolerance too tight for round-off."));
       }
       continue;
     }
@@ -387,8 +377,7 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
     report.stepSize = h;
     report.errorNorm = errorNorm;
     if (settings_.steadyCriterion != SteadyStateCriterion::Off) {
-      report.steadyMeasure =
-        steadyStateMeasure(settings_.steadyCriterion, state.y.data(), newState_.data(), n, h);
+      report.steadyMeasure = steadyStateMeasure(settings_.steadyCriterion, state.y.data(), newState_.data(), n, h);
       report.steady = report.steadyMeasure < settings_.steadyTolerance;
     }
     ++stats.acceptedSteps;
@@ -411,8 +400,7 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
     // A step adjusted to land on tStop says little about the step size wanted elsewhere:
     // keep the proposal it was cut from, and the PI memory.
     if (!report.shortened) {
-      state.proposedStep = settings_.adaptive ? std::min(decision.nextStep, settings_.maximumStep)
-                                              : decision.nextStep;
+      state.proposedStep = settings_.adaptive ? std::min(decision.nextStep, settings_.maximumStep) : decision.nextStep;
       if (settings_.adaptive && settings_.method == Method::DormandPrince45) {
         state.previousErrorNorm = piController_.rememberedError(errorNorm);
       }

@@ -26,8 +26,7 @@ double TimeIntegrator::endTime(const OutputSchedule& schedule) const
   return schedule.endTime ? *schedule.endTime : settings_.endTime;
 }
 
-double TimeIntegrator::outputTime(double origin, std::int64_t index,
-                                  const OutputSchedule& schedule) const
+double TimeIntegrator::outputTime(double origin, std::int64_t index, const OutputSchedule& schedule) const
 {
   if (schedule.times) {
     return index == 0 ? origin : schedule.times(index);
@@ -88,7 +87,7 @@ StopReason TimeIntegrator::integrateWith(IntegrationState& state, const OutputSc
     return stop;
   };
   if (state.nextOutput == 0) {
-    state.nextOutput = 1;   // counted before the observers see (and may checkpoint) the state
+    state.nextOutput = 1; // counted before the observers see (and may checkpoint) the state
     if (schedule.observeStart && notify(OutputReason::Start)) {
       return StopReason::Requested;
     }

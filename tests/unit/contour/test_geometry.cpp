@@ -22,7 +22,6 @@ using capsula::contour::ContourOptions;
 using capsula::contour::ContourPoint;
 using capsula::contour::Parametrisation;
 
-
 using capsula::testing::fittedOrder;
 
 const std::vector<int> refinements{16, 32, 64, 128, 256};
@@ -33,10 +32,7 @@ struct Star {
   double r(double t) const { return 1.0 + eps * std::cos(3.0 * t); }
   double dr(double t) const { return -3.0 * eps * std::sin(3.0 * t); }
   double ddr(double t) const { return -9.0 * eps * std::cos(3.0 * t); }
-  Eigen::Vector2d position(double t) const
-  {
-    return r(t) * Eigen::Vector2d(std::cos(t), std::sin(t));
-  }
+  Eigen::Vector2d position(double t) const { return r(t) * Eigen::Vector2d(std::cos(t), std::sin(t)); }
   double curvature(double t) const
   {
     const double a = r(t), b = dr(t), c = ddr(t);
@@ -107,8 +103,7 @@ TEST(ContourGeometry, PeriodicCirclePositionConvergesAtFourthOrder)
     for (int k = 0; k < n; ++k) {
       for (int j = 0; j < 8; ++j) {
         const ContourPoint p = circle.pointAt(k, j / 8.0);
-        worstPosition = std::max(
-            worstPosition, std::abs((p.position - Eigen::Vector2d(0.2, -0.1)).norm() - radius));
+        worstPosition = std::max(worstPosition, std::abs((p.position - Eigen::Vector2d(0.2, -0.1)).norm() - radius));
         worstCurvature = std::max(worstCurvature, std::abs(p.curvature - 1.0 / radius));
       }
     }
@@ -122,8 +117,8 @@ TEST(ContourGeometry, PeriodicCirclePositionConvergesAtFourthOrder)
   const double positionOrder = fittedOrder(refinements, positionError);
   const double curvatureOrder = fittedOrder(refinements, curvatureError);
   const double lengthOrder = fittedOrder(refinements, lengthError);
-  std::printf("  fitted orders: position %.2f, curvature %.2f, length %.2f\n", positionOrder,
-              curvatureOrder, lengthOrder);
+  std::printf("  fitted orders: position %.2f, curvature %.2f, length %.2f\n", positionOrder, curvatureOrder,
+              lengthOrder);
   EXPECT_GT(positionOrder, 3.8);  // cubic splines interpolate at O(h^4)
   EXPECT_GT(curvatureOrder, 1.9); // second derivatives of a cubic spline: O(h^2)
   EXPECT_GT(lengthOrder, 3.8);
@@ -146,9 +141,8 @@ TEST(ContourGeometry, StarCurvatureConvergesIncludingConcaveParts)
         double theta = std::atan2(p.position.y(), p.position.x());
         for (int it = 0; it < 20; ++it) {
           const Eigen::Vector2d d = star.position(theta) - p.position;
-          const Eigen::Vector2d tangent(
-              star.dr(theta) * std::cos(theta) - star.r(theta) * std::sin(theta),
-              star.dr(theta) * std::sin(theta) + star.r(theta) * std::cos(theta));
+          const Eigen::Vector2d tangent(star.dr(theta) * std::cos(theta) - star.r(theta) * std::sin(theta),
+                                        star.dr(theta) * std::sin(theta) + star.r(theta) * std::cos(theta));
           theta -= d.dot(tangent) / tangent.squaredNorm();
         }
         worstPosition = std::max(worstPosition, (star.position(theta) - p.position).norm());
@@ -159,8 +153,8 @@ TEST(ContourGeometry, StarCurvatureConvergesIncludingConcaveParts)
     EXPECT_TRUE(sawConcave) << "the star is concave between its lobes: kappa < 0 there";
     curvatureError.push_back(worstCurvature);
     positionError.push_back(worstPosition);
-    std::printf("  star N = %3d: max position error %.3e, max curvature error %.3e\n", n,
-                worstPosition, worstCurvature);
+    std::printf("  star N = %3d: max position error %.3e, max curvature error %.3e\n", n, worstPosition,
+                worstCurvature);
   }
   const double positionOrder = fittedOrder(starRefinements, positionError);
   const double curvatureOrder = fittedOrder(starRefinements, curvatureError);
@@ -204,9 +198,7 @@ TEST(ContourGeometry, ArcLengthIsTheSplineLength)
   for (int k = 0; k < contour.numberOfSegments(); ++k) {
     double segment = 0.0;
     for (int j = 0; j < 4000; ++j) {
-      segment +=
-          (contour.pointAt(k, (j + 1) / 4000.0).position - contour.pointAt(k, j / 4000.0).position)
-              .norm();
+      segment += (contour.pointAt(k, (j + 1) / 4000.0).position - contour.pointAt(k, j / 4000.0).position).norm();
     }
     EXPECT_NEAR(contour.segmentLength(k), segment, 1e-8);
     EXPECT_NEAR(contour.arcLengthAt(k, 1.0), contour.knotArcLengths()[k + 1], 1e-14);
@@ -245,8 +237,7 @@ TEST(ContourGeometry, TetheredContourHasNaturalEndsAtTheTether)
     EXPECT_NEAR(end.curvature, 0.0, 1e-12);   // eq A.32
     double worstEnd = 0.0, worstMiddle = 0.0;
     for (int k = 0; k < n; ++k) {
-      const double radial =
-          std::abs((circle.pointAt(k, 0.5).position - Eigen::Vector2d(0.0, 1.0)).norm() - 1.0);
+      const double radial = std::abs((circle.pointAt(k, 0.5).position - Eigen::Vector2d(0.0, 1.0)).norm() - 1.0);
       if (k < n / 4 || k >= 3 * n / 4) {
         worstEnd = std::max(worstEnd, radial);
       } else {
@@ -255,8 +246,8 @@ TEST(ContourGeometry, TetheredContourHasNaturalEndsAtTheTether)
     }
     endError.push_back(worstEnd);
     middleError.push_back(worstMiddle);
-    std::printf("  tethered circle N = %3d: radial error near tether %.3e, far from it %.3e\n", n,
-                worstEnd, worstMiddle);
+    std::printf("  tethered circle N = %3d: radial error near tether %.3e, far from it %.3e\n", n, worstEnd,
+                worstMiddle);
   }
   // The zero-curvature ends cost accuracy near the tether only: O(h^2) there, while the
   // end effect decays geometrically away from it, leaving O(h^4) far from it.

@@ -14,7 +14,6 @@ namespace {
 
 using namespace capsula::contour;
 
-
 } // namespace
 
 TEST(ContourLocation, ArcLengthOnACircleGivesTheAngle)

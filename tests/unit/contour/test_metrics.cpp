@@ -19,7 +19,6 @@ namespace {
 using capsula::contour::Contour;
 using capsula::contour::EllipseShape;
 
-
 using capsula::testing::fittedOrder;
 
 /// Perimeter of the ellipse with semi-axes a, b by the arithmetic-geometric mean:
@@ -77,8 +76,7 @@ TEST(ContourMetrics, EllipseAreaLengthAndD12Converge)
   const double areaOrder = fittedOrder(pointCounts, areaError);
   const double lengthOrder = fittedOrder(pointCounts, lengthError);
   const double d12Order = fittedOrder(pointCounts, d12Error);
-  std::printf("  fitted orders: area %.2f, length %.2f, D12 %.2f\n", areaOrder, lengthOrder,
-              d12Order);
+  std::printf("  fitted orders: area %.2f, length %.2f, D12 %.2f\n", areaOrder, lengthOrder, d12Order);
   EXPECT_GT(areaOrder, 3.8); // O(h^4) interpolation integrated: O(h^4) (or better)
   EXPECT_GT(lengthOrder, 3.8);
   EXPECT_GT(d12Order, 3.8);
@@ -134,25 +132,18 @@ TEST(ContourMetrics, InvariantUnderTranslationAndRotation)
 
   // Rigid motions commute with chord-length splines exactly: differences are round-off
   // of O(1..10) quantities.
-  EXPECT_NEAR(capsula::contour::enclosedArea(transformed), capsula::contour::enclosedArea(original),
-              1e-12);
+  EXPECT_NEAR(capsula::contour::enclosedArea(transformed), capsula::contour::enclosedArea(original), 1e-12);
   EXPECT_NEAR(transformed.length(), original.length(), 1e-12);
-  EXPECT_NEAR(capsula::contour::taylorDeformation(transformed),
-              capsula::contour::taylorDeformation(original), 1e-12);
-  EXPECT_NEAR((capsula::contour::centroid(transformed) -
-               (rotation * capsula::contour::centroid(original) + shift))
-                  .norm(),
-              0.0, 1e-12);
-  const Eigen::Matrix2d j = capsula::contour::secondMomentOfArea(original);
+  EXPECT_NEAR(capsula::contour::taylorDeformation(transformed), capsula::contour::taylorDeformation(original), 1e-12);
   EXPECT_NEAR(
-      (capsula::contour::secondMomentOfArea(transformed) - rotation * j * rotation.transpose())
-          .norm(),
-      0.0, 1e-12);
+      (capsula::contour::centroid(transformed) - (rotation * capsula::contour::centroid(original) + shift)).norm(), 0.0,
+      1e-12);
+  const Eigen::Matrix2d j = capsula::contour::secondMomentOfArea(original);
+  EXPECT_NEAR((capsula::contour::secondMomentOfArea(transformed) - rotation * j * rotation.transpose()).norm(), 0.0,
+              1e-12);
   for (int k = 0; k < original.numberOfSegments(); ++k) {
     EXPECT_NEAR(transformed.pointAt(k, 0.3).curvature, original.pointAt(k, 0.3).curvature, 1e-11);
-    EXPECT_NEAR(
-        (transformed.pointAt(k, 0.3).normal - rotation * original.pointAt(k, 0.3).normal).norm(),
-        0.0, 1e-13);
+    EXPECT_NEAR((transformed.pointAt(k, 0.3).normal - rotation * original.pointAt(k, 0.3).normal).norm(), 0.0, 1e-13);
   }
 }
 
@@ -178,8 +169,7 @@ TEST(ContourMetrics, CellLengthUsesSplineExtremes)
   }
   const double nodeOrder = fittedOrder(pointCounts, nodeError);
   const double splineOrder = fittedOrder(pointCounts, splineError);
-  std::printf("  fitted orders: node extremes %.2f, spline extremes %.2f\n", nodeOrder,
-              splineOrder);
+  std::printf("  fitted orders: node extremes %.2f, spline extremes %.2f\n", nodeOrder, splineOrder);
   EXPECT_LT(nodeOrder, 2.2);
   EXPECT_GT(splineOrder, 3.7);
   EXPECT_GT(fittedOrder(pointCounts, heightError), 3.7);

@@ -17,7 +17,6 @@ namespace {
 using capsula::contour::EllipseShape;
 using capsula::contour::NodeSpacing;
 
-
 TEST(ContourShapes, EllipseNodesLieOnTheEqualAreaEllipse)
 {
   for (double ratio : {0.25, 0.5, 1.0, 3.0}) {
@@ -84,8 +83,7 @@ TEST(ContourShapes, EqualArcLengthSpacing)
   theta[n] = theta[0] + 2.0 * pi;
   const double target = arc(0.0, 2.0 * pi) / n;
   for (int i = 0; i < n; ++i) {
-    EXPECT_NEAR(arc(theta[i], theta[i + 1]), target, 1e-11)
-        << "between nodes " << i << ", " << i + 1;
+    EXPECT_NEAR(arc(theta[i], theta[i + 1]), target, 1e-11) << "between nodes " << i << ", " << i + 1;
   }
 }
 

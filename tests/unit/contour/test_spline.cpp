@@ -31,8 +31,7 @@ std::vector<double> randomKnots(int pieces, std::mt19937& generator)
 /// The spline from its definition: 4n unknown coefficients, interpolation (A.17),
 /// continuity of p, p', p'' at interior knots (A.18-A.20) plus the two end conditions,
 /// solved densely. An independent check of the tridiagonal route (A.21-A.25).
-std::vector<CubicPiece> splineByDefinition(const std::vector<double>& s,
-                                           const std::vector<double>& y, SplineEnds ends,
+std::vector<CubicPiece> splineByDefinition(const std::vector<double>& s, const std::vector<double>& y, SplineEnds ends,
                                            double startSlope = 0.0, double endSlope = 0.0)
 {
   const int n = static_cast<int>(s.size()) - 1;
@@ -61,8 +60,7 @@ std::vector<CubicPiece> splineByDefinition(const std::vector<double>& s,
     valueRow(k, 0.0);
     rhs(row++) = y[static_cast<std::size_t>(k)];
     valueRow(k, h);
-    rhs(row++) =
-        ends == SplineEnds::Periodic && k == n - 1 ? y[0] : y[static_cast<std::size_t>(k) + 1];
+    rhs(row++) = ends == SplineEnds::Periodic && k == n - 1 ? y[0] : y[static_cast<std::size_t>(k) + 1];
   }
   const int joints = ends == SplineEnds::Periodic ? n : n - 1;
   for (int k = 0; k < joints; ++k) {
@@ -152,8 +150,7 @@ TEST(ContourTridiagonal, CyclicShermanMorrisonMatchesDenseSolve)
   std::mt19937 generator(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int n : {3, 4, 10}) {
-    std::vector<double> lower(static_cast<std::size_t>(n)), diagonal(lower), upper(lower),
-        rhs(lower);
+    std::vector<double> lower(static_cast<std::size_t>(n)), diagonal(lower), upper(lower), rhs(lower);
     Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
     Eigen::VectorXd b(n);
     for (int i = 0; i < n; ++i) {
@@ -185,12 +182,10 @@ TEST(ContourSpline, FitsMatchTheDefiningConditions)
   }
   const std::vector<double> periodicValues(values.begin(), values.end() - 1);
 
-  expectSamePieces(CubicSpline::natural(knots, values),
-                   splineByDefinition(knots, values, SplineEnds::Natural));
+  expectSamePieces(CubicSpline::natural(knots, values), splineByDefinition(knots, values, SplineEnds::Natural));
   expectSamePieces(CubicSpline::clamped(knots, values, 0.7, -1.3),
                    splineByDefinition(knots, values, SplineEnds::Clamped, 0.7, -1.3));
-  expectSamePieces(CubicSpline::notAKnot(knots, values),
-                   splineByDefinition(knots, values, SplineEnds::NotAKnot));
+  expectSamePieces(CubicSpline::notAKnot(knots, values), splineByDefinition(knots, values, SplineEnds::NotAKnot));
   expectSamePieces(CubicSpline::periodic(knots, periodicValues),
                    splineByDefinition(knots, values, SplineEnds::Periodic));
 }
@@ -206,8 +201,7 @@ TEST(ContourSpline, ClampedAndNotAKnotAreExactForCubics)
   for (double s : knots) {
     values.push_back(p(s));
   }
-  const CubicSpline clamped =
-      CubicSpline::clamped(knots, values, dp(knots.front()), dp(knots.back()));
+  const CubicSpline clamped = CubicSpline::clamped(knots, values, dp(knots.front()), dp(knots.back()));
   const CubicSpline notAKnot = CubicSpline::notAKnot(knots, values);
   for (const CubicSpline* spline : {&clamped, &notAKnot}) {
     for (int i = 0; i <= 50; ++i) {
@@ -262,7 +256,7 @@ TEST(ContourSpline, InterpolatingEndSlopeConvergesAtThirdOrder)
   }
   for (std::size_t k = 1; k < errors.size(); ++k) {
     const double order = std::log2(errors[k - 1] / errors[k]);
-    EXPECT_GT(order, 2.7) << "refinement " << k;   // asymptotically 3
+    EXPECT_GT(order, 2.7) << "refinement " << k; // asymptotically 3
   }
   // Size: h^3 |f''''| = (1/32)^3 * 81 = 2.5e-3 times a constant well below 1.
   EXPECT_LT(errors.back(), 5e-4);

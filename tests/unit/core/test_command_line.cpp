@@ -27,8 +27,8 @@ std::string commandLineErrorOf(std::vector<const char*> args)
 
 TEST(CommandLine, ParsesEveryOption)
 {
-  const auto o = parse({"deck.xml", "--set", "Flow/Capillary number=0.3", "--set=Wall/Enabled=false",
-                        "--output", "out", "--restart=old"});
+  const auto o = parse({"deck.xml", "--set", "Flow/Capillary number=0.3", "--set=Wall/Enabled=false", "--output", "out",
+                        "--restart=old"});
   EXPECT_EQ(o.deckPath, "deck.xml");
   ASSERT_EQ(o.overrides.size(), 2u);
   EXPECT_EQ(o.overrides[0], "Flow/Capillary number=0.3");
@@ -52,8 +52,8 @@ TEST(CommandLine, UsageListsOptionsAndExamples)
 {
   core::AppDescription app{"cell3d", "one cell near a wall", {"cell3d input/demo.xml"}, true};
   const std::string text = core::usage(app);
-  for (const char* piece : {"--set", "--output", "--restart", "--print-defaults", "--version",
-                            "cell3d input/demo.xml", "mpiexec -n 2 cell3d"}) {
+  for (const char* piece : {"--set", "--output", "--restart", "--print-defaults", "--version", "cell3d input/demo.xml",
+                            "mpiexec -n 2 cell3d"}) {
     EXPECT_NE(text.find(piece), std::string::npos) << piece;
   }
 }

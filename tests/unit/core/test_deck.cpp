@@ -49,7 +49,8 @@ TEST(Deck, ValidDeckGetsEveryDefault)
 {
   auto deck = core::readDeckFromString(R"(<ParameterList name="Capsula">
       <ParameterList name="Flow"><Parameter name="Capillary number" type="double" value="0.6"/></ParameterList>
-    </ParameterList>)", "deck.xml");
+    </ParameterList>)",
+                                       "deck.xml");
   core::validateDeck(*deck, *validList(), "deck.xml");
   EXPECT_EQ(deck->sublist("Flow").get<double>("Capillary number"), 0.6);
   EXPECT_EQ(deck->sublist("Flow").get<double>("Viscosity ratio"), 1.0);
@@ -82,7 +83,8 @@ TEST(Deck, WrongTypeIsNamed)
 TEST(Deck, IntegerWhereRealExpectedIsConverted)
 {
   auto deck = core::readDeckFromString(R"(<ParameterList name="Capsula"><ParameterList name="Flow">
-      <Parameter name="Viscosity ratio" type="int" value="5"/></ParameterList></ParameterList>)", "d");
+      <Parameter name="Viscosity ratio" type="int" value="5"/></ParameterList></ParameterList>)",
+                                       "d");
   core::validateDeck(*deck, *validList(), "d");
   EXPECT_EQ(deck->sublist("Flow").get<double>("Viscosity ratio"), 5.0);
 }
@@ -91,13 +93,11 @@ TEST(Deck, OutOfRangeValueIsNamedWithRequirement)
 {
   const auto msg = errorOf(R"(<ParameterList name="Capsula"><ParameterList name="Flow">
       <Parameter name="Capillary number" type="double" value="-0.1"/></ParameterList></ParameterList>)");
-  EXPECT_TRUE(contains(msg, "'Flow/Capillary number' = -0.1 is invalid: it must be a finite real number > 0"))
-    << msg;
+  EXPECT_TRUE(contains(msg, "'Flow/Capillary number' = -0.1 is invalid: it must be a finite real number > 0")) << msg;
   const auto level = errorOf(R"(<ParameterList name="Capsula"><ParameterList name="Cells">
       <ParameterList name="Cell 0"><Parameter name="Mesh level" type="int" value="9"/></ParameterList>
       </ParameterList></ParameterList>)");
-  EXPECT_TRUE(contains(level, "'Cells/Cell 0/Mesh level' = 9 is invalid: it must be an integer from 0 to 5"))
-    << level;
+  EXPECT_TRUE(contains(level, "'Cells/Cell 0/Mesh level' = 9 is invalid: it must be an integer from 0 to 5")) << level;
 }
 
 TEST(Deck, NonFiniteRealIsRejected)
@@ -160,7 +160,7 @@ TEST(Deck, OverridesAreTypedByTheValidList)
   core::applyOverride(deck, *valid, "Cells/Cell 0/Mesh level=3");
   core::applyOverride(deck, *valid, "Cells/Cell 0/Center={1, 2.5, -3}");
   core::applyOverride(deck, *valid, "Cells/Cell 0/Fixed height=yes");
-  core::applyOverride(deck, *valid, "Title=a = b");   // only the first '=' splits
+  core::applyOverride(deck, *valid, "Title=a = b"); // only the first '=' splits
   core::validateDeck(deck, *valid, "--set");
   EXPECT_EQ(deck.sublist("Flow").get<double>("Capillary number"), 0.9);
   EXPECT_EQ(deck.sublist("Cells").sublist("Cell 0").get<int>("Mesh level"), 3);
@@ -201,13 +201,13 @@ TEST(Deck, WrittenXmlReadsBackIdentically)
 {
   Teuchos::ParameterList deck("Capsula");
   const auto valid = validList();
-  core::applyOverride(deck, *valid, "Flow/Capillary number=0.1");   // not exactly representable
+  core::applyOverride(deck, *valid, "Flow/Capillary number=0.1"); // not exactly representable
   core::applyOverride(deck, *valid, "Title=<&\"quoted\">");
   core::validateDeck(deck, *valid, "d");
   for (bool withDocs : {false, true}) {
     const std::string xml = core::deckToXml(deck, withDocs);
     auto back = core::readDeckFromString(xml, "roundtrip");
-    EXPECT_EQ(back->sublist("Flow").get<double>("Capillary number"), 0.1);   // exact round trip
+    EXPECT_EQ(back->sublist("Flow").get<double>("Capillary number"), 0.1); // exact round trip
     EXPECT_EQ(back->get<std::string>("Title"), "<&\"quoted\">");
     EXPECT_EQ(back->sublist("Cells").sublist("Cell 0").get<Teuchos::Array<double>>("Center"),
               deck.sublist("Cells").sublist("Cell 0").get<Teuchos::Array<double>>("Center"));

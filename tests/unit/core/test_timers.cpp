@@ -27,7 +27,7 @@ TEST(Timers, TotalsListTheTimersThatRanByTheirOwnersNames)
   }
   const auto totals = core::timerTotals();
   const core::TimerTotal* ran = find(totals, "test: used twice");
-  ASSERT_NE(ran, nullptr);   // named without the "Capsula: " prefix
+  ASSERT_NE(ran, nullptr); // named without the "Capsula: " prefix
   EXPECT_EQ(ran->calls, 2);
   EXPECT_GE(ran->seconds, 0.0);
   EXPECT_EQ(find(totals, "test: never started"), nullptr);

@@ -38,8 +38,8 @@ TEST(MembraneAllocation, EvaluateDoesNotAllocate)
 {
   using namespace capsula::elasticity;
   const capsula::mesh::SurfaceMesh mesh = capsula::mesh::makeSphere(2, 1.0);
-  const auto current = capsula::elasticity::testing::mapNodes(
-      mesh.positions(), capsula::elasticity::testing::smoothDeformation);
+  const auto current =
+      capsula::elasticity::testing::mapNodes(mesh.positions(), capsula::elasticity::testing::smoothDeformation);
   MembraneMechanics m(mesh, mesh.positions(), std::make_shared<SkalakLaw>(1.0, 10.0));
   const long before = allocations.load();
   m.evaluate(current.data());

@@ -19,9 +19,9 @@ namespace {
 
 using namespace capsula::elasticity;
 using capsula::elasticity::testing::mapNodes;
-using capsula::testing::orderOverLevels;
 using capsula::elasticity::testing::smoothDeformation;
 using capsula::mesh::SurfaceMesh;
+using capsula::testing::orderOverLevels;
 
 /// A curved planar edge in z = 0 with the same tension at its three nodes.
 EdgeNodalData planarEdge(const Mat3& tension)
@@ -46,8 +46,7 @@ TEST(MembraneContour, EdgeForceOfAUniformTensionIsExactAndPointsOutward)
   const Vec3 chordCrossN = (edge.position[2] - edge.position[0]).cross(Vec3::UnitZ());
   EXPECT_LT(chordCrossN.y(), 0.0);
   for (int points : {1, 2, 4}) {
-    const Vec3 force =
-        edgeTensionForce(edge, tm, capsula::quadrature::gaussLegendre(points, 0.0, 1.0));
+    const Vec3 force = edgeTensionForce(edge, tm, capsula::quadrature::gaussLegendre(points, 0.0, 1.0));
     // The integrand x'(t) is linear in t: exact for every rule, round-off only.
     EXPECT_LT((force - T * chordCrossN).norm(), 1e-15 * 10) << points << " points";
   }
@@ -58,8 +57,7 @@ TEST(MembraneContour, EdgeForceOfAUniformTensionIsExactAndPointsOutward)
   straight.position = {Vec3(0, 0, 0), Vec3(0.5, 0, 0), Vec3(1, 0, 0)};
   const Mat3 P = Vec3(1, 1, 0).asDiagonal();
   straight.tension = {P, 1.25 * P, 2.0 * P};
-  const Vec3 force =
-      edgeTensionForce(straight, 0.5, capsula::quadrature::gaussLegendre(2, 0.0, 1.0));
+  const Vec3 force = edgeTensionForce(straight, 0.5, capsula::quadrature::gaussLegendre(2, 0.0, 1.0));
   EXPECT_LT((force - Vec3(0.0, -4.0 / 3.0, 0.0)).norm(), 1e-15 * 10);
 }
 
@@ -68,10 +66,9 @@ TEST(MembraneContour, NetForceVanishesToRoundOffOnAnyDeformation)
   // Each shared edge is integrated once and given to its two elements with opposite
   // signs, so sum_m A_m <Delta f>_m is a sum of exactly cancelling pairs: what is left is
   // the round-off of adding N_E vectors, below 1e-13 of sum |A_m <Delta f>_m|.
-  const std::vector<std::shared_ptr<const MembraneLaw>> laws = {
-      std::make_shared<NeoHookeanLaw>(1.0), std::make_shared<SkalakLaw>(1.0, 10.0)};
-  const std::vector<SurfaceMesh> references = {capsula::mesh::makeSphere(3, 1.0),
-                                               capsula::mesh::makeBiconcaveCell(2)};
+  const std::vector<std::shared_ptr<const MembraneLaw>> laws = {std::make_shared<NeoHookeanLaw>(1.0),
+                                                                std::make_shared<SkalakLaw>(1.0, 10.0)};
+  const std::vector<SurfaceMesh> references = {capsula::mesh::makeSphere(3, 1.0), capsula::mesh::makeBiconcaveCell(2)};
   for (const SurfaceMesh& mesh : references) {
     const auto current = mapNodes(mesh.positions(), smoothDeformation);
     for (const auto& law : laws) {
@@ -83,8 +80,8 @@ TEST(MembraneContour, NetForceVanishesToRoundOffOnAnyDeformation)
       }
       EXPECT_GT(scale, 0.1); // a real load, not a trivial zero
       EXPECT_LT(m.netForce().norm(), 1e-13 * scale) << law->name();
-      std::printf("  %s, %d elements: |net force| / sum |A_m <Delta f>_m| = %.2e\n",
-                  law->name().c_str(), mesh.numElements(), m.netForce().norm() / scale);
+      std::printf("  %s, %d elements: |net force| / sum |A_m <Delta f>_m| = %.2e\n", law->name().c_str(),
+                  mesh.numElements(), m.netForce().norm() / scale);
     }
   }
 }

@@ -25,15 +25,14 @@ namespace {
 
 using namespace capsula::elasticity;
 using capsula::elasticity::testing::mapNodes;
-using capsula::testing::orderOverLevels;
 using capsula::elasticity::testing::smoothDeformation;
 using capsula::mesh::SurfaceMesh;
+using capsula::testing::orderOverLevels;
 
 /// A smooth velocity field that is not a rigid motion.
 Vec3 velocity(const Vec3& x)
 {
-  return Vec3(0.3 * x[1] * x[2] + 0.2 * x[0], 0.2 * std::sin(x[0]) - 0.1 * x[1],
-              0.25 * x[2] - 0.1 * x[0] * x[0]);
+  return Vec3(0.3 * x[1] * x[2] + 0.2 * x[0], 0.2 * std::sin(x[0]) - 0.1 * x[1], 0.25 * x[2] - 0.1 * x[0] * x[0]);
 }
 
 /// sum_m <Delta f>_m . int_{E_m} u dS, u interpolated from its nodal values (the motion
@@ -65,8 +64,7 @@ double power(const SurfaceMesh& mesh, const MembraneMechanics& m, const std::vec
 
 /// dE/dt by central differences along x + t u (step 1e-4: truncation ~1e-8 relative,
 /// round-off ~1e-12 relative).
-double energyRate(const MembraneMechanics& m, const std::vector<double>& x,
-                  const std::vector<double>& u)
+double energyRate(const MembraneMechanics& m, const std::vector<double>& x, const std::vector<double>& u)
 {
   const double dt = 1e-4;
   std::vector<double> ahead(x), behind(x);
@@ -86,9 +84,8 @@ TEST(MembraneEnergy, UniformDilationStoresTheEnergyDensityTimesTheReferenceArea)
   const auto current = mapNodes(mesh.positions(), [s](const Vec3& X) { return s * X; });
   const SkalakLaw skalak(0.7, 2.5);
   const double area0 = capsula::mesh::surfaceArea(mesh, 7);
-  for (const auto& law :
-       {std::shared_ptr<const MembraneLaw>(std::make_shared<NeoHookeanLaw>(0.7)),
-        std::shared_ptr<const MembraneLaw>(std::make_shared<SkalakLaw>(0.7, 2.5))}) {
+  for (const auto& law : {std::shared_ptr<const MembraneLaw>(std::make_shared<NeoHookeanLaw>(0.7)),
+                          std::shared_ptr<const MembraneLaw>(std::make_shared<SkalakLaw>(0.7, 2.5))}) {
     MembraneMechanics m(mesh, mesh.positions(), law);
     const double w = law->energyDensity(2 * s * s - 2.0, s * s * s * s - 1.0);
     // Element-wise A is exactly s (I - N N): w is uniform, and the same N_Q = 7 rule
@@ -118,13 +115,12 @@ TEST(MembraneEnergy, InflatingSphereGainsEnergyAtTheRateTheLoadWorks)
 
 TEST(MembraneEnergy, PowerBalanceConvergesUnderRefinement)
 {
-  const std::vector<std::shared_ptr<const MembraneLaw>> laws = {
-      std::make_shared<NeoHookeanLaw>(1.0), std::make_shared<SkalakLaw>(1.0, 10.0)};
+  const std::vector<std::shared_ptr<const MembraneLaw>> laws = {std::make_shared<NeoHookeanLaw>(1.0),
+                                                                std::make_shared<SkalakLaw>(1.0, 10.0)};
   for (const auto& law : laws) {
     std::vector<int> levels;
     std::vector<double> errors;
-    std::printf("  %s\n  level        dE/dt   int Delta f.u dS   relative difference\n",
-                law->name().c_str());
+    std::printf("  %s\n  level        dE/dt   int Delta f.u dS   relative difference\n", law->name().c_str());
     for (int level = 1; level <= 3; ++level) {
       const SurfaceMesh mesh = capsula::mesh::makeSphere(level, 1.0);
       const auto current = mapNodes(mesh.positions(), smoothDeformation);

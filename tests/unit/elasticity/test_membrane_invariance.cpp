@@ -26,8 +26,8 @@ using capsula::elasticity::testing::mapNodes;
 using capsula::elasticity::testing::smoothDeformation;
 using capsula::mesh::SurfaceMesh;
 
-const std::vector<std::shared_ptr<const MembraneLaw>> laws = {
-    std::make_shared<NeoHookeanLaw>(1.0), std::make_shared<SkalakLaw>(1.0, 10.0)};
+const std::vector<std::shared_ptr<const MembraneLaw>> laws = {std::make_shared<NeoHookeanLaw>(1.0),
+                                                              std::make_shared<SkalakLaw>(1.0, 10.0)};
 
 } // namespace
 
@@ -53,26 +53,21 @@ TEST(MembraneInvariance, RigidMotionOfTheCurrentShapeRotatesTensionsAndLoads)
     // up to ~5 after the shift) remains: 1e-10 of the largest tension or load.
     double tensionChange = 0.0, loadChange = 0.0;
     for (int i = 0; i < mesh.numNodes(); ++i) {
-      tensionChange = std::max(tensionChange, std::abs(a.nodalPrincipalTensions()[i].minor -
-                                                       b.nodalPrincipalTensions()[i].minor));
-      EXPECT_NEAR(a.nodalPrincipalTensions()[i].major, b.nodalPrincipalTensions()[i].major,
-                  1e-10 * tensionScale);
-      EXPECT_NEAR(a.nodalPrincipalTensions()[i].minor, b.nodalPrincipalTensions()[i].minor,
-                  1e-10 * tensionScale);
-      EXPECT_LT((Q * a.nodalTensions()[i] * Q.transpose() - b.nodalTensions()[i]).norm(),
-                1e-10 * tensionScale);
+      tensionChange =
+          std::max(tensionChange, std::abs(a.nodalPrincipalTensions()[i].minor - b.nodalPrincipalTensions()[i].minor));
+      EXPECT_NEAR(a.nodalPrincipalTensions()[i].major, b.nodalPrincipalTensions()[i].major, 1e-10 * tensionScale);
+      EXPECT_NEAR(a.nodalPrincipalTensions()[i].minor, b.nodalPrincipalTensions()[i].minor, 1e-10 * tensionScale);
+      EXPECT_LT((Q * a.nodalTensions()[i] * Q.transpose() - b.nodalTensions()[i]).norm(), 1e-10 * tensionScale);
     }
     for (int e = 0; e < mesh.numElements(); ++e) {
-      loadChange =
-          std::max(loadChange, std::abs(a.elementLoads()[e].norm() - b.elementLoads()[e].norm()));
+      loadChange = std::max(loadChange, std::abs(a.elementLoads()[e].norm() - b.elementLoads()[e].norm()));
       EXPECT_NEAR(a.elementLoads()[e].norm(), b.elementLoads()[e].norm(), 1e-10 * loadScale);
       EXPECT_LT((Q * a.elementLoads()[e] - b.elementLoads()[e]).norm(), 1e-10 * loadScale);
     }
     std::printf("  %s: largest change of a principal tension %.1e, of a load magnitude %.1e "
                 "(relative to the largest)\n",
                 law->name().c_str(), tensionChange / tensionScale, loadChange / loadScale);
-    EXPECT_NEAR(a.strainEnergy(current.data()), b.strainEnergy(moved.data()),
-                1e-12 * a.strainEnergy(current.data()));
+    EXPECT_NEAR(a.strainEnergy(current.data()), b.strainEnergy(moved.data()), 1e-12 * a.strainEnergy(current.data()));
   }
 }
 
@@ -82,8 +77,7 @@ TEST(MembraneInvariance, RigidMotionOfTheReferenceChangesNothing)
   const SurfaceMesh mesh = capsula::mesh::makeSphere(2, 1.0);
   const auto current = mapNodes(mesh.positions(), smoothDeformation);
   const Mat3 Q = capsula::mesh::rotationAboutAxis(Vec3(0.2, 0.1, 1.0), -0.9);
-  const auto reference =
-      mapNodes(mesh.positions(), [&](const Vec3& X) { return Vec3(Vec3(1, 2, 3) + Q * X); });
+  const auto reference = mapNodes(mesh.positions(), [&](const Vec3& X) { return Vec3(Vec3(1, 2, 3) + Q * X); });
   for (const auto& law : laws) {
     MembraneMechanics a(mesh, mesh.positions(), law), b(mesh, reference, law);
     a.evaluate(current.data());
@@ -156,7 +150,6 @@ TEST(MembraneInvariance, RejectsInconsistentInputAndFoldedShapes)
   EXPECT_THROW(MembraneMechanics(mesh, mesh.positions(), law, {7, 0}), capsula::core::InputError);
   // Flattened onto z = 0: the elements at the equator collapse to zero area.
   MembraneMechanics m(mesh, mesh.positions(), law);
-  const std::vector<double> flat =
-      mapNodes(mesh.positions(), [](const Vec3& x) { return Vec3(x[0], x[1], 0.0); });
+  const std::vector<double> flat = mapNodes(mesh.positions(), [](const Vec3& x) { return Vec3(x[0], x[1], 0.0); });
   EXPECT_THROW(m.evaluate(flat.data()), capsula::core::NumericalError);
 }

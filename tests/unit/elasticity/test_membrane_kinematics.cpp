@@ -86,13 +86,12 @@ struct PatchResult {
 
 PatchResult stretchFlatPatch(const MembraneLaw& law, double stretch, double lateral, int node)
 {
-  const capsula::mesh::ElementNodes X = {Vec3(0, 0, 0),       Vec3(1.0, 0.1, 0),
-                                         Vec3(0.2, 0.9, 0),   Vec3(0.45, 0.05, 0),
-                                         Vec3(0.58, 0.52, 0), Vec3(0.11, 0.495, 0)};
+  const capsula::mesh::ElementNodes X = {Vec3(0, 0, 0),       Vec3(1.0, 0.1, 0),   Vec3(0.2, 0.9, 0),
+                                         Vec3(0.45, 0.05, 0), Vec3(0.58, 0.52, 0), Vec3(0.11, 0.495, 0)};
   const double angle = 0.4;
   const Vec3 e1(std::cos(angle), std::sin(angle), 0.0), e2(-std::sin(angle), std::cos(angle), 0.0);
-  const Mat3 F = stretch * e1 * e1.transpose() + lateral * e2 * e2.transpose() +
-                 Vec3::UnitZ() * Vec3::UnitZ().transpose();
+  const Mat3 F =
+      stretch * e1 * e1.transpose() + lateral * e2 * e2.transpose() + Vec3::UnitZ() * Vec3::UnitZ().transpose();
   capsula::mesh::ElementNodes x;
   for (int i = 0; i < 6; ++i) {
     x[i] = Vec3(0.5, -2.0, 3.0) + rotation * F * X[i];
@@ -100,8 +99,7 @@ PatchResult stretchFlatPatch(const MembraneLaw& law, double stretch, double late
   const auto p = capsula::mesh::shapeParameters(X);
   const auto S = capsula::mesh::evaluateAtNode(X, p, node);
   const auto s = capsula::mesh::evaluateAtNode(x, p, node);
-  const Mat3 A = surfaceDeformationGradient(s.tangentXi, s.tangentEta,
-                                            dualTangents(S.tangentXi, S.tangentEta));
+  const Mat3 A = surfaceDeformationGradient(s.tangentXi, s.tangentEta, dualTangents(S.tangentXi, S.tangentEta));
   const Mat3 B = A * A.transpose();
   PatchResult r;
   r.stretches = principalStretches(B, s.normal);

@@ -67,10 +67,8 @@ TEST(MembraneLaw, DerivativesMatchCentralDifferences)
     for (double I1 : {-0.3, 0.0, 0.4, 1.5}) {
       for (double I2 : {-0.5, 0.0, 0.3, 2.0}) {
         const EnergyDerivatives d = law->energyDerivatives(I1, I2);
-        const double d1 =
-            (law->energyDensity(I1 + h, I2) - law->energyDensity(I1 - h, I2)) / (2 * h);
-        const double d2 =
-            (law->energyDensity(I1, I2 + h) - law->energyDensity(I1, I2 - h)) / (2 * h);
+        const double d1 = (law->energyDensity(I1 + h, I2) - law->energyDensity(I1 - h, I2)) / (2 * h);
+        const double d2 = (law->energyDensity(I1, I2 + h) - law->energyDensity(I1, I2 - h)) / (2 * h);
         // Truncation h^2 w''' / 6 ~ 1e-10 G (neo-Hookean w''' = 3 G/(I2+1)^4 <= 48 G here);
         // round-off eps w / h ~ 1e-11 G.
         EXPECT_NEAR(d.dI1, d1, 1e-8 * G) << law->name();
@@ -94,12 +92,8 @@ TEST(MembraneLaw, PrincipalTensionsAreTheStretchDerivativesOfTheEnergy)
         }
         const StrainInvariants I = strainInvariants({l1, l2});
         const PrincipalTensions T = principalTensions({l1, l2}, law->energyDerivatives(I.I1, I.I2));
-        const double t1 =
-            (energyInStretches(*law, l1 + h, l2) - energyInStretches(*law, l1 - h, l2)) / (2 * h) /
-            l2;
-        const double t2 =
-            (energyInStretches(*law, l1, l2 + h) - energyInStretches(*law, l1, l2 - h)) / (2 * h) /
-            l1;
+        const double t1 = (energyInStretches(*law, l1 + h, l2) - energyInStretches(*law, l1 - h, l2)) / (2 * h) / l2;
+        const double t2 = (energyInStretches(*law, l1, l2 + h) - energyInStretches(*law, l1, l2 - h)) / (2 * h) / l1;
         // Which of t1, t2 is larger depends on the law; compare as sorted pairs.
         // Truncation h^2 w'''/6 < 1e-10 G, round-off eps w/h < 1e-8 G (w < 50 G).
         EXPECT_NEAR(T.major, std::max(t1, t2), 2e-8 * G) << law->name() << " " << l1 << " " << l2;

@@ -23,8 +23,8 @@ namespace {
 
 using namespace capsula::elasticity;
 using capsula::elasticity::testing::mapNodes;
-using capsula::testing::orderOverLevels;
 using capsula::mesh::SurfaceMesh;
+using capsula::testing::orderOverLevels;
 
 constexpr double G = 0.7;
 constexpr double C = 2.5;
@@ -50,9 +50,8 @@ double worstIsotropicDeviation(const MembraneMechanics& m, double tension)
 {
   double worst = 0.0;
   for (std::size_t i = 0; i < m.nodalTensions().size(); ++i) {
-    worst = std::max(worst, (m.nodalTensions()[i] - tension * tangentProjector(m.nodeNormals()[i]))
-                                .cwiseAbs()
-                                .maxCoeff());
+    worst =
+        std::max(worst, (m.nodalTensions()[i] - tension * tangentProjector(m.nodeNormals()[i])).cwiseAbs().maxCoeff());
     worst = std::max(worst, std::abs(m.nodalPrincipalTensions()[i].major - tension));
     worst = std::max(worst, std::abs(m.nodalPrincipalTensions()[i].minor - tension));
   }
@@ -100,8 +99,7 @@ TEST(MembraneSphere, UniformDilationGivesTheClosedFormIsotropicTension)
         worst = std::max(worst, worstIsotropicDeviation(m, T));
         // Exact for the discrete mesh: every element's A is s (I - N_e N_e), carried
         // onto s (I - N N); only round-off of the O(1) kinematics remains.
-        EXPECT_LT(worstIsotropicDeviation(m, T), 1e-10 * G)
-            << law->name() << " level " << level << " s " << s;
+        EXPECT_LT(worstIsotropicDeviation(m, T), 1e-10 * G) << law->name() << " level " << level << " s " << s;
       }
     }
   }
@@ -112,8 +110,7 @@ TEST(MembranePrestress, ReferenceIsTheInitialShapeShrunkAndTensionIsIsotropic)
 {
   const double alpha = 0.025; // thesis Section 3.12.2: 2.5%
   const capsula::mesh::Vec3 centre(0.3, -0.2, 1.5);
-  const SurfaceMesh initial =
-      capsula::mesh::makeSphere(2, 1.0, {centre, capsula::mesh::Mat3::Identity()});
+  const SurfaceMesh initial = capsula::mesh::makeSphere(2, 1.0, {centre, capsula::mesh::Mat3::Identity()});
   const std::vector<double> reference = prestressedReference(initial, alpha);
   for (int i = 0; i < initial.numNodes(); ++i) {
     const Vec3 X = capsula::mesh::nodeAt(reference.data(), i);
@@ -123,8 +120,7 @@ TEST(MembranePrestress, ReferenceIsTheInitialShapeShrunkAndTensionIsIsotropic)
   for (const auto& law : laws()) {
     MembraneMechanics m(initial, reference, law);
     m.evaluate(initial.positionData());
-    EXPECT_LT(worstIsotropicDeviation(m, isotropicTension(*law, 1.0 + alpha)), 1e-10 * G)
-        << law->name();
+    EXPECT_LT(worstIsotropicDeviation(m, isotropicTension(*law, 1.0 + alpha)), 1e-10 * G) << law->name();
     EXPECT_GT(m.mostCompressiveTension().tension, 0.0); // prestress: no compression
   }
   EXPECT_EQ(prestressedReference(initial, 0.0), initial.positions());
@@ -152,11 +148,10 @@ TEST(MembraneSphere, ElementLoadsConvergeToTheLaplaceLoad)
     double largest = 0.0, sum = 0.0;
     for (int e = 0; e < mesh.numElements(); ++e) {
       const auto x = mesh.elementNodes(e, current.data());
-      const Vec3 meanNormal =
-          capsula::mesh::integrateOverElement(
-              x, capsula::mesh::shapeParameters(x), rule,
-              [](const capsula::mesh::SurfacePoint& p) { return p.normal; }, Vec3(Vec3::Zero())) /
-          m.elementAreas()[e];
+      const Vec3 meanNormal = capsula::mesh::integrateOverElement(
+                                  x, capsula::mesh::shapeParameters(x), rule,
+                                  [](const capsula::mesh::SurfacePoint& p) { return p.normal; }, Vec3(Vec3::Zero())) /
+                              m.elementAreas()[e];
       const double error = (m.elementLoads()[e] - laplace * meanNormal).norm() / laplace;
       largest = std::max(largest, error);
       sum += error;

@@ -136,7 +136,7 @@ TEST(MembraneTangentStiffness, SymmetryAndRigidMotions)
         asymmetry = std::max(asymmetry, std::abs(dense[r * n + c] - dense[c * n + r]));
       }
     }
-    EXPECT_LT(asymmetry, 1e-13 * scale) << law->name();   // round-off of the element sums
+    EXPECT_LT(asymmetry, 1e-13 * scale) << law->name(); // round-off of the element sums
 
     const std::vector<double> F = nodalForces(m, x);
     const Vec3 omega(0.3, -0.7, 0.5), shift(1.0, -2.0, 0.5);
@@ -189,7 +189,7 @@ TEST(MembraneTangentStiffness, PositiveAtRestAndTheEnergysCurvature)
       }
       // The cubic term is ~eps^3 |v|^3 E''' : relative 1e-3 at eps = 1e-4 with |v| ~ 10.
       EXPECT_NEAR(m.strainEnergy(moved.data()), 0.5 * eps * eps * curvature, 2e-3 * 0.5 * eps * eps * curvature)
-        << law->name() << " direction " << k;
+          << law->name() << " direction " << k;
     }
   }
 }

@@ -22,10 +22,10 @@ namespace {
 
 using namespace capsula::elasticity;
 using capsula::elasticity::testing::mapNodes;
-using capsula::testing::orderOverLevels;
 using capsula::elasticity::testing::smoothDeformation;
 using capsula::mesh::SurfaceMesh;
 using capsula::mesh::Vec3;
+using capsula::testing::orderOverLevels;
 
 constexpr double G = 0.7;
 constexpr double C = 2.5;
@@ -135,8 +135,7 @@ TEST(MembraneVirtualWork, LaplaceLawOnAnInflatedSphereConverges)
       }
       levels.push_back(level);
       errors.push_back(worst / exact);
-      std::printf("%s level %d: max |f - 2T/r n| / (2T/r) = %.3e\n", law->name().c_str(), level,
-                  worst / exact);
+      std::printf("%s level %d: max |f - 2T/r n| / (2T/r) = %.3e\n", law->name().c_str(), level, worst / exact);
     }
     // The load is the L2 projection of a second-derivative quantity of a quadratic
     // surface: first order in h at the nodes at least.
@@ -209,14 +208,14 @@ TEST(MembraneVirtualWork, LoadOnlyEvaluationGivesTheSameLoad)
     MembraneMechanics full(mesh, mesh.positions(), law, virtualWork());
     MembraneMechanics light(mesh, mesh.positions(), law, virtualWork());
     full.evaluate(x.data());
-    light.evaluate(mesh.positions().data());   // a full evaluation at rest: tensions ~1e-15
+    light.evaluate(mesh.positions().data()); // a full evaluation at rest: tensions ~1e-15
     const double atRest = light.nodalPrincipalTensions()[0].major;
     light.evaluate(x.data(), MembraneEvaluation::LoadOnly);
     std::vector<double> a(18 * static_cast<std::size_t>(mesh.numElements())), b(a.size());
     full.writeElementNodeLoads(a.data());
     light.writeElementNodeLoads(b.data());
     EXPECT_EQ(a, b) << law->name();
-    EXPECT_EQ(light.nodalPrincipalTensions()[0].major, atRest) << law->name();   // not recomputed
+    EXPECT_EQ(light.nodalPrincipalTensions()[0].major, atRest) << law->name(); // not recomputed
     EXPECT_GT(std::abs(full.nodalPrincipalTensions()[0].major), 1e-3) << law->name();
 
     // Turn one node's star inside out: the load-only path still stops on the fold.
@@ -225,6 +224,6 @@ TEST(MembraneVirtualWork, LoadOnlyEvaluationGivesTheSameLoad)
       folded[static_cast<std::size_t>(d)] *= -0.2;
     }
     EXPECT_THROW(light.evaluate(folded.data(), MembraneEvaluation::LoadOnly), capsula::core::NumericalError)
-      << law->name();
+        << law->name();
   }
 }

@@ -42,8 +42,8 @@ TEST(Prestress2D, ShrinksAboutTheCentroidByOnePlusAlpha)
   // or a shrink about the origin, fails these by 0.1 or more.
   EXPECT_LT((capsula::contour::centroid(r) - capsula::contour::centroid(a)).norm(), 1e-13);
   EXPECT_NEAR(r.length() * (1.0 + alpha), a.length(), 1e-12);
-  EXPECT_NEAR(capsula::contour::enclosedArea(r) * (1.0 + alpha) * (1.0 + alpha),
-              capsula::contour::enclosedArea(a), 1e-12);
+  EXPECT_NEAR(capsula::contour::enclosedArea(r) * (1.0 + alpha) * (1.0 + alpha), capsula::contour::enclosedArea(a),
+              1e-12);
   EXPECT_EQ((prestressedReference2D(initial, 0.0) - initial).cwiseAbs().maxCoeff(), 0.0);
 }
 

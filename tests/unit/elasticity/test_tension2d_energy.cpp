@@ -28,7 +28,6 @@ using capsula::elasticity::ElasticMembrane2D;
 using capsula::elasticity::HookeanLaw2D;
 using capsula::elasticity::MembraneState2D;
 
-
 using capsula::testing::fittedOrder;
 
 /// Reference: ellipse a/b = 0.5, node 0 at the bottom of the b-axis (the tether point).
@@ -83,18 +82,14 @@ Balance energyBalance(int n, Closure closure)
 
   // Central difference in time: O(dt^2) ~ 1e-10 relative, round-off ~ 1e-16 / dt ~ 1e-11.
   const double dt = 1e-5;
-  const double ahead =
-      membrane.evaluate(Contour(current + dt * nodeVelocity, options)).elasticEnergy();
-  const double behind =
-      membrane.evaluate(Contour(current - dt * nodeVelocity, options)).elasticEnergy();
+  const double ahead = membrane.evaluate(Contour(current + dt * nodeVelocity, options)).elasticEnergy();
+  const double behind = membrane.evaluate(Contour(current - dt * nodeVelocity, options)).elasticEnergy();
   Balance balance;
   balance.rate = (ahead - behind) / (2.0 * dt);
 
   const MembraneState2D state = membrane.evaluate(Contour(current, options));
   balance.power = state.contour().integrate(
-      [&](const ContourPoint& p, int k, double t) {
-        return state.loadAt(p, k, t).dot(velocity(p.position, anchor));
-      },
+      [&](const ContourPoint& p, int k, double t) { return state.loadAt(p, k, t).dot(velocity(p.position, anchor)); },
       8);
   return balance;
 }
@@ -107,8 +102,8 @@ void checkBalance(Closure closure, const char* name, double minimumOrder, double
     const Balance b = energyBalance(n, closure);
     EXPECT_GT(std::abs(b.power), 0.05) << "the test field must do work"; // ~0.084
     error.push_back(std::abs(b.rate - b.power) / std::abs(b.power));
-    std::printf("  %s N = %3d: dE/dt = %+.10f, int Delta f . v dl = %+.10f, relative gap %.3e\n",
-                name, n, b.rate, b.power, error.back());
+    std::printf("  %s N = %3d: dE/dt = %+.10f, int Delta f . v dl = %+.10f, relative gap %.3e\n", name, n, b.rate,
+                b.power, error.back());
   }
   const double order = fittedOrder(refinements, error);
   std::printf("  %s: fitted order %.2f\n", name, order);

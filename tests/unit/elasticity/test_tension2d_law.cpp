@@ -25,14 +25,12 @@ TEST(Tension2DLaw, TensionAndEnergyDensity)
   // d(energy density)/d(stretch) = tension: the pair is consistent (central difference,
   // exact for the quadratic up to round-off).
   const double h = 1e-4;
-  EXPECT_NEAR((law.energyDensity(1.3 + h) - law.energyDensity(1.3 - h)) / (2.0 * h),
-              law.tension(1.3), 1e-10);
+  EXPECT_NEAR((law.energyDensity(1.3 + h) - law.energyDensity(1.3 - h)) / (2.0 * h), law.tension(1.3), 1e-10);
 }
 
 TEST(Tension2DLaw, RejectsNonPositiveModulusNamingIt)
 {
-  for (double bad : {0.0, -1.0, std::numeric_limits<double>::infinity(),
-                     std::numeric_limits<double>::quiet_NaN()}) {
+  for (double bad : {0.0, -1.0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
     try {
       const HookeanLaw2D law(bad);
       ADD_FAILURE() << "accepted E = " << bad;
@@ -49,8 +47,7 @@ TEST(Tension2DLaw, LoadKernelIsLaplaceOnACircleAndPullsAlongTheTensionGradient)
   const Eigen::Vector2d radial(std::cos(angle), std::sin(angle));
   const Eigen::Vector2d first = 2.0 * Eigen::Vector2d(-std::sin(angle), std::cos(angle));
   const Eigen::Vector2d second = -2.0 * radial;
-  const capsula::contour::ContourPoint p =
-      capsula::contour::contourPoint(2.0 * radial, first, second);
+  const capsula::contour::ContourPoint p = capsula::contour::contourPoint(2.0 * radial, first, second);
   // Uniform tension 3: Delta f = (gamma / R) n, pressure higher inside.
   const Eigen::Vector2d laplace = capsula::elasticity::membraneLoad2D(3.0, 0.0, p);
   EXPECT_NEAR((laplace - 1.5 * radial).norm(), 0.0, 1e-15);

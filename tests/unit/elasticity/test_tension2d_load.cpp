@@ -66,8 +66,7 @@ TEST(Tension2DLoad, ReferenceAndRigidMotionsCarryNoTension)
     const double angle = 0.8;
     Eigen::Matrix2d rotation;
     rotation << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
-    const Eigen::Matrix2Xd moved =
-        (rotation * reference.nodes()).colwise() + Eigen::Vector2d(-2.0, 3.0);
+    const Eigen::Matrix2Xd moved = (rotation * reference.nodes()).colwise() + Eigen::Vector2d(-2.0, 3.0);
     for (const Eigen::Matrix2Xd* nodes : {&reference.nodes(), &moved}) {
       const MembraneState2D state = membrane.evaluate(Contour(*nodes, withClosure(closure)));
       // Arc lengths agree to round-off, so omega = 1 and everything else vanishes to
@@ -94,8 +93,7 @@ TEST(Tension2DLoad, InflatedCircleObeysTheLaplaceLaw)
   for (int n : refinements) {
     const Contour reference(capsula::contour::circleNodes(n, 1.0));
     const Contour inflated(capsula::contour::circleNodes(n, radius, {0.5, 2.0}));
-    const MembraneState2D state =
-        ElasticMembrane2D(reference, HookeanLaw2D(modulus)).evaluate(inflated);
+    const MembraneState2D state = ElasticMembrane2D(reference, HookeanLaw2D(modulus)).evaluate(inflated);
     EXPECT_LT((state.stretch().array() - stretch).abs().maxCoeff(), 1e-13);
     EXPECT_LT((state.tension().array() - gamma).abs().maxCoeff(), 1e-12);
     EXPECT_LT(state.tensionSlope().cwiseAbs().maxCoeff(), 1e-11);
@@ -104,14 +102,13 @@ TEST(Tension2DLoad, InflatedCircleObeysTheLaplaceLaw)
       const Eigen::Vector2d radial = (inflated.nodes().col(i) - Eigen::Vector2d(0.5, 2.0)) / radius;
       worstNode = std::max(worstNode, (state.load().col(i) - gamma / radius * radial).norm());
       const capsula::contour::ContourPoint p = inflated.pointAt(i, 0.5);
-      const Eigen::Vector2d exact =
-          gamma / radius * (p.position - Eigen::Vector2d(0.5, 2.0)).normalized();
+      const Eigen::Vector2d exact = gamma / radius * (p.position - Eigen::Vector2d(0.5, 2.0)).normalized();
       worstPoint = std::max(worstPoint, (state.loadAt(i, 0.5) - exact).norm());
     }
     nodeError.push_back(worstNode / (gamma / radius));
     pointError.push_back(worstPoint / (gamma / radius));
-    std::printf("  inflated circle N = %3d: relative load error at nodes %.3e, mid-segment %.3e\n",
-                n, nodeError.back(), pointError.back());
+    std::printf("  inflated circle N = %3d: relative load error at nodes %.3e, mid-segment %.3e\n", n, nodeError.back(),
+                pointError.back());
   }
   const double nodeOrder = fittedOrder(refinements, nodeError);
   const double pointOrder = fittedOrder(refinements, pointError);
@@ -139,8 +136,7 @@ TEST(Tension2DLoad, DilatedEllipseHasUniformTensionAndCurvatureLoad)
     const Contour reference(nodes);
     const Eigen::Vector2d centre(0.4, 1.2);
     const Contour dilated((stretch * (nodes.colwise() - centre)).colwise() + centre);
-    const MembraneState2D state =
-        ElasticMembrane2D(reference, HookeanLaw2D(modulus)).evaluate(dilated);
+    const MembraneState2D state = ElasticMembrane2D(reference, HookeanLaw2D(modulus)).evaluate(dilated);
     EXPECT_LT((state.tension().array() - gamma).abs().maxCoeff(), 1e-12);
     double worst = 0.0;
     for (int i = 0; i < n; ++i) {
@@ -181,8 +177,7 @@ TEST(Tension2DLoad, TangentialSlipOnACircleGivesTheTensionGradientLoad)
       const double phi = theta + eps * std::sin(theta);
       slipped.col(i) = radius * Eigen::Vector2d(std::cos(phi), std::sin(phi));
     }
-    const MembraneState2D state =
-        ElasticMembrane2D(reference, HookeanLaw2D(modulus)).evaluate(Contour(slipped));
+    const MembraneState2D state = ElasticMembrane2D(reference, HookeanLaw2D(modulus)).evaluate(Contour(slipped));
     double worstStretch = 0.0, worstSlope = 0.0, worstLoad = 0.0;
     for (int i = 0; i < n; ++i) {
       const double theta = 2.0 * pi * i / n;
@@ -200,14 +195,13 @@ TEST(Tension2DLoad, TangentialSlipOnACircleGivesTheTensionGradientLoad)
     stretchError.push_back(worstStretch);
     slopeError.push_back(worstSlope);
     loadError.push_back(worstLoad);
-    std::printf("  slip N = %3d: stretch error %.3e, d gamma/dl error %.3e, load error %.3e\n", n,
-                worstStretch, worstSlope, worstLoad);
+    std::printf("  slip N = %3d: stretch error %.3e, d gamma/dl error %.3e, load error %.3e\n", n, worstStretch,
+                worstSlope, worstLoad);
   }
   const double stretchOrder = fittedOrder(refinements, stretchError);
   const double slopeOrder = fittedOrder(refinements, slopeError);
   const double loadOrder = fittedOrder(refinements, loadError);
-  std::printf("  fitted orders: stretch %.2f, d gamma/dl %.2f, load %.2f\n", stretchOrder,
-              slopeOrder, loadOrder);
+  std::printf("  fitted orders: stretch %.2f, d gamma/dl %.2f, load %.2f\n", stretchOrder, slopeOrder, loadOrder);
   EXPECT_GT(stretchOrder, 3.5);
   EXPECT_GT(slopeOrder, 2.8);
   EXPECT_GT(loadOrder, 1.9);
@@ -221,14 +215,12 @@ TEST(Tension2DLoad, FreeCellExertsNoNetForceOrTorque)
     const Eigen::Matrix2Xd nodes = testEllipse(n);
     const MembraneState2D state =
         ElasticMembrane2D(Contour(nodes), HookeanLaw2D(modulus)).evaluate(Contour(deformed(nodes)));
-    const double scale =
-        state.contour().integrate([&state](const capsula::contour::ContourPoint& p, int k,
-                                           double t) { return state.loadAt(p, k, t).norm(); },
-                                  8);
+    const double scale = state.contour().integrate(
+        [&state](const capsula::contour::ContourPoint& p, int k, double t) { return state.loadAt(p, k, t).norm(); }, 8);
     const Eigen::Vector2d force = state.netForce(8);
     const double torque = state.netTorque(8, Eigen::Vector2d(0.4, 1.2));
-    std::printf("  N = %3d: int |Delta f| dl = %.3e, |net force| %.3e, net torque %.3e\n", n, scale,
-                force.norm(), torque);
+    std::printf("  N = %3d: int |Delta f| dl = %.3e, |net force| %.3e, net torque %.3e\n", n, scale, force.norm(),
+                torque);
     EXPECT_GT(scale, 0.1);
     // 8 Gauss points per segment integrate the smooth per-segment integrand to ~1e-13
     // relative; a wrong sign on either load term would give O(1).
@@ -242,15 +234,14 @@ TEST(Tension2DLoad, TetheredNetForceIsTheTensionJumpAtTheTether)
   // Open at the tether: int Delta f dl = gamma t (0+) - gamma t (s_max-) (eq A.56).
   const Eigen::Matrix2Xd nodes = testEllipse(96);
   const ContourOptions tethered = withClosure(Closure::Tethered);
-  const MembraneState2D state = ElasticMembrane2D(Contour(nodes, tethered), HookeanLaw2D(modulus))
-                                    .evaluate(Contour(deformed(nodes), tethered));
+  const MembraneState2D state =
+      ElasticMembrane2D(Contour(nodes, tethered), HookeanLaw2D(modulus)).evaluate(Contour(deformed(nodes), tethered));
   const int last = state.contour().numberOfSegments() - 1;
-  const Eigen::Vector2d jump =
-      state.tensionAt(0, 0.0) * state.contour().pointAt(0, 0.0).tangent -
-      state.tensionAt(last, 1.0) * state.contour().pointAt(last, 1.0).tangent;
+  const Eigen::Vector2d jump = state.tensionAt(0, 0.0) * state.contour().pointAt(0, 0.0).tangent -
+                               state.tensionAt(last, 1.0) * state.contour().pointAt(last, 1.0).tangent;
   const Eigen::Vector2d force = state.netForce(8);
-  std::printf("  tethered: net force (%.6e, %.6e), tension jump (%.6e, %.6e)\n", force.x(),
-              force.y(), jump.x(), jump.y());
+  std::printf("  tethered: net force (%.6e, %.6e), tension jump (%.6e, %.6e)\n", force.x(), force.y(), jump.x(),
+              jump.y());
   EXPECT_GT(jump.norm(), 1e-2);
   EXPECT_LT((force - jump).norm(), 1e-11 * jump.norm()); // quadrature error only
   // The per-node arrays carry the s -> 0+ side at the tether.
@@ -278,13 +269,13 @@ std::vector<double> tetherSlipForceErrors(const std::vector<int>& refinements, c
       const double phi = theta + eps * theta * (2.0 * pi - theta);
       slipped.col(i) = radius * Eigen::Vector2d(std::cos(phi), std::sin(phi));
     }
-    const MembraneState2D state = ElasticMembrane2D(Contour(reference, tethered), HookeanLaw2D(modulus))
-                                      .evaluate(Contour(slipped, tethered));
+    const MembraneState2D state =
+        ElasticMembrane2D(Contour(reference, tethered), HookeanLaw2D(modulus)).evaluate(Contour(slipped, tethered));
     const Eigen::Vector2d force = state.netForce(8);
     error.push_back((force - exact).norm() / exact.norm());
     std::printf("  %s ends, N = %3d: force (%.6e, %.6e), exact (0, %.6e), relative error %.3e\n",
-                ends == capsula::contour::TetherEnds::Natural ? "natural" : "not-a-knot", n, force.x(),
-                force.y(), exact.y(), error.back());
+                ends == capsula::contour::TetherEnds::Natural ? "natural" : "not-a-knot", n, force.x(), force.y(),
+                exact.y(), error.back());
   }
   return error;
 }
@@ -314,8 +305,7 @@ TEST(Tension2DLoad, RejectsMismatchedContours)
   const Contour reference(testEllipse(32));
   const ElasticMembrane2D membrane(reference, HookeanLaw2D(modulus));
   EXPECT_THROW(membrane.evaluate(Contour(testEllipse(33))), capsula::core::InputError);
-  EXPECT_THROW(membrane.evaluate(Contour(testEllipse(32), withClosure(Closure::Tethered))),
-               capsula::core::InputError);
+  EXPECT_THROW(membrane.evaluate(Contour(testEllipse(32), withClosure(Closure::Tethered))), capsula::core::InputError);
 }
 
 } // namespace

@@ -24,7 +24,6 @@ using capsula::greens::testing::norm;
 using capsula::greens::testing::Tensors;
 using V2 = capsula::greens::testing::Vec<2>;
 
-
 struct PointPair {
   V2 x;  // field point
   V2 x0; // pole
@@ -95,8 +94,8 @@ TYPED_TEST(StokesKernel2D, VelocityIsDivergenceFree)
     for (int j = 0; j < 2; ++j) {
       double divergence = 0.0;
       for (int i = 0; i < 2; ++i) {
-        divergence += centralDifference<2>(
-          [&](const V2& x) { return Tensors<TypeParam>(x, p.x0).G[i][j]; }, p.x, i, step);
+        divergence +=
+            centralDifference<2>([&](const V2& x) { return Tensors<TypeParam>(x, p.x0).G[i][j]; }, p.x, i, step);
       }
       EXPECT_NEAR(divergence, 0.0, differenceTolerance * scale) << "j = " << j;
     }
@@ -113,10 +112,10 @@ TYPED_TEST(StokesKernel2D, StressIsPressurePlusRateOfStrain)
     for (int i = 0; i < 2; ++i) {
       for (int j = 0; j < 2; ++j) {
         for (int k = 0; k < 2; ++k) {
-          const double dGijdxk = centralDifference<2>(
-            [&](const V2& x) { return Tensors<TypeParam>(x, p.x0).G[i][j]; }, p.x, k, step);
-          const double dGkjdxi = centralDifference<2>(
-            [&](const V2& x) { return Tensors<TypeParam>(x, p.x0).G[k][j]; }, p.x, i, step);
+          const double dGijdxk =
+              centralDifference<2>([&](const V2& x) { return Tensors<TypeParam>(x, p.x0).G[i][j]; }, p.x, k, step);
+          const double dGkjdxi =
+              centralDifference<2>([&](const V2& x) { return Tensors<TypeParam>(x, p.x0).G[k][j]; }, p.x, i, step);
           const double expected = -(i == k ? t.P[j] : 0.0) + dGijdxk + dGkjdxi;
           EXPECT_NEAR(t.T[i][j][k], expected, differenceTolerance * scale) << i << j << k;
         }
@@ -134,8 +133,8 @@ TYPED_TEST(StokesKernel2D, StressIsInEquilibrium)
       for (int j = 0; j < 2; ++j) {
         double divergence = 0.0;
         for (int k = 0; k < 2; ++k) {
-          divergence += centralDifference<2>(
-            [&](const V2& x) { return Tensors<TypeParam>(x, p.x0).T[i][j][k]; }, p.x, k, step);
+          divergence +=
+              centralDifference<2>([&](const V2& x) { return Tensors<TypeParam>(x, p.x0).T[i][j][k]; }, p.x, k, step);
         }
         EXPECT_NEAR(divergence, 0.0, differenceTolerance * scale) << i << j;
       }
@@ -153,8 +152,8 @@ TYPED_TEST(StokesKernel2D, StressletIsSolenoidalInThePole)
       for (int k = 0; k < 2; ++k) {
         double divergence = 0.0;
         for (int j = 0; j < 2; ++j) {
-          divergence += centralDifference<2>(
-            [&](const V2& x0) { return Tensors<TypeParam>(p.x, x0).T[i][j][k]; }, p.x0, j, step);
+          divergence +=
+              centralDifference<2>([&](const V2& x0) { return Tensors<TypeParam>(p.x, x0).T[i][j][k]; }, p.x0, j, step);
         }
         EXPECT_NEAR(divergence, 0.0, differenceTolerance * scale) << i << k;
       }
@@ -249,7 +248,7 @@ TEST(FreeSpaceKernel2D, SingleLayerOfUniformDensityOnCircle)
       for (int i = 0; i < 2; ++i) {
         for (int j = 0; j < 2; ++j) {
           EXPECT_NEAR(c.stokeslet[i][j], i == j ? expected : 0.0, circleTolerance * radius)
-            << "a = " << radius << " " << i << j;
+              << "a = " << radius << " " << i << j;
         }
       }
     }

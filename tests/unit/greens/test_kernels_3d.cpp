@@ -26,7 +26,6 @@ using capsula::greens::testing::norm;
 using capsula::greens::testing::Tensors;
 using V3 = capsula::greens::testing::Vec<3>;
 
-
 struct PointPair {
   V3 x;  // field point
   V3 x0; // pole
@@ -101,8 +100,8 @@ TYPED_TEST(StokesKernel3D, VelocityIsDivergenceFree)
     for (int j = 0; j < 3; ++j) {
       double divergence = 0.0;
       for (int i = 0; i < 3; ++i) {
-        divergence += centralDifference<3>(
-          [&](const V3& x) { return Tensors<TypeParam>(x, p.x0).G[i][j]; }, p.x, i, step);
+        divergence +=
+            centralDifference<3>([&](const V3& x) { return Tensors<TypeParam>(x, p.x0).G[i][j]; }, p.x, i, step);
       }
       EXPECT_NEAR(divergence, 0.0, differenceTolerance * scale) << "j = " << j;
     }
@@ -119,10 +118,10 @@ TYPED_TEST(StokesKernel3D, StressIsPressurePlusRateOfStrain)
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
         for (int k = 0; k < 3; ++k) {
-          const double dGijdxk = centralDifference<3>(
-            [&](const V3& x) { return Tensors<TypeParam>(x, p.x0).G[i][j]; }, p.x, k, step);
-          const double dGkjdxi = centralDifference<3>(
-            [&](const V3& x) { return Tensors<TypeParam>(x, p.x0).G[k][j]; }, p.x, i, step);
+          const double dGijdxk =
+              centralDifference<3>([&](const V3& x) { return Tensors<TypeParam>(x, p.x0).G[i][j]; }, p.x, k, step);
+          const double dGkjdxi =
+              centralDifference<3>([&](const V3& x) { return Tensors<TypeParam>(x, p.x0).G[k][j]; }, p.x, i, step);
           const double expected = -(i == k ? t.P[j] : 0.0) + dGijdxk + dGkjdxi;
           EXPECT_NEAR(t.T[i][j][k], expected, differenceTolerance * scale) << i << j << k;
         }
@@ -141,8 +140,8 @@ TYPED_TEST(StokesKernel3D, StressIsInEquilibrium)
       for (int j = 0; j < 3; ++j) {
         double divergence = 0.0;
         for (int k = 0; k < 3; ++k) {
-          divergence += centralDifference<3>(
-            [&](const V3& x) { return Tensors<TypeParam>(x, p.x0).T[i][j][k]; }, p.x, k, step);
+          divergence +=
+              centralDifference<3>([&](const V3& x) { return Tensors<TypeParam>(x, p.x0).T[i][j][k]; }, p.x, k, step);
         }
         EXPECT_NEAR(divergence, 0.0, differenceTolerance * scale) << i << j;
       }
@@ -161,8 +160,8 @@ TYPED_TEST(StokesKernel3D, StressletIsSolenoidalInThePole)
       for (int k = 0; k < 3; ++k) {
         double divergence = 0.0;
         for (int j = 0; j < 3; ++j) {
-          divergence += centralDifference<3>(
-            [&](const V3& x0) { return Tensors<TypeParam>(p.x, x0).T[i][j][k]; }, p.x0, j, step);
+          divergence +=
+              centralDifference<3>([&](const V3& x0) { return Tensors<TypeParam>(p.x, x0).T[i][j][k]; }, p.x0, j, step);
         }
         EXPECT_NEAR(divergence, 0.0, differenceTolerance * scale) << i << k;
       }
@@ -226,8 +225,7 @@ TYPED_TEST(StokesKernel3D, TractionOfStressletOverClosedSurface)
     const SphereIntegrals s = integrateOverSphere<TypeParam>(sphereCentre, sphereRadius, pole);
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
-        EXPECT_NEAR(s.tractionOfStresslet[i][j], i == j ? -8.0 * pi : 0.0, sphereTolerance)
-          << i << j;
+        EXPECT_NEAR(s.tractionOfStresslet[i][j], i == j ? -8.0 * pi : 0.0, sphereTolerance) << i << j;
       }
     }
   }
@@ -264,9 +262,8 @@ TEST(FreeSpaceKernel3D, SingleLayerOfUniformDensityOnSphere)
       const SphereIntegrals s = integrateOverSphere<FreeSpace3D>(sphereCentre, radius, pole);
       for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
-          EXPECT_NEAR(s.stokeslet[i][j], i == j ? 16.0 * pi * radius / 3.0 : 0.0,
-                      sphereTolerance * radius)
-            << "a = " << radius << " " << i << j;
+          EXPECT_NEAR(s.stokeslet[i][j], i == j ? 16.0 * pi * radius / 3.0 : 0.0, sphereTolerance * radius)
+              << "a = " << radius << " " << i << j;
         }
       }
     }

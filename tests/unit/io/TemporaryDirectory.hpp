@@ -12,8 +12,7 @@ namespace capsula::io::testing {
 class TemporaryDirectory {
 public:
   explicit TemporaryDirectory(const std::string& name)
-    : path_(std::filesystem::temp_directory_path() /
-            ("capsula_io_" + name + "_" + std::to_string(::getpid())))
+      : path_(std::filesystem::temp_directory_path() / ("capsula_io_" + name + "_" + std::to_string(::getpid())))
   {
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);

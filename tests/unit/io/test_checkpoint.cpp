@@ -42,7 +42,7 @@ io::Checkpoint sampleCheckpoint()
   std::vector<double> state(30000);
   for (auto& x : state) {
     std::uint64_t bits = random();
-    std::memcpy(&x, &bits, sizeof(double));   // every bit pattern, NaN payloads included
+    std::memcpy(&x, &bits, sizeof(double)); // every bit pattern, NaN payloads included
   }
   state[0] = -0.0;
   state[1] = std::numeric_limits<double>::denorm_min();

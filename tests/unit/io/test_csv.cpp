@@ -61,7 +61,7 @@ TEST(MetricsCsv, FileIsCompleteAfterEveryRowAndNoTemporaryIsLeft)
   TemporaryDirectory dir("csv_complete");
   const std::string path = dir.file("metrics.csv");
   io::MetricsCsv csv(path, {"time", "D12"});
-  EXPECT_EQ(io::readCsvTable(path).rows.size(), 0u);   // header written at once
+  EXPECT_EQ(io::readCsvTable(path).rows.size(), 0u); // header written at once
   for (int k = 0; k < 5; ++k) {
     csv.appendRow({0.5 * k, 0.01 * k});
     const auto table = io::readCsvTable(path);
@@ -116,7 +116,9 @@ TEST(MetricsCsv, RestartRefusesAMissingFileOrOtherColumns)
   } catch (const core::IoError& e) {
     EXPECT_TRUE(io::testing::contains(e.what(), path)) << e.what();
   }
-  { io::MetricsCsv csv(path, {"time", "D12"}); }
+  {
+    io::MetricsCsv csv(path, {"time", "D12"});
+  }
   try {
     io::MetricsCsv::resume(path, {"time", "D13"}, 1.0);
     FAIL() << "a table with other columns was accepted";

@@ -39,7 +39,8 @@ private:
   }
   void skipSpace()
   {
-    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\n' || text_[pos_] == '\t' || text_[pos_] == '\r')) {
+    while (pos_ < text_.size() &&
+           (text_[pos_] == ' ' || text_[pos_] == '\n' || text_[pos_] == '\t' || text_[pos_] == '\r')) {
       ++pos_;
     }
   }
@@ -74,14 +75,30 @@ private:
       }
       const char e = text_.at(pos_++);
       switch (e) {
-      case '"': out += '"'; break;
-      case '\\': out += '\\'; break;
-      case '/': out += '/'; break;
-      case 'b': out += '\b'; break;
-      case 'f': out += '\f'; break;
-      case 'n': out += '\n'; break;
-      case 'r': out += '\r'; break;
-      case 't': out += '\t'; break;
+      case '"':
+        out += '"';
+        break;
+      case '\\':
+        out += '\\';
+        break;
+      case '/':
+        out += '/';
+        break;
+      case 'b':
+        out += '\b';
+        break;
+      case 'f':
+        out += '\f';
+        break;
+      case 'n':
+        out += '\n';
+        break;
+      case 'r':
+        out += '\r';
+        break;
+      case 't':
+        out += '\t';
+        break;
       case 'u': {
         const long code = std::strtol(text_.substr(pos_, 4).c_str(), nullptr, 16);
         if (code >= 0x80) {
@@ -91,7 +108,8 @@ private:
         pos_ += 4;
         break;
       }
-      default: fail("bad escape");
+      default:
+        fail("bad escape");
       }
     }
     expect('"');
@@ -178,10 +196,18 @@ void expectSameValue(const io::JsonValue& a, const io::JsonValue& b, const std::
 {
   ASSERT_EQ(static_cast<int>(a.kind()), static_cast<int>(b.kind())) << path;
   switch (a.kind()) {
-  case io::JsonValue::Kind::Boolean: EXPECT_EQ(a.asBoolean(), b.asBoolean()) << path; break;
-  case io::JsonValue::Kind::Integer: EXPECT_EQ(a.asInteger(), b.asInteger()) << path; break;
-  case io::JsonValue::Kind::Number: EXPECT_EQ(a.asNumber(), b.asNumber()) << path; break;   // exact
-  case io::JsonValue::Kind::String: EXPECT_EQ(a.asString(), b.asString()) << path; break;
+  case io::JsonValue::Kind::Boolean:
+    EXPECT_EQ(a.asBoolean(), b.asBoolean()) << path;
+    break;
+  case io::JsonValue::Kind::Integer:
+    EXPECT_EQ(a.asInteger(), b.asInteger()) << path;
+    break;
+  case io::JsonValue::Kind::Number:
+    EXPECT_EQ(a.asNumber(), b.asNumber()) << path;
+    break; // exact
+  case io::JsonValue::Kind::String:
+    EXPECT_EQ(a.asString(), b.asString()) << path;
+    break;
   case io::JsonValue::Kind::Array:
     ASSERT_EQ(a.items().size(), b.items().size()) << path;
     for (std::size_t i = 0; i < a.items().size(); ++i) {
@@ -195,7 +221,8 @@ void expectSameValue(const io::JsonValue& a, const io::JsonValue& b, const std::
       expectSameValue(a.members()[i].second, b.members()[i].second, path + "/" + a.members()[i].first);
     }
     break;
-  case io::JsonValue::Kind::Null: break;
+  case io::JsonValue::Kind::Null:
+    break;
   }
 }
 
@@ -204,7 +231,7 @@ io::JsonValue sampleDocument()
   io::JsonValue doc = io::JsonValue::object();
   doc["application"] = "cell3d";
   doc["cells"] = 2;
-  doc["steps"] = static_cast<long long>(9007199254740993LL);   // > 2^53: must stay exact
+  doc["steps"] = static_cast<long long>(9007199254740993LL); // > 2^53: must stay exact
   doc["converged"] = true;
   doc["D12"]["max"] = 0.538;
   doc["D12"]["time of max"] = 1.0 / 3.0;
@@ -231,7 +258,7 @@ TEST(Json, CompactTextIsExact)
   doc["n"] = io::JsonValue();
   doc["t"] = true;
   doc["o"] = io::JsonValue::object();
-  doc["a"] = 2;   // assigning an existing key replaces it in place
+  doc["a"] = 2; // assigning an existing key replaces it in place
   EXPECT_EQ(io::toJson(doc, 0), R"({"a":2,"b":[1.0,2.5],"s":"q\"\\\n\u0001","n":null,"t":true,"o":{}})");
 }
 
@@ -261,7 +288,7 @@ TEST(Json, NonFiniteNumbersAreWrittenAsNullWithANote)
   ASSERT_EQ(members[2].second.items().size(), 2u);
   EXPECT_EQ(members[2].second.items()[0].asString(), "D12/max");
   EXPECT_EQ(members[2].second.items()[1].asString(), "series/1");
-  EXPECT_EQ(dir.entryCount(), 1u);   // no temporary left
+  EXPECT_EQ(dir.entryCount(), 1u); // no temporary left
 }
 
 TEST(Json, TheTestParserRejectsMalformedText)

@@ -27,8 +27,8 @@ TEST(OutputDirectory, CreatesTheDirectoryAndRecordsTheRun)
   auto& flow = core::declareSublist(*valid, "Flow", "Ambient flow");
   core::declareReal(flow, "Capillary number", 0.3, "Ca", core::greaterThan(0.0));
   auto deck = core::readDeckFromString(
-    R"(<ParameterList name="Capsula"><ParameterList name="Flow"><Parameter name="Capillary number" type="double" value="0.9"/></ParameterList></ParameterList>)",
-    "case1.xml");
+      R"(<ParameterList name="Capsula"><ParameterList name="Flow"><Parameter name="Capillary number" type="double" value="0.9"/></ParameterList></ParameterList>)",
+      "case1.xml");
   core::validateDeck(*deck, *valid, "case1.xml");
   out.writeRunMetadata(*deck, {"cell3d", "decks/case1.xml", 4});
 

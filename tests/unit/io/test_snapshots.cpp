@@ -48,8 +48,8 @@ io::SnapshotBlock squareSurface(double t)
   for (const auto& p : xy) {
     b.positions.insert(b.positions.end(), {p[0] + t, p[1], 0.1 * t});
   }
-  b.connectivity = {0, 1, 2, 4, 5, 6,    // lower right triangle
-                    0, 2, 3, 6, 7, 8};   // upper left triangle
+  b.connectivity = {0, 1, 2, 4, 5, 6,  // lower right triangle
+                    0, 2, 3, 6, 7, 8}; // upper left triangle
   io::Field velocity{"velocity", 3, {}}, tension{"tension", 1, {}}, load{"load", 3, {}};
   for (int i = 0; i < 9; ++i) {
     velocity.values.insert(velocity.values.end(), {1.0 / (i + 1), -0.5 * i, t});
@@ -109,7 +109,7 @@ io::Snapshot sampleSnapshot(double t, std::int64_t step)
 
 struct RawDataset {
   std::vector<hsize_t> shape;
-  std::vector<double> values;   // integers converted by HDF5 on read
+  std::vector<double> values; // integers converted by HDF5 on read
 };
 
 bool pathExists(hid_t file, const std::string& path)
@@ -217,7 +217,10 @@ public:
   }
 
 private:
-  [[noreturn]] void fail(const std::string& why) { throw std::runtime_error("XML error at " + std::to_string(pos_) + ": " + why); }
+  [[noreturn]] void fail(const std::string& why)
+  {
+    throw std::runtime_error("XML error at " + std::to_string(pos_) + ": " + why);
+  }
   void skipSpace()
   {
     while (pos_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[pos_])) != 0) {
@@ -227,7 +230,8 @@ private:
   std::string name()
   {
     const std::size_t start = pos_;
-    while (pos_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[pos_])) != 0 || s_[pos_] == '_' || s_[pos_] == ':' || s_[pos_] == '-')) {
+    while (pos_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[pos_])) != 0 || s_[pos_] == '_' ||
+                                s_[pos_] == ':' || s_[pos_] == '-')) {
       ++pos_;
     }
     if (pos_ == start) {
@@ -248,7 +252,8 @@ private:
       }
       const std::size_t end = t.find(';', i);
       const std::string entity = t.substr(i, end - i + 1);
-      const std::map<std::string, char> known = {{"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
+      const std::map<std::string, char> known = {
+          {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
       if (end == std::string::npos || known.count(entity) == 0) {
         fail("unknown entity");
       }
@@ -356,7 +361,6 @@ std::size_t checkXdmfReferences(const std::string& directory, const XmlElement& 
   return items.size();
 }
 
-
 /// Every value of `b` equals `a` (bit for bit: nothing is converted on the way).
 void expectSameSnapshot(const io::Snapshot& a, const io::Snapshot& b)
 {
@@ -376,7 +380,7 @@ void expectSameSnapshot(const io::Snapshot& a, const io::Snapshot& b)
     for (const auto& [xs, ys] : {std::pair{&x.nodeFields, &y.nodeFields}, std::pair{&x.cellFields, &y.cellFields}}) {
       ASSERT_EQ(ys->size(), xs->size());
       for (std::size_t f = 0; f < xs->size(); ++f) {
-        EXPECT_EQ((*ys)[f].name, (*xs)[f].name);   // in write order
+        EXPECT_EQ((*ys)[f].name, (*xs)[f].name); // in write order
         EXPECT_EQ((*ys)[f].components, (*xs)[f].components);
         EXPECT_EQ((*ys)[f].values, (*xs)[f].values);
       }
@@ -408,7 +412,7 @@ TEST(SnapshotFile, DatasetsReadBackExactlyWithThePlainHdf5Api)
   const io::SnapshotLayout layout = io::appendSnapshot(path, s);
   EXPECT_EQ(layout.group, "/snapshots/000000");
   EXPECT_EQ(layout.meshGroup, "/mesh/000000");
-  EXPECT_EQ(dir.entryCount(), 1u);   // no temporary left behind
+  EXPECT_EQ(dir.entryCount(), 1u); // no temporary left behind
 
   EXPECT_EQ(rawAttribute(path, "/snapshots/000000", "time"), 0.75);
   EXPECT_EQ(rawAttribute(path, "/snapshots/000000", "step"), 42.0);
@@ -468,11 +472,11 @@ TEST(SnapshotFile, ChangedConnectivityGetsANewMeshVersion)
   io::createSnapshotFile(path);
   const io::Snapshot before = sampleSnapshot(0.0, 0);
   io::Snapshot after = sampleSnapshot(0.5, 1);
-  after.blocks[0].connectivity = {0, 1, 3, 4, 6, 8,    // the square split along the other diagonal
+  after.blocks[0].connectivity = {0, 1, 3, 4, 6, 8, // the square split along the other diagonal
                                   1, 2, 3, 5, 7, 6};
   io::appendSnapshot(path, before);
   EXPECT_EQ(io::appendSnapshot(path, after).meshGroup, "/mesh/000001");
-  EXPECT_EQ(io::appendSnapshot(path, after).meshGroup, "/mesh/000001");   // unchanged again: reused
+  EXPECT_EQ(io::appendSnapshot(path, after).meshGroup, "/mesh/000001"); // unchanged again: reused
   EXPECT_EQ(rawMembers(path, "/mesh"), (std::vector<std::string>{"000000", "000001"}));
   expectSameSnapshot(before, io::readSnapshot(path, 0));
   expectSameSnapshot(after, io::readSnapshot(path, 1));
@@ -487,7 +491,7 @@ TEST(SnapshotFile, InconsistentBlocksAreRefusedBeforeWriting)
   io::appendSnapshot(path, sampleSnapshot(0.0, 0));
   const std::string before = io::testing::readText(path);
   io::Snapshot s = sampleSnapshot(0.5, 1);
-  s.blocks[0].connectivity[3] = 9;   // node 9 of 9
+  s.blocks[0].connectivity[3] = 9; // node 9 of 9
   try {
     io::appendSnapshot(path, s);
     FAIL() << "a connectivity index out of range was written";
@@ -503,7 +507,7 @@ TEST(SnapshotFile, InconsistentBlocksAreRefusedBeforeWriting)
   s = sampleSnapshot(0.5, 1);
   s.blocks[1].name = s.blocks[0].name;
   EXPECT_THROW(io::appendSnapshot(path, s), core::Error);
-  EXPECT_EQ(io::testing::readText(path), before);   // the file was not even opened for writing
+  EXPECT_EQ(io::testing::readText(path), before); // the file was not even opened for writing
   EXPECT_EQ(dir.entryCount(), 1u);
 }
 
@@ -533,14 +537,14 @@ TEST(SnapshotSeries, XdmfIsWellFormedAndReferencesExistingDatasets)
   for (int k = 0; k < 3; ++k) {
     EXPECT_EQ(series.write(sampleSnapshot(0.5 * k, 10 * k)), static_cast<std::size_t>(k));
   }
-  EXPECT_EQ(dir.entryCount(), 2u);   // snapshots.h5 and snapshots.xdmf, no temporaries
+  EXPECT_EQ(dir.entryCount(), 2u); // snapshots.h5 and snapshots.xdmf, no temporaries
   const XmlElement root = XmlReader(io::testing::readText(series.xdmfPath())).document();
   EXPECT_EQ(root.name, "Xdmf");
   std::vector<const XmlElement*> topologies, grids;
   collect(root, "Topology", topologies);
   collect(root, "Grid", grids);
   EXPECT_EQ(xdmfTimes(series.xdmfPath()), (std::vector<std::string>{"0", "0.5", "1"}));
-  EXPECT_EQ(grids.size(), 1u + 3u * (1u + 3u));   // temporal, 3 spatial, 3 blocks each
+  EXPECT_EQ(grids.size(), 1u + 3u * (1u + 3u)); // temporal, 3 spatial, 3 blocks each
   ASSERT_EQ(topologies.size(), 9u);
   EXPECT_EQ(topologies[0]->attributes.at("TopologyType"), "Triangle_6");
   EXPECT_EQ(topologies[0]->attributes.at("NumberOfElements"), "2");
@@ -560,11 +564,11 @@ TEST(SnapshotSeries, RestartTruncatesTheSnapshotsAfterTheCheckpoint)
   {
     io::SnapshotSeries series(dir.path().string(), "snapshots");
     for (int k = 0; k < 5; ++k) {
-      series.write(sampleSnapshot(0.5 * k, k));   // t = 0 .. 2
+      series.write(sampleSnapshot(0.5 * k, k)); // t = 0 .. 2
     }
   }
   auto series = io::SnapshotSeries::resume(dir.path().string(), "snapshots", 1.0);
-  EXPECT_EQ(series.size(), 3u);   // t = 0, 0.5, 1
+  EXPECT_EQ(series.size(), 3u); // t = 0, 0.5, 1
   EXPECT_EQ(rawMembers(series.filePath(), "/snapshots"), (std::vector<std::string>{"000000", "000001", "000002"}));
   EXPECT_EQ(xdmfTimes(series.xdmfPath()), (std::vector<std::string>{"0", "0.5", "1"}));
   EXPECT_EQ(series.write(sampleSnapshot(1.5, 3)), 3u);
@@ -604,7 +608,8 @@ TEST(SnapshotSeries, RestartedSeriesEqualsTheUninterruptedOne)
   for (std::size_t k = 0; k < run.size(); ++k) {
     expectSameSnapshot(io::readSnapshot(wholeFile, k), io::readSnapshot(restartedFile, k));
   }
-  EXPECT_EQ(io::testing::readText(restarted.file("snapshots.xdmf")), io::testing::readText(whole.file("snapshots.xdmf")));
+  EXPECT_EQ(io::testing::readText(restarted.file("snapshots.xdmf")),
+            io::testing::readText(whole.file("snapshots.xdmf")));
 }
 
 TEST(SnapshotSeries, RunStoppedBetweenFileAndXdmfLeavesBothReadable)
@@ -620,14 +625,12 @@ TEST(SnapshotSeries, RunStoppedBetweenFileAndXdmfLeavesBothReadable)
   const std::string file = dir.file("snapshots.h5"), xdmf = dir.file("snapshots.xdmf");
   EXPECT_EQ(io::readSnapshotLayouts(file).size(), 3u);
   EXPECT_EQ(xdmfTimes(xdmf), (std::vector<std::string>{"0", "0.5"}));
-  EXPECT_EQ(checkXdmfReferences(dir.path().string(), XmlReader(io::testing::readText(xdmf)).document()),
-            2u * 11u);
+  EXPECT_EQ(checkXdmfReferences(dir.path().string(), XmlReader(io::testing::readText(xdmf)).document()), 2u * 11u);
   // Restart from a checkpoint at t = 1: the snapshot is kept and the XDMF names it again.
   auto series = io::SnapshotSeries::resume(dir.path().string(), "snapshots", 1.0);
   EXPECT_EQ(xdmfTimes(xdmf), (std::vector<std::string>{"0", "0.5", "1"}));
   series.write(sampleSnapshot(1.5, 3));
-  EXPECT_EQ(checkXdmfReferences(dir.path().string(), XmlReader(io::testing::readText(xdmf)).document()),
-            4u * 11u);
+  EXPECT_EQ(checkXdmfReferences(dir.path().string(), XmlReader(io::testing::readText(xdmf)).document()), 4u * 11u);
 }
 
 TEST(SnapshotSeries, BytesOfAnAppendKilledBeforeItsFlushAreHarmless)
@@ -721,7 +724,7 @@ TEST(SnapshotSeries, AWriterKilledAnywhereInAnAppendLosesNothing)
   }
   std::printf("%d kills, %d appends finished\n", killed, finished);
   EXPECT_GT(killed, 0);
-  EXPECT_GT(finished, 0);   // the largest limits let the append through
+  EXPECT_GT(finished, 0); // the largest limits let the append through
 }
 
 TEST(SnapshotSeries, AWriterKilledWhileRewritingTheFileLosesNothing)
@@ -768,7 +771,7 @@ TEST(SnapshotSeries, AWriterKilledWhileRewritingTheFileLosesNothing)
   }
   std::printf("%d kills (%d while rewriting the existing file), %d truncations finished\n", killed,
               killedWhileRewriting, finished);
-  EXPECT_GT(killedWhileRewriting, 0);   // the dangerous part was hit
+  EXPECT_GT(killedWhileRewriting, 0); // the dangerous part was hit
   EXPECT_GT(finished, 0);
 }
 
@@ -780,7 +783,7 @@ TEST(SnapshotSeries, ADamagedFileIsNamedOnRestart)
     series.write(sampleSnapshot(0.0, 0));
   }
   const std::string file = dir.file("snapshots.h5");
-  std::filesystem::resize_file(file, 512);   // the superblock survives, the rest is gone
+  std::filesystem::resize_file(file, 512); // the superblock survives, the rest is gone
   try {
     io::SnapshotSeries::resume(dir.path().string(), "snapshots", 1.0);
     FAIL() << "a damaged snapshot file was continued";
@@ -803,7 +806,7 @@ TEST(SnapshotSeries, RestartIntoAnotherDirectoryCarriesTheSeriesOver)
   EXPECT_EQ(series.size(), 2u);
   series.write(sampleSnapshot(1.25, 5));
   EXPECT_EQ(xdmfTimes(to.file("snapshots.xdmf")), (std::vector<std::string>{"0", "0.5", "1.25"}));
-  EXPECT_EQ(io::readSnapshotLayouts(from.file("snapshots.h5")).size(), 3u);   // the source is untouched
+  EXPECT_EQ(io::readSnapshotLayouts(from.file("snapshots.h5")).size(), 3u); // the source is untouched
   // Without snapshots in the source (they were off), a new series starts.
   TemporaryDirectory none("series_none");
   EXPECT_EQ(io::SnapshotSeries::resume(to.path().string(), "snapshots", 0.5, none.path().string()).size(), 0u);

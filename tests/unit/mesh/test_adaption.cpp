@@ -31,7 +31,7 @@ namespace {
 /// V - E + F = 2 (a sphere).
 void expectClosedAndConforming(const SurfaceMesh& mesh)
 {
-  std::map<std::pair<int, int>, std::pair<int, int>> directed;  // (a, b) -> (count, mid)
+  std::map<std::pair<int, int>, std::pair<int, int>> directed; // (a, b) -> (count, mid)
   for (const ElementConnectivity& el : mesh.elements()) {
     for (int k = 0; k < 3; ++k) {
       const auto l = localEdgeNodes(k);
@@ -54,7 +54,7 @@ void expectClosedAndConforming(const SurfaceMesh& mesh)
 /// (xi, eta) with x(xi, eta) closest to `target` on the element map (Gauss-Newton from
 /// the centroid), and the remaining distance.
 std::pair<std::array<double, 2>, double> parametricPoint(const ElementNodes& x, const ShapeParameters& p,
-                                                          const Vec3& target)
+                                                         const Vec3& target)
 {
   std::array<double, 2> c{1.0 / 3.0, 1.0 / 3.0};
   for (int it = 0; it < 30; ++it) {
@@ -96,7 +96,10 @@ SplitCounts countSplits(const std::vector<ElementSplit>& splits)
   return c;
 }
 
-double relativeChange(double after, double before) { return (after - before) / before; }
+double relativeChange(double after, double before)
+{
+  return (after - before) / before;
+}
 
 /// Every node of every child lies on its parent's map, the new ones at the parametric
 /// midpoints of the child's edges; every field was interpolated with that same map; and
@@ -134,7 +137,7 @@ void expectNodesOnParentMaps(const SurfaceMesh& old, const std::vector<std::vect
     for (int k = 0; k < 3; ++k) {
       const auto l = localEdgeNodes(k);
       if (refined.mesh.element(e)[static_cast<std::size_t>(l[2])] < old.numNodes()) {
-        continue;  // an old midside node: it stays at the parent's eq 3.17 point
+        continue; // an old midside node: it stays at the parent's eq 3.17 point
       }
       for (int d = 0; d < 2; ++d) {
         const double mid = 0.5 * (c[static_cast<std::size_t>(l[0])][static_cast<std::size_t>(d)] +
@@ -194,8 +197,8 @@ TEST(Refinement, PolarCapOfASphereStaysClosedConformingAndKeepsItsVolume)
   const MeshQuality before = meshQuality(sphere), after = meshQuality(refined.mesh);
   std::printf("sphere level 2, %zu marked: N_E %d -> %d (red %d, blue %d, green %d), dV/V = %.2e, "
               "dA/A = %.2e, min angle %.1f -> %.1f deg\n",
-              marked.size(), sphere.numElements(), refined.mesh.numElements(), c.red, c.blue, c.green, dV,
-              dA, before.minAngle, after.minAngle);
+              marked.size(), sphere.numElements(), refined.mesh.numElements(), c.red, c.blue, c.green, dV, dA,
+              before.minAngle, after.minAngle);
   EXPECT_LT(std::abs(dV), 1e-6);
   EXPECT_LT(std::abs(dA), 1e-6);
   // Bisecting a near-equilateral element halves one angle: ~30 degrees.
@@ -210,7 +213,7 @@ TEST(Refinement, NewNodesLieOnTheParentMapsInBothConfigurations)
   for (const bool sphereIsCurrent : {true, false}) {
     const SurfaceMesh sphere = makeSphere(2, 1.0);
     const SurfaceMesh ellipsoid = makeEllipsoid(2, ellipsoidAxes);
-    const SurfaceMesh& current = sphereIsCurrent ? sphere : ellipsoid;  // ellipsoid: alpha != 1/2
+    const SurfaceMesh& current = sphereIsCurrent ? sphere : ellipsoid; // ellipsoid: alpha != 1/2
     const SurfaceMesh& reference = sphereIsCurrent ? ellipsoid : sphere;
     std::vector<double> scalar;
     for (int i = 0; i < reference.numNodes(); ++i) {
@@ -253,7 +256,7 @@ TEST(Refinement, UniformRefinementOfTheIcosphere)
     all[static_cast<std::size_t>(e)] = e;
   }
   const RefinedMesh refined = refineElements(coarse, all);
-  EXPECT_EQ(refined.mesh.numElements(), 1280);  // Table 3.1, level 3
+  EXPECT_EQ(refined.mesh.numElements(), 1280); // Table 3.1, level 3
   EXPECT_EQ(refined.mesh.numNodes(), 2562);
   EXPECT_EQ(countSplits(refined.splits).red, 320);
   expectClosedAndConforming(refined.mesh);
@@ -310,7 +313,8 @@ TEST(Refinement, RepeatedRandomRefinementKeepsHalfTheSmallestAngle)
 TEST(Refinement, NothingMarkedGivesTheSameMesh)
 {
   const SurfaceMesh mesh = makeIcosphere(1);
-  const RefinedMesh refined = refineElements(mesh, {}, {std::vector<double>(static_cast<std::size_t>(mesh.numNodes()), 1.0)});
+  const RefinedMesh refined =
+      refineElements(mesh, {}, {std::vector<double>(static_cast<std::size_t>(mesh.numNodes()), 1.0)});
   EXPECT_EQ(refined.mesh.elements(), mesh.elements());
   EXPECT_EQ(refined.mesh.positions(), mesh.positions());
   EXPECT_EQ(countSplits(refined.splits).kept, mesh.numElements());
@@ -389,8 +393,7 @@ TEST(Adaption, ProlateEllipsoidRefinesTowardsItsTips)
     double& largest = z > 1.9 ? largestAtTips : largestOnFlanks;
     largest = std::max(largest, areas[static_cast<std::size_t>(e)]);
   }
-  std::printf("largest element area: %.2e at the tips (|z| > 1.9), %.2e elsewhere\n", largestAtTips,
-              largestOnFlanks);
+  std::printf("largest element area: %.2e at the tips (|z| > 1.9), %.2e elsewhere\n", largestAtTips, largestOnFlanks);
   EXPECT_LT(4.0 * largestAtTips, largestOnFlanks);
 }
 
@@ -403,7 +406,7 @@ TEST(Adaption, RefinedDeformedShapeKeepsItsAreaAndVolume)
   const SurfaceMesh cell = makeBiconcaveCell(3);
   AdaptionOptions options;
   options.curvature = CurvatureMethod::ElementAverage;
-  options.threshold = 0.08;  // Q reaches 0.12 at the rim at level 3: refines ~1/5 of the cell
+  options.threshold = 0.08; // Q reaches 0.12 at the rim at level 3: refines ~1/5 of the cell
   const RefinedMesh refined = adaptToCurvature(cell, {}, options);
   const SplitCounts c = countSplits(refined.splits);
   ASSERT_GT(c.red, 0);
@@ -417,8 +420,11 @@ TEST(Adaption, RefinedDeformedShapeKeepsItsAreaAndVolume)
     }
     const ElementNodes child = refined.mesh.elementNodes(e);
     const ElementNodes x = cell.elementNodes(parent);
-    for (const auto& [xi, eta] : std::vector<std::pair<double, double>>{{1.0 / 3, 1.0 / 3}, {0.25, 0.25}, {0.6, 0.2}, {0.1, 0.7}}) {
-      deviation = std::max(deviation, parametricPoint(x, shapeParameters(x), surfacePosition(child, shapeParameters(child), xi, eta)).second);
+    for (const auto& [xi, eta] :
+         std::vector<std::pair<double, double>>{{1.0 / 3, 1.0 / 3}, {0.25, 0.25}, {0.6, 0.2}, {0.1, 0.7}}) {
+      deviation = std::max(
+          deviation,
+          parametricPoint(x, shapeParameters(x), surfacePosition(child, shapeParameters(child), xi, eta)).second);
     }
   }
   const double dV = relativeChange(enclosedVolume(refined.mesh), enclosedVolume(cell));
@@ -427,8 +433,7 @@ TEST(Adaption, RefinedDeformedShapeKeepsItsAreaAndVolume)
   const double quadrature = relativeChange(surfaceArea(cell, 7), surfaceArea(cell, 13));
   std::printf("biconcave level 3: N_E %d -> %d (red %d, blue %d, green %d), dV/V %.1e, dA/A %.1e "
               "(N_Q = 7 vs 13 on the parent: %.1e), child-to-parent surface distance %.1e (cell radius 1)\n",
-              cell.numElements(), refined.mesh.numElements(), c.red, c.blue, c.green, dV, dA, quadrature,
-              deviation);
+              cell.numElements(), refined.mesh.numElements(), c.red, c.blue, c.green, dV, dA, quadrature, deviation);
   // Measured 1.2e-5, far inside the O(h^3) distance of the mesh from the true cell.
   EXPECT_LT(deviation, 5e-5);
   // Measured 3e-7 and 1.4e-7: the re-parametrisation, not quadrature (6e-9 at N_Q = 7).
@@ -445,7 +450,7 @@ TEST(Adaption, MembraneMeshNewNodesAreMaterialPoints)
 {
   const SurfaceMesh sphere = makeIcosphere(2);
   const std::vector<double> X = sphere.positions();
-  const Vec3 stretch(0.6, 0.6, 2.5);   // volume-preserving-ish, strongly curved tips
+  const Vec3 stretch(0.6, 0.6, 2.5); // volume-preserving-ish, strongly curved tips
   std::vector<double> x = X;
   for (std::size_t i = 0; i < x.size(); ++i) {
     x[i] *= stretch[static_cast<Eigen::Index>(i % 3)];
@@ -453,7 +458,7 @@ TEST(Adaption, MembraneMeshNewNodesAreMaterialPoints)
   SurfaceMesh current = sphere;
   current.setPositions(x);
   AdaptionOptions options;
-  options.threshold = 0.5;   // the tips (Q ~ 2), not the flanks (~0.2)
+  options.threshold = 0.5; // the tips (Q ~ 2), not the flanks (~0.2)
   const AdaptedMembraneMesh adapted = adaptMembraneMesh(current, X, options, 100000);
   ASSERT_GT(adapted.markedElements, 0);
   EXPECT_GT(adapted.current.numElements(), current.numElements());
@@ -471,7 +476,7 @@ TEST(Adaption, MembraneMeshNewNodesAreMaterialPoints)
   for (int node = current.numNodes(); node < adapted.current.numNodes(); ++node) {
     (std::abs(adapted.current.position(node)[2]) > 1.5 ? atTips : elsewhere) += 1;
   }
-  EXPECT_GT(atTips, 4 * elsewhere);   // measured 440 and 24
+  EXPECT_GT(atTips, 4 * elsewhere); // measured 440 and 24
   // The cap: no refinement that would pass maxElements.
   const AdaptedMembraneMesh capped = adaptMembraneMesh(current, X, options, current.numElements() + 1);
   EXPECT_EQ(capped.markedElements, 0);

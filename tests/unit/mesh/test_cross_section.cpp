@@ -15,7 +15,6 @@ using namespace capsula::mesh;
 
 namespace {
 
-
 /// Signed area of a closed planar polyline about `normal` (shoelace in 3D).
 double signedArea(const Polyline& line, const Vec3& normal)
 {
@@ -83,9 +82,9 @@ TEST(MeshCrossSection, RedCellProfileFollowsEvansFung)
     const double s = std::min(p[0] * p[0], 1.0);
     const double half = 0.5 * std::sqrt(1.0 - s) * (shape.c0 + shape.c1 * s + shape.c2 * s * s);
     // Compare away from the rim, where z(r) is steep and a vertical distance means little.
-    if (s < 0.9) worst = std::max(worst, std::abs(std::abs(p[2]) - half));
+    if (s < 0.9)
+      worst = std::max(worst, std::abs(std::abs(p[2]) - half));
   }
   EXPECT_LT(worst, 1e-3); // measured 3.3e-4 at level 3 (rim radius of curvature 0.3 R0)
-  std::printf("  biconcave profile: %zu points, worst |z| error %.3e\n",
-              pieces.front().points.size(), worst);
+  std::printf("  biconcave profile: %zu points, worst |z| error %.3e\n", pieces.front().points.size(), worst);
 }

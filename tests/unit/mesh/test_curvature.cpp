@@ -29,14 +29,13 @@ namespace {
 
 /// Errors of a node-curvature estimate against exact values.
 struct CurvatureErrors {
-  double mean;       ///< ||kappa_h - kappa||_2 / ||kappa||_2 over the nodes
-  double gaussian;   ///< the same for K
-  double meanPointwise;  ///< RMS over the nodes of (kappa_h - kappa) / kappa
-  double normal;     ///< RMS of |n_h - n|
+  double mean;          ///< ||kappa_h - kappa||_2 / ||kappa||_2 over the nodes
+  double gaussian;      ///< the same for K
+  double meanPointwise; ///< RMS over the nodes of (kappa_h - kappa) / kappa
+  double normal;        ///< RMS of |n_h - n|
 };
 
-CurvatureErrors ellipsoidErrors(const SurfaceMesh& mesh, const Vec3& semiAxes,
-                                const NodeCurvatures& estimate)
+CurvatureErrors ellipsoidErrors(const SurfaceMesh& mesh, const Vec3& semiAxes, const NodeCurvatures& estimate)
 {
   double dm = 0.0, m = 0.0, dg = 0.0, g = 0.0, pointwise = 0.0, normal = 0.0;
   for (int i = 0; i < mesh.numNodes(); ++i) {
@@ -122,31 +121,33 @@ TEST(ElementCurvature, QuadraticElementMapReproducesTheCurvatureOfAQuadraticGrap
     const auto c = nodeParametricCoordinates(p, i);
     nodes[static_cast<std::size_t>(i)] = Vec3(c[0], c[1], f(c[0], c[1]));
   }
-  for (const auto& [xi, eta] : std::vector<std::pair<double, double>>{{0.0, 0.0}, {0.2, 0.3}, {0.6, 0.35}, {0.45, 0.0}}) {
+  for (const auto& [xi, eta] :
+       std::vector<std::pair<double, double>>{{0.0, 0.0}, {0.2, 0.3}, {0.6, 0.35}, {0.45, 0.0}}) {
     const CurvedSurfacePoint s = evaluateCurvature(nodes, p, xi, eta);
     const double fx = -0.8 * xi + 0.3 * eta + 0.2, fy = 0.3 * xi - 1.4 * eta;
     const CurvaturePair exact = graphCurvature(fx, fy, -0.8, 0.3, -1.4);
     EXPECT_NEAR(s.mean, exact.mean, 1e-13);
     EXPECT_NEAR(s.gaussian, exact.gaussian, 1e-13);
     EXPECT_NEAR((s.normal - Vec3(-fx, -fy, 1.0).normalized()).norm(), 0.0, 1e-14);
-    EXPECT_GT(s.mean, 0.0);  // bends away from the upward normal: positive, like a sphere
+    EXPECT_GT(s.mean, 0.0); // bends away from the upward normal: positive, like a sphere
   }
 }
 
 TEST(ElementCurvature, MaxPrincipalCurvature)
 {
-  EXPECT_DOUBLE_EQ(maxAbsPrincipalCurvature(0.5, 0.25), 0.5);     // sphere R = 2
-  EXPECT_DOUBLE_EQ(maxAbsPrincipalCurvature(0.5, 0.0), 1.0);      // cylinder R = 1
-  EXPECT_DOUBLE_EQ(maxAbsPrincipalCurvature(0.0, -4.0), 2.0);     // saddle +-2
-  EXPECT_DOUBLE_EQ(maxAbsPrincipalCurvature(-1.5, 2.0), 2.0);     // k = -1, -2 (concave)
-  EXPECT_DOUBLE_EQ(maxAbsPrincipalCurvature(1.0, 1.0 + 1e-12), 1.0);  // rounding: clipped
+  EXPECT_DOUBLE_EQ(maxAbsPrincipalCurvature(0.5, 0.25), 0.5);        // sphere R = 2
+  EXPECT_DOUBLE_EQ(maxAbsPrincipalCurvature(0.5, 0.0), 1.0);         // cylinder R = 1
+  EXPECT_DOUBLE_EQ(maxAbsPrincipalCurvature(0.0, -4.0), 2.0);        // saddle +-2
+  EXPECT_DOUBLE_EQ(maxAbsPrincipalCurvature(-1.5, 2.0), 2.0);        // k = -1, -2 (concave)
+  EXPECT_DOUBLE_EQ(maxAbsPrincipalCurvature(1.0, 1.0 + 1e-12), 1.0); // rounding: clipped
 }
 
 TEST(EllipsoidCurvature, AgreesWithTheFundamentalFormsOfItsParametrisation)
 {
   // x = (a sin t cos p, b sin t sin p, c cos t): derivatives by hand, outward normal.
   const Vec3 s(1.0, 0.5, 2.0);
-  for (const auto& [t, ph] : std::vector<std::pair<double, double>>{{0.3, 0.2}, {1.2, 2.5}, {2.0, -1.0}, {1.5708, 0.0}}) {
+  for (const auto& [t, ph] :
+       std::vector<std::pair<double, double>>{{0.3, 0.2}, {1.2, 2.5}, {2.0, -1.0}, {1.5708, 0.0}}) {
     const double st = std::sin(t), ct = std::cos(t), sp = std::sin(ph), cp = std::cos(ph);
     const Vec3 x(s[0] * st * cp, s[1] * st * sp, s[2] * ct);
     const Vec3 xt(s[0] * ct * cp, s[1] * ct * sp, -s[2] * st);
@@ -156,8 +157,8 @@ TEST(EllipsoidCurvature, AgreesWithTheFundamentalFormsOfItsParametrisation)
     const Vec3 xpp(-s[0] * st * cp, -s[1] * st * sp, 0.0);
     const Vec3 n = ellipsoidNormal(s, x);
     EXPECT_NEAR(std::abs(n.dot(xt.cross(xp).normalized())), 1.0, 1e-14);
-    const CurvaturePair forms = curvatureFromFundamentalForms(xt.dot(xt), xt.dot(xp), xp.dot(xp), xtt.dot(n),
-                                                              xtp.dot(n), xpp.dot(n));
+    const CurvaturePair forms =
+        curvatureFromFundamentalForms(xt.dot(xt), xt.dot(xp), xp.dot(xp), xtt.dot(n), xtp.dot(n), xpp.dot(n));
     const CurvaturePair exact = ellipsoidCurvature(s, x);
     EXPECT_NEAR(exact.mean, forms.mean, 1e-12 * std::abs(forms.mean));
     EXPECT_NEAR(exact.gaussian, forms.gaussian, 1e-12 * forms.gaussian);
@@ -176,7 +177,7 @@ TEST(NodeNeighbourhood, TwoRingsOfAVertexAreItsElementStar)
   const SurfaceMesh mesh = makeIcosphere(2);
   const NodeGraph graph = nodeGraph(mesh);
   std::vector<int> scratch(static_cast<std::size_t>(mesh.numNodes()), -1);
-  for (int node : {0, 5, 100, 150}) {  // icosahedron vertices (valence 5) and valence-6 ones
+  for (int node : {0, 5, 100, 150}) { // icosahedron vertices (valence 5) and valence-6 ones
     std::vector<int> star;
     for (const NodeIncidence& inc : mesh.incidentElements(node)) {
       for (int n : mesh.element(inc.element)) {
@@ -192,7 +193,7 @@ TEST(NodeNeighbourhood, TwoRingsOfAVertexAreItsElementStar)
     EXPECT_EQ(rings, star) << "vertex " << node;
   }
   for (int s : scratch) {
-    ASSERT_EQ(s, -1);  // the scratch array is left clean
+    ASSERT_EQ(s, -1); // the scratch array is left clean
   }
 }
 
@@ -230,8 +231,8 @@ TEST(NodeCurvature, AllMethodsConvergeOnASphere)
       const double n = mesh.numNodes();
       meanErrors.push_back(std::sqrt(dm / n));
       gaussianErrors.push_back(std::sqrt(dg / n));
-      std::printf("  %-16s level %d (N_E = %5d): %.3e / %.3e / %.3e\n", method.name.c_str(), level,
-                  mesh.numElements(), meanErrors.back(), gaussianErrors.back(), std::sqrt(dn / n));
+      std::printf("  %-16s level %d (N_E = %5d): %.3e / %.3e / %.3e\n", method.name.c_str(), level, mesh.numElements(),
+                  meanErrors.back(), gaussianErrors.back(), std::sqrt(dn / n));
     }
     // Every method is at least second order: the quadratic element map and the
     // paraboloid both miss the r^4 term of the sphere.
@@ -300,7 +301,7 @@ TEST(NodeCurvature, QuadraticFitForgetsItsInitialNormal)
   const NodeCurvatures reference = quadraticFitCurvature(mesh);
   std::vector<Vec3> tilted = nodeNormals(mesh);
   for (Vec3& n : tilted) {
-    n = (n + 0.3 * Vec3(0.6, -0.8, 0.0).cross(n)).normalized();  // ~17 degrees off
+    n = (n + 0.3 * Vec3(0.6, -0.8, 0.0).cross(n)).normalized(); // ~17 degrees off
   }
   const NodeCurvatures c = quadraticFitCurvature(mesh, tilted);
   for (int i = 0; i < mesh.numNodes(); ++i) {
@@ -316,7 +317,8 @@ TEST(NodeCurvature, InvariantUnderRigidMotion)
   const Vec3 s(1.0, 0.5, 2.0);
   const SurfaceMesh body = makeEllipsoid(2, s);
   const SurfaceMesh moved = makeEllipsoid(2, s, {Vec3(5.0, -3.0, 1.0), rotationAboutAxis(Vec3(0.2, 1.0, -0.4), 2.1)});
-  for (CurvatureMethod method : {CurvatureMethod::ElementAverage, CurvatureMethod::JetFit, CurvatureMethod::QuadraticFit}) {
+  for (CurvatureMethod method :
+       {CurvatureMethod::ElementAverage, CurvatureMethod::JetFit, CurvatureMethod::QuadraticFit}) {
     const NodeCurvatures a = nodeCurvatures(body, method), b = nodeCurvatures(moved, method);
     for (std::size_t i = 0; i < a.mean.size(); ++i) {
       // round-off of coordinates ~5 in size through second differences at h ~ 0.1
@@ -341,7 +343,7 @@ TEST(NodeCurvature, ElementMaximumOfTheMaxPrincipalCurvature)
     }
   }
   ASSERT_GE(pole, 0);
-  EXPECT_NEAR(nodeMax[static_cast<std::size_t>(pole)], 8.0, 0.08);  // 1%: level-3 fit error at the tip
+  EXPECT_NEAR(nodeMax[static_cast<std::size_t>(pole)], 8.0, 0.08); // 1%: level-3 fit error at the tip
   for (int e = 0; e < mesh.numElements(); ++e) {
     double largest = 0.0;
     for (int n : mesh.element(e)) {

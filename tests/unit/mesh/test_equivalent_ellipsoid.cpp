@@ -20,8 +20,7 @@ using capsula::testing::pi;
 using namespace capsula::mesh;
 using capsula::testing::orderOverLevels;
 
-namespace {
-}
+namespace {}
 
 TEST(MeshEquivalentEllipsoid, SemiAxesOfAnEllipsoidMeshConvergeToItsOwn)
 {
@@ -34,15 +33,14 @@ TEST(MeshEquivalentEllipsoid, SemiAxesOfAnEllipsoidMeshConvergeToItsOwn)
     levels.push_back(level);
     errors.push_back((eq.semiAxes - semiAxes).cwiseAbs().maxCoeff());
     const double d12 = taylorDeformations(eq)[0];
-    std::printf("  %5d  %.9f  %.9f  %.9f  %.3e\n", level, eq.semiAxes[0], eq.semiAxes[1],
-                eq.semiAxes[2], d12 - 0.2);
+    std::printf("  %5d  %.9f  %.9f  %.9f  %.3e\n", level, eq.semiAxes[0], eq.semiAxes[1], eq.semiAxes[2], d12 - 0.2);
     if (level == 4) {
       // The thesis's accuracy target for D12 at its working resolution; measured 4e-8.
       EXPECT_NEAR(d12, (1.5 - 1.0) / (1.5 + 1.0), 1e-4);
     }
   }
   EXPECT_GT(orderOverLevels(levels, errors), 3.7); // measured 3.96: volume-like integrals
-  EXPECT_LT(errors.back(), 1e-6);                // measured 3.8e-7 at level 4
+  EXPECT_LT(errors.back(), 1e-6);                  // measured 3.8e-7 at level 4
 }
 
 TEST(MeshEquivalentEllipsoid, AxesFollowTheBodyAndMeasuresAreInvariant)

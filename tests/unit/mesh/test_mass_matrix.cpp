@@ -17,7 +17,10 @@ using capsula::mesh::SurfaceMassMatrix;
 using capsula::mesh::SurfaceMesh;
 using capsula::mesh::Vec3;
 
-SurfaceMesh testSurface() { return capsula::mesh::makeEllipsoid(2, Vec3(1.0, 0.6, 1.3)); }
+SurfaceMesh testSurface()
+{
+  return capsula::mesh::makeEllipsoid(2, Vec3(1.0, 0.6, 1.3));
+}
 
 } // namespace
 

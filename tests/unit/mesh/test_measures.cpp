@@ -24,7 +24,6 @@ using capsula::testing::orderOverLevels;
 
 namespace {
 
-
 /// Surface area of the ellipsoid with semi-axes (a, b, c): the area element of
 /// x = (a sin t cos p, b sin t sin p, c cos t) integrated with an 80 x 160 Gauss-Legendre
 /// product rule. The integrand is smooth and periodic in p: accurate to round-off.
@@ -75,8 +74,7 @@ TEST(MeshMeasures, SphereAreaAndVolumeConvergeAtFourthOrder)
     levels.push_back(level);
     areaErrors.push_back(surfaceArea(mesh) / (4.0 * pi) - 1.0);
     volumeErrors.push_back(enclosedVolume(mesh) / (4.0 * pi / 3.0) - 1.0);
-    std::printf("  %5d %6d  %12.4e  %12.4e\n", level, mesh.numElements(), areaErrors.back(),
-                volumeErrors.back());
+    std::printf("  %5d %6d  %12.4e  %12.4e\n", level, mesh.numElements(), areaErrors.back(), volumeErrors.back());
   }
   const double areaOrder = orderOverLevels(levels, areaErrors);
   const double volumeOrder = orderOverLevels(levels, volumeErrors);
@@ -97,9 +95,7 @@ TEST(MeshMeasures, EllipsoidAreaAndVolumeConvergeToExact)
   const double exactVolume = 4.0 * pi / 3.0 * semiAxes.prod();
   std::vector<int> levels;
   std::vector<double> areaErrors, volumeErrors;
-  std::printf(
-      "  level    area error    volume error   (ellipsoid 1.5 x 1 x 0.5, exact area %.12f)\n",
-      exactArea);
+  std::printf("  level    area error    volume error   (ellipsoid 1.5 x 1 x 0.5, exact area %.12f)\n", exactArea);
   for (int level = 1; level <= 4; ++level) {
     const SurfaceMesh mesh = makeEllipsoid(level, semiAxes);
     levels.push_back(level);
@@ -134,8 +130,7 @@ TEST(MeshMeasures, CentroidFollowsTranslationAndAgreesWithTheVolumeMoment)
   // Translation pins the 1/(2V) normalisation of the ERRATA formula: the printed
   // 3/(8 pi) would scale the answer by 3V/(4 pi) = 0.75 for this ellipsoid.
   const Vec3 shift(3.0, -2.0, 5.0);
-  const SurfaceMesh ellipsoid =
-      makeEllipsoid(2, Vec3(1.5, 1.0, 0.5), Placement{shift, Mat3::Identity()});
+  const SurfaceMesh ellipsoid = makeEllipsoid(2, Vec3(1.5, 1.0, 0.5), Placement{shift, Mat3::Identity()});
   EXPECT_NEAR((centroid(ellipsoid) - shift).norm(), 0.0, 1e-13); // round-off of O(10) sums
 
   // Asymmetric body: compare with the independent divergence form
@@ -144,8 +139,7 @@ TEST(MeshMeasures, CentroidFollowsTranslationAndAgreesWithTheVolumeMoment)
   const double volume = enclosedVolume(egg);
   const Vec3 moment = integrateOverSurface(
       egg, capsula::quadrature::triangleRule(12),
-      [](const SurfacePoint& s) -> Vec3 { return s.position * s.position.dot(s.normal); },
-      Vec3(Vec3::Zero()));
+      [](const SurfacePoint& s) -> Vec3 { return s.position * s.position.dot(s.normal); }, Vec3(Vec3::Zero()));
   const Vec3 c = centroid(egg);
   EXPECT_NEAR((c - moment / (4.0 * volume)).norm(), 0.0, 1e-13);
 
@@ -195,7 +189,7 @@ TEST(MeshMeasures, ProjectedAreasOfSphereAndPlatelet)
     errors.push_back((pa / (4.0 * pi) - Vec3::Ones()).cwiseAbs().maxCoeff());
   }
   EXPECT_GT(orderOverLevels(levels, errors), 1.8); // measured 2.05 (N_Q = 7)
-  EXPECT_LT(errors.back(), 1e-4);                // measured 5.4e-5 at level 4
+  EXPECT_LT(errors.back(), 1e-4);                  // measured 5.4e-5 at level 4
 
   const Vec3 platelet = projectedAreas(makeSpheroid(4, 1.5, 0.25));
   EXPECT_NEAR(platelet[2] / (pi * 1.5 * 1.5), 1.0, 1e-4); // measured 5.4e-5
@@ -215,5 +209,5 @@ TEST(MeshMeasures, ReducedVolumeOfSpherePlateletAndRedCell)
   const double platelet = reducedVolume(makeSpheroid(4, a, c));
   std::printf("  platelet 6:1 reduced volume: mesh %.6f, exact %.6f\n", platelet, exact);
   EXPECT_NEAR(platelet / exact, 1.0, 1e-5); // level 4: area and volume errors ~1e-6
-  EXPECT_NEAR(exact, 0.426026, 1e-6); // closed form (S = 15.12403), pins exactOblateArea itself
+  EXPECT_NEAR(exact, 0.426026, 1e-6);       // closed form (S = 15.12403), pins exactOblateArea itself
 }

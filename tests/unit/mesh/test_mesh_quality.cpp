@@ -27,8 +27,7 @@ TEST(MeshQuality, RegularTetrahedronWithShiftedMidsideNodes)
     const Vec3 m = v[e[0]] + 0.3 * (v[e[1]] - v[e[0]]);
     x.insert(x.end(), {m[0], m[1], m[2]});
   }
-  const SurfaceMesh tet(
-      x, {{0, 2, 1, 5, 7, 4}, {0, 1, 3, 4, 8, 6}, {0, 3, 2, 6, 9, 5}, {1, 2, 3, 7, 9, 8}});
+  const SurfaceMesh tet(x, {{0, 2, 1, 5, 7, 4}, {0, 1, 3, 4, 8, 6}, {0, 3, 2, 6, 9, 5}, {1, 2, 3, 7, 9, 8}});
   for (int e = 0; e < tet.numElements(); ++e) {
     const ElementQuality q = elementQuality(tet, e);
     EXPECT_NEAR(q.minAngle, 60.0, 1e-12);
@@ -43,8 +42,7 @@ TEST(MeshQuality, SquashedOctahedronHasIsoscelesFaces)
   // Vertices (+-1,0,0), (0,+-1,0), (0,0,+-h): eight congruent isosceles faces with base
   // sqrt(2) and sides sqrt(1 + h^2), whose angles follow in closed form.
   const double h = 0.5;
-  const Vec3 v[6] = {Vec3(1, 0, 0),  Vec3(0, 1, 0), Vec3(-1, 0, 0),
-                     Vec3(0, -1, 0), Vec3(0, 0, h), Vec3(0, 0, -h)};
+  const Vec3 v[6] = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0), Vec3(0, 0, h), Vec3(0, 0, -h)};
   std::vector<double> x;
   for (const Vec3& p : v)
     x.insert(x.end(), {p[0], p[1], p[2]});
@@ -54,7 +52,8 @@ TEST(MeshQuality, SquashedOctahedronHasIsoscelesFaces)
   const auto mid = [&](int a, int b) {
     const auto key = std::minmax(a, b);
     auto it = mids.find(key);
-    if (it != mids.end()) return it->second;
+    if (it != mids.end())
+      return it->second;
     const Vec3 m = 0.5 * (v[a] + v[b]);
     x.insert(x.end(), {m[0], m[1], m[2]});
     mids[key] = next;
@@ -92,7 +91,7 @@ TEST(MeshQuality, IcosphereStaysNearlyEquilateral)
   }
   // The biconcave map places midside nodes unevenly: distortion becomes visible.
   const MeshQuality rbc = meshQuality(makeBiconcaveCell(2));
-  std::printf("  biconcave level 2: min angle %.2f, max edge ratio %.3f, distortion %.4f\n",
-              rbc.minAngle, rbc.maxEdgeRatio, rbc.maxDistortion);
+  std::printf("  biconcave level 2: min angle %.2f, max edge ratio %.3f, distortion %.4f\n", rbc.minAngle,
+              rbc.maxEdgeRatio, rbc.maxDistortion);
   EXPECT_GT(rbc.maxDistortion, 1e-3);
 }

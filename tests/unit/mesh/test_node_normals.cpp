@@ -22,8 +22,7 @@ double worstNormalError(const SurfaceMesh& mesh, const Vec3& semiAxes)
   const std::vector<Vec3> normals = nodeNormals(mesh);
   double worst = 0.0;
   for (int node = 0; node < mesh.numNodes(); ++node) {
-    const Vec3 exact =
-        mesh.position(node).cwiseQuotient(semiAxes.cwiseProduct(semiAxes)).normalized();
+    const Vec3 exact = mesh.position(node).cwiseQuotient(semiAxes.cwiseProduct(semiAxes)).normalized();
     worst = std::max(worst, (normals[node] - exact).norm());
   }
   return worst;
@@ -39,8 +38,7 @@ TEST(MeshNodeNormals, ConvergeToTheExactNormal)
   for (int level = 1; level <= 4; ++level) {
     levels.push_back(level);
     sphere.push_back(worstNormalError(makeSphere(level, 1.0), Vec3::Ones()));
-    ellipsoid.push_back(
-        worstNormalError(makeEllipsoid(level, Vec3(1.5, 1.0, 0.5)), Vec3(1.5, 1.0, 0.5)));
+    ellipsoid.push_back(worstNormalError(makeEllipsoid(level, Vec3(1.5, 1.0, 0.5)), Vec3(1.5, 1.0, 0.5)));
     std::printf("  %5d  %12.4e  %12.4e\n", level, sphere.back(), ellipsoid.back());
   }
   // The element normal at a node is only first-order accurate in general; area averaging

@@ -66,7 +66,7 @@ TEST(NodeRedistribution, CarriesAnAffineFieldExactly)
   }
   const auto moved = redistributeNodes(sphere, x, X, withoutVolumeFix());
   ASSERT_EQ(moved.passes, 3);
-  EXPECT_GT(moved.maxDisplacement, 0.05);   // the nodes really moved (0.09 measured)
+  EXPECT_GT(moved.maxDisplacement, 0.05); // the nodes really moved (0.09 measured)
   double worst = 0.0;
   for (std::size_t i = 0; i < x.size(); i += 3) {
     const Vec3 expected = A * Vec3(moved.positions[i], moved.positions[i + 1], moved.positions[i + 2]) + b;
@@ -74,7 +74,7 @@ TEST(NodeRedistribution, CarriesAnAffineFieldExactly)
       worst = std::max(worst, std::abs(moved.reference[i + static_cast<std::size_t>(d)] - expected[d]));
     }
   }
-  EXPECT_LT(worst, 1e-13);   // round-off of a 6-term sum of O(1) numbers
+  EXPECT_LT(worst, 1e-13); // round-off of a 6-term sum of O(1) numbers
 }
 
 // A sheared mesh gets better elements. Measured (twist 1): level 1 24.1 -> 53.7 degrees,
@@ -93,7 +93,7 @@ TEST(NodeRedistribution, ImprovesAShearedMesh)
     EXPECT_GT(moved.minAngleAfter, atLeast) << "level " << level;
     SurfaceMesh result = sphere;
     result.setPositions(moved.positions);
-    EXPECT_NEAR(meshQuality(result).minAngle, moved.minAngleAfter, 1e-12);   // the report is the result's
+    EXPECT_NEAR(meshQuality(result).minAngle, moved.minAngleAfter, 1e-12); // the report is the result's
   }
 }
 
@@ -119,10 +119,10 @@ TEST(NodeRedistribution, KeepsTheEnclosedVolume)
     const double before = volume(sphere, x);
     const auto plain = redistributeNodes(sphere, x, x, withoutVolumeFix());
     shrinkage.push_back(1.0 - volume(sphere, plain.positions) / before);
-    EXPECT_GT(shrinkage.back(), 0.0) << "level " << level;   // always inwards
+    EXPECT_GT(shrinkage.back(), 0.0) << "level " << level; // always inwards
     const auto kept = redistributeNodes(sphere, x, x, RedistributionOptions{});
     EXPECT_LT(std::abs(volume(sphere, kept.positions) / before - 1.0), 1e-12) << "level " << level;
-    EXPECT_GT(kept.volumeOffset, 0.0) << "level " << level;   // outwards, against the shrinkage
+    EXPECT_GT(kept.volumeOffset, 0.0) << "level " << level; // outwards, against the shrinkage
   }
   // Order of the shrinkage in h (h halves per level): measured 4.0 and 4.5; > 3.5 holds
   // it to the interpolation error of quadratic elements (a projection onto flat facets,
@@ -168,7 +168,7 @@ TEST(NodeRedistribution, ClosestPointOnElement)
   const auto p = shapeParameters(nodes);
   const SurfacePoint s = evaluateSurfacePoint(nodes, p, 0.2, 0.3);
   const auto found = closestPointOnElement(nodes, p, s.position + 0.01 * s.normal);
-  EXPECT_NEAR(found.xi, 0.2, 1e-3);   // the normal of a curved element is not quite the closest direction
+  EXPECT_NEAR(found.xi, 0.2, 1e-3); // the normal of a curved element is not quite the closest direction
   EXPECT_NEAR(found.eta, 0.3, 1e-3);
   EXPECT_NEAR(std::sqrt(found.squaredDistance), 0.01, 1e-5);
 }

@@ -49,9 +49,8 @@ TEST(MeshShapeFunctions, KroneckerDeltaAtTheSixNodes)
       shapeFunctions(p, c[0], c[1], phi);
       for (int i = 0; i < 6; ++i) {
         // Rational expressions of O(1) values: round-off only.
-        EXPECT_NEAR(phi[i], i == j ? 1.0 : 0.0, 1e-13)
-            << "phi_" << i + 1 << " at node " << j + 1 << ", alpha " << p.alpha << " beta "
-            << p.beta << " gamma " << p.gamma;
+        EXPECT_NEAR(phi[i], i == j ? 1.0 : 0.0, 1e-13) << "phi_" << i + 1 << " at node " << j + 1 << ", alpha "
+                                                       << p.alpha << " beta " << p.beta << " gamma " << p.gamma;
       }
     }
   }
@@ -143,8 +142,7 @@ TEST(MeshShapeFunctions, AsPrintedPhi3WouldNotVanishAtNode5)
   shapeFunctions(p, p.gamma, 1.0 - p.gamma, phi);
   EXPECT_NEAR(phi[2], 0.0, 1e-15);
   const double eta = 1.0 - p.gamma, xi = p.gamma;
-  const double printed =
-      eta * (eta - p.beta + (p.beta - p.gamma - 1.0) / p.gamma * xi) / (1.0 - p.beta);
+  const double printed = eta * (eta - p.beta + (p.beta - p.gamma - 1.0) / p.gamma * xi) / (1.0 - p.beta);
   EXPECT_GT(std::abs(printed), 0.1);
 }
 
@@ -154,12 +152,7 @@ TEST(MeshElementGeometry, FlatElementHasConstantMetricAndNormal)
   // fractions of the edges): the map is affine, x_xi = x2 - x1, x_eta = x3 - x1.
   const Vec3 x1(0.2, -0.1, 0.3), x2(1.4, 0.2, 0.3), x3(0.1, 0.9, 0.3);
   const ShapeParameters p{0.35, 0.62, 0.44};
-  const ElementNodes x{x1,
-                       x2,
-                       x3,
-                       x1 + p.alpha * (x2 - x1),
-                       x2 + (1.0 - p.gamma) * (x3 - x2),
-                       x1 + p.beta * (x3 - x1)};
+  const ElementNodes x{x1, x2, x3, x1 + p.alpha * (x2 - x1), x2 + (1.0 - p.gamma) * (x3 - x2), x1 + p.beta * (x3 - x1)};
   const ShapeParameters computed = shapeParameters(x);
   EXPECT_NEAR(computed.alpha, p.alpha, 1e-14); // eq 3.17 recovers the fractions
   EXPECT_NEAR(computed.beta, p.beta, 1e-14);
@@ -186,12 +179,8 @@ TEST(MeshElementGeometry, TangentsMatchCentralDifferencesOnACurvedElement)
   const double h = 1e-6;
   for (const auto& pt : samplePoints()) {
     const SurfacePoint s = evaluateSurfacePoint(x, p, pt[0], pt[1]);
-    const Vec3 fdXi =
-        (surfacePosition(x, p, pt[0] + h, pt[1]) - surfacePosition(x, p, pt[0] - h, pt[1])) /
-        (2 * h);
-    const Vec3 fdEta =
-        (surfacePosition(x, p, pt[0], pt[1] + h) - surfacePosition(x, p, pt[0], pt[1] - h)) /
-        (2 * h);
+    const Vec3 fdXi = (surfacePosition(x, p, pt[0] + h, pt[1]) - surfacePosition(x, p, pt[0] - h, pt[1])) / (2 * h);
+    const Vec3 fdEta = (surfacePosition(x, p, pt[0], pt[1] + h) - surfacePosition(x, p, pt[0], pt[1] - h)) / (2 * h);
     EXPECT_NEAR((fdXi - s.tangentXi).norm(), 0.0, 1e-8); // quadratic map: round-off / h only
     EXPECT_NEAR((fdEta - s.tangentEta).norm(), 0.0, 1e-8);
     EXPECT_NEAR(s.normal.norm(), 1.0, 1e-14);

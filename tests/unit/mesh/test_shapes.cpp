@@ -18,7 +18,6 @@ using namespace capsula::mesh;
 
 namespace {
 
-
 /// Area and volume of the Evans-Fung cell from its profile, parametrised by
 /// r = R0 sin s, z = (R0/2) cos s (c0 + c1 sin^2 s + c2 sin^4 s), s in [0, pi/2]:
 /// both integrands are smooth there, so 60 Gauss-Legendre points give round-off accuracy.
@@ -73,8 +72,8 @@ TEST(MeshShapes, EvansFungRedCellMatchesItsProfileAndTheLiterature)
   const BiconcaveProfile profile{3.91}; // micrometres
   const auto [exactArea, exactVolume] = evansFungAreaVolume(profile);
   const double exactNu = reducedVolume(exactArea, exactVolume);
-  std::printf("  Evans-Fung R0 = 3.91 um: area %.4f um^2, volume %.4f um^3, reduced volume %.5f\n",
-              exactArea, exactVolume, exactNu);
+  std::printf("  Evans-Fung R0 = 3.91 um: area %.4f um^2, volume %.4f um^3, reduced volume %.5f\n", exactArea,
+              exactVolume, exactNu);
   std::printf("  level   area error   volume error\n");
   double areaError = 0.0, volumeError = 0.0;
   for (int level = 1; level <= 4; ++level) {

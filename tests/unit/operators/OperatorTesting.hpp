@@ -24,10 +24,9 @@ inline Teuchos::RCP<const Teuchos::Comm<int>> serialComm()
   return Teuchos::rcp(new Teuchos::SerialComm<int>);
 }
 
-inline std::unique_ptr<BoundaryIntegralSolver> makeSolver(const std::string& kernel, std::vector<mesh::SurfaceMesh> cells,
-                                                          std::vector<double> lambdas,
-                                                          const DiscretisationParameters& discretisation = {},
-                                                          const SolverParameters& solver = {})
+inline std::unique_ptr<BoundaryIntegralSolver>
+makeSolver(const std::string& kernel, std::vector<mesh::SurfaceMesh> cells, std::vector<double> lambdas,
+           const DiscretisationParameters& discretisation = {}, const SolverParameters& solver = {})
 {
   return builtInKernels().create(kernel, serialComm(), CellSurfaces(std::move(cells), std::move(lambdas)),
                                  discretisation, solver);
@@ -55,10 +54,11 @@ std::vector<double> elementAverages(const CellSurfaces& surfaces, Field&& f)
     for (int e = 0; e < cell.numElements(); ++e) {
       const mesh::ElementNodes x = cell.elementNodes(e);
       const mesh::ShapeParameters p = mesh::shapeParameters(x);
-      const double area = mesh::integrateOverElement(x, p, rule, [](const mesh::SurfacePoint&) { return 1.0; }, 0.0);
+      const double area = mesh::integrateOverElement(
+          x, p, rule, [](const mesh::SurfacePoint&) { return 1.0; }, 0.0);
       const mesh::Vec3 integral = mesh::integrateOverElement(
-        x, p, rule, [&](const mesh::SurfacePoint& s) { return mesh::Vec3(f(s.position, s.normal)); },
-        mesh::Vec3(mesh::Vec3::Zero()));
+          x, p, rule, [&](const mesh::SurfacePoint& s) { return mesh::Vec3(f(s.position, s.normal)); },
+          mesh::Vec3(mesh::Vec3::Zero()));
       for (int i = 0; i < 3; ++i) {
         loads.push_back(integral[i] / area);
       }

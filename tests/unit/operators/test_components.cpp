@@ -62,11 +62,11 @@ TEST(PolarRules, VertexRuleIntegratesInverseDistanceExactly)
   ParametricRule rule;
   for (int vertex = 0; vertex < 3; ++vertex) {
     singularRule(vertex, mesh::ShapeParameters{}, gauss, rule);
-    EXPECT_NEAR(integrate(rule, [&](double x, double y) {
-                  return 1.0 / equilateralDistance(x, y, apex[vertex][0], apex[vertex][1]);
-                }),
-                std::log(3.0), 1e-15)
-      << "vertex " << vertex;
+    EXPECT_NEAR(
+        integrate(rule, [&](double x,
+                            double y) { return 1.0 / equilateralDistance(x, y, apex[vertex][0], apex[vertex][1]); }),
+        std::log(3.0), 1e-15)
+        << "vertex " << vertex;
   }
   // The area 1/2 needs a few points (cosh u is not constant): 10 reach round-off.
   singularRule(0, mesh::ShapeParameters{}, quadrature::gaussLegendre(10, 0.0, 1.0), rule);
@@ -112,8 +112,7 @@ TEST(PolarRules, EveryNodeRuleCoversTheTriangle)
     singularRule(node, shape, gauss, rule);
     EXPECT_NEAR(integrate(rule, [](double, double) { return 1.0; }), 0.5, 1e-13) << "node " << node;
     // int_T xi^2 eta dxi deta = 2! 1! / 5! = 1/60.
-    EXPECT_NEAR(integrate(rule, [](double x, double y) { return x * x * y; }), 1.0 / 60.0, 1e-13)
-      << "node " << node;
+    EXPECT_NEAR(integrate(rule, [](double x, double y) { return x * x * y; }), 1.0 / 60.0, 1e-13) << "node " << node;
   }
 }
 
@@ -135,8 +134,8 @@ TEST(PolarRules, MidsideRuleIntegratesInverseDistanceExactly)
   const double exact = 2.0 / std::sqrt(3.0) * (piece(1.0, 0.0, 0.5, h) + piece(0.5, h, 0.0, 0.0));
   ParametricRule rule;
   singularRule(3, shape, quadrature::gaussLegendre(1, 0.0, 1.0), rule);
-  EXPECT_NEAR(integrate(rule, [&](double x, double y) { return 1.0 / equilateralDistance(x, y, alpha, 0.0); }),
-              exact, 1e-15);
+  EXPECT_NEAR(integrate(rule, [&](double x, double y) { return 1.0 / equilateralDistance(x, y, alpha, 0.0); }), exact,
+              1e-15);
 }
 
 // --- element map -------------------------------------------------------------------------
@@ -333,10 +332,9 @@ TEST(KernelRegistry, BuiltInsAndUnknownNames)
 {
   const KernelRegistry registry = builtInKernels();
   EXPECT_EQ(registry.names(), (std::vector<std::string>{"FreeSpace", "Wall"}));
-  auto solver = registry.create("Wall", ot::serialComm(),
-                                CellSurfaces({mesh::makeSphere(0, 0.5, {Vec3(0, 1, 0), mesh::Mat3::Identity()})},
-                                             1.0),
-                                {}, {});
+  auto solver =
+      registry.create("Wall", ot::serialComm(),
+                      CellSurfaces({mesh::makeSphere(0, 0.5, {Vec3(0, 1, 0), mesh::Mat3::Identity()})}, 1.0), {}, {});
   EXPECT_EQ(solver->kernelName(), "plane wall 3D");
   try {
     registry.create("Wal", ot::serialComm(), CellSurfaces({mesh::makeSphere(0, 0.5)}, 1.0), {}, {});
@@ -429,7 +427,7 @@ TEST(SecondKindOperator, TwoUnknownsPerNodeWithAPrescribedRow)
       sum += u[k];
     }
     for (int k = 0; k < 2 * numNodes; ++k) {
-      rows[k] = sum + k;   // differs per row, so a wrong row index shows
+      rows[k] = sum + k; // differs per row, so a wrong row index shows
     }
   };
   const SecondKindOperator A(map, layer, {}, {0.25, 0.0, 0.25}, 2);
@@ -437,7 +435,7 @@ TEST(SecondKindOperator, TwoUnknownsPerNodeWithAPrescribedRow)
   {
     auto data = x.getDataNonConst(0);
     for (int k = 0; k < 2 * numNodes; ++k) {
-      data[k] = k + 1.0;   // sum 21
+      data[k] = k + 1.0; // sum 21
     }
   }
   A.apply(x, y);

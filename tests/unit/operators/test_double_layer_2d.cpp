@@ -58,7 +58,7 @@ TEST(RegularSums2D, DoubleLayerWeightsAreTheStressletsAppliedToTheNormal)
         }
       }
     }
-    const auto worst = [&](const double (&T)[2][2][2], const double W[4]) {
+    const auto worst = [&](const double(&T)[2][2][2], const double W[4]) {
       double scale = termSize, error = 0.0;
       for (int i2 = 0; i2 < 2; ++i2) {
         for (int j = 0; j < 2; ++j) {
@@ -185,8 +185,8 @@ TEST(SplineDoubleLayer2D, EqualsThePointByPointSumForFreeAndTetheredContours)
           EXPECT_NEAR(result[i], expected[i], 1e-12) << kernel << ", entry " << i << ", subtract " << subtract;
         }
       };
-      check(LayerPotentials2D<greens::FreeSpace2D>(d), pointByPointDoubleLayer<greens::FreeSpace2D>(c, d, density, subtract),
-            "free space");
+      check(LayerPotentials2D<greens::FreeSpace2D>(d),
+            pointByPointDoubleLayer<greens::FreeSpace2D>(c, d, density, subtract), "free space");
       check(LayerPotentials2D<greens::Wall2D>(d), pointByPointDoubleLayer<greens::Wall2D>(c, d, density, subtract),
             "wall");
     }

@@ -71,7 +71,8 @@ TEST(FlowVelocity, HadamardRybczynskiFlowInsideAndOutside)
       flow.capillaryNumber = 1.0;
       flow.background = LinearFlow::quiescent();
       const auto nodes = solver->nodeVelocities(LoadDensity::constantOverElements(loads), flow);
-      const auto u = solver->flowVelocity(points, LoadDensity::constantOverElements(loads), nodes.velocities.data(), flow);
+      const auto u =
+          solver->flowVelocity(points, LoadDensity::constantOverElements(loads), nodes.velocities.data(), flow);
       double error = 0.0;
       for (std::size_t p = 0; p < probes.size(); ++p) {
         const Vec3 exact = hadamardRybczynskiFlow(probes[p], lambda);
@@ -104,8 +105,8 @@ double passiveNeighbourError(double gap, const DiscretisationParameters& paramet
   a.centre = centre;
   const double small = 0.3;
   b.centre = centre + (radius + gap + small) * Vec3(0.6, 0.0, 0.8);
-  auto solver = makeSolver("FreeSpace", {mesh::makeSphere(2, radius, a), mesh::makeSphere(2, small, b)},
-                           {1.0, 1.0}, parameters);
+  auto solver =
+      makeSolver("FreeSpace", {mesh::makeSphere(2, radius, a), mesh::makeSphere(2, small, b)}, {1.0, 1.0}, parameters);
   const int numElementsA = solver->surfaces().cell(0).numElements();
   std::vector<double> loads(3 * solver->surfaces().numElements(), 0.0);
   for (int m = 0; m < numElementsA; ++m) {
@@ -173,8 +174,10 @@ TEST(FlowVelocity, BlakeFlowVanishesOnTheWall)
         above.insert(above.end(), {x, 0.5, z});
       }
     }
-    const auto onWall = solver->flowVelocity(wall, LoadDensity::constantOverElements(loads), nodes.velocities.data(), flow);
-    const auto nearWall = solver->flowVelocity(above, LoadDensity::constantOverElements(loads), nodes.velocities.data(), flow);
+    const auto onWall =
+        solver->flowVelocity(wall, LoadDensity::constantOverElements(loads), nodes.velocities.data(), flow);
+    const auto nearWall =
+        solver->flowVelocity(above, LoadDensity::constantOverElements(loads), nodes.velocities.data(), flow);
     const double scale = std::abs(*std::max_element(nearWall.begin(), nearWall.end(),
                                                     [](double a, double b) { return std::abs(a) < std::abs(b); }));
     for (const double v : onWall) {
@@ -232,7 +235,8 @@ TEST(WallShearStress, LoadedSphereMatchesBlakeSolution)
   flow.capillaryNumber = 1.0;
   const auto nodes = solver->nodeVelocities(LoadDensity::constantOverElements(loads), flow);
   const std::vector<double> wallPoints = {0.2, -0.1, 1.0, 0.5, -0.7, -1.2, 2.5, 0.0};
-  const auto stress = wallShearStress(*solver, wallPoints, 0.02, LoadDensity::constantOverElements(loads), nodes.velocities.data(), flow);
+  const auto stress = wallShearStress(*solver, wallPoints, 0.02, LoadDensity::constantOverElements(loads),
+                                      nodes.velocities.data(), flow);
   double largest = 0.0, error = 0.0;
   for (std::size_t p = 0; p < wallPoints.size() / 2; ++p) {
     const Vec3 du = blakeSphereWallGradient(c, a, F, wallPoints[2 * p], wallPoints[2 * p + 1]);
@@ -258,13 +262,15 @@ TEST(WallShearStress, UndisturbedShearGivesOne)
   const std::vector<double> zero(3 * solver->surfaces().numElements(), 0.0);
   FlowConditions flow;
   const auto nodes = solver->nodeVelocities(LoadDensity::constantOverElements(zero), flow);
-  const auto stress = wallShearStress(*solver, {0.0, 0.0, 1.0, 2.0}, 0.05, LoadDensity::constantOverElements(zero), nodes.velocities.data(), flow);
+  const auto stress = wallShearStress(*solver, {0.0, 0.0, 1.0, 2.0}, 0.05, LoadDensity::constantOverElements(zero),
+                                      nodes.velocities.data(), flow);
   for (std::size_t p = 0; p < 2; ++p) {
     EXPECT_NEAR(stress.magnitude[p], 1.0, 1e-13); // the stencil is exact for linear u
     EXPECT_NEAR(stress.dwdy[p], 0.0, 1e-13);
   }
-  EXPECT_THROW(wallShearStress(*solver, {0.0, 0.0}, 0.0, LoadDensity::constantOverElements(zero), nodes.velocities.data(), flow),
-               core::InputError);
+  EXPECT_THROW(
+      wallShearStress(*solver, {0.0, 0.0}, 0.0, LoadDensity::constantOverElements(zero), nodes.velocities.data(), flow),
+      core::InputError);
 }
 
 } // namespace

@@ -36,8 +36,7 @@ mesh::SurfaceMesh makeShape(const std::string& shape, int level)
 {
   mesh::Placement placement;
   placement.centre = centre;
-  return shape == "sphere" ? mesh::makeSphere(level, 1.0, placement)
-                           : mesh::makeEllipsoid(level, semiAxes, placement);
+  return shape == "sphere" ? mesh::makeSphere(level, 1.0, placement) : mesh::makeEllipsoid(level, semiAxes, placement);
 }
 
 struct Case {
@@ -46,9 +45,15 @@ struct Case {
 };
 
 // Readable test names in ctest (instead of the raw bytes of the parameter).
-void PrintTo(const Case& c, std::ostream* out) { *out << c.kernel << " " << c.shape; }
+void PrintTo(const Case& c, std::ostream* out)
+{
+  *out << c.kernel << " " << c.shape;
+}
 
-std::string label(const Case& c, const std::string& what) { return c.kernel + " " + c.shape + ": " + what; }
+std::string label(const Case& c, const std::string& what)
+{
+  return c.kernel + " " + c.shape + ": " + what;
+}
 
 class Identities : public ::testing::TestWithParam<Case> {};
 
@@ -123,9 +128,8 @@ TEST_P(Identities, SingleLayerOfNormalVanishes)
     auto solver = makeSolver(c.kernel, makeShape(c.shape, level));
     const auto loads = elementAverages(solver->surfaces(), [](const Vec3&, const Vec3& n) { return n; });
     const auto sl = solver->singleLayer(LoadDensity::constantOverElements(loads));
-    onS.push_back(*std::max_element(sl.begin(), sl.end(), [](double a, double b) {
-                    return std::abs(a) < std::abs(b);
-                  }) / scale);
+    onS.push_back(
+        *std::max_element(sl.begin(), sl.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }) / scale);
     const std::vector<double> points = {centre[0] + 0.2, centre[1] - 0.1, centre[2] + 0.1,
                                         centre[0] + 1.6, centre[1] + 0.3, centre[2] + 0.5};
     const auto at = solver->singleLayerAt(points, LoadDensity::constantOverElements(loads));
@@ -168,8 +172,9 @@ TEST(SphereIdentity, SingleLayerOfInterpolatedNormalVanishesFaster)
     for (const int level : levels) {
       auto solver = makeSolver(kernel, makeShape("sphere", level));
       const auto normals =
-        nodalField(solver->surfaces(), [](const Vec3& x) { return Vec3((x - centre).normalized()); });
-      const std::vector<double> density = capsula::operators::testing::gatherElementNodeValues(solver->surfaces(), normals);
+          nodalField(solver->surfaces(), [](const Vec3& x) { return Vec3((x - centre).normalized()); });
+      const std::vector<double> density =
+          capsula::operators::testing::gatherElementNodeValues(solver->surfaces(), normals);
       const auto sl = solver->singleLayer(LoadDensity(density.data()));
       const auto loads = elementAverages(solver->surfaces(), [](const Vec3&, const Vec3& n) { return n; });
       const auto slConstant = solver->singleLayer(LoadDensity::constantOverElements(loads));

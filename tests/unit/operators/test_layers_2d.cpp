@@ -20,12 +20,12 @@
 namespace {
 
 using namespace capsula;
+using capsula::testing::fittedOrder;
 using operators::ContourDiscretisation2D;
 using operators::DoubleLayerForm;
 using operators::LayerPotentials2D;
 using operators::testing2d::circle;
 using operators::testing2d::ellipse;
-using capsula::testing::fittedOrder;
 
 const auto normalLoad = [](const contour::ContourPoint& p, int, double) -> Eigen::Vector2d { return p.normal; };
 
@@ -191,7 +191,7 @@ TEST(LayerPotentials2D, SingleLayerOfUnitDensityOnACircleConvergesAtFourthOrder)
       layers.singleLayerAtPoints(centre, 1, unitLoad<0>, cx);
       layers.singleLayerAtPoints(centre, 1, unitLoad<1>, cy);
       centreErrors.push_back(
-        std::max({std::abs(cx[0] - exact), std::abs(cx[1]), std::abs(cy[0]), std::abs(cy[1] - exact)}));
+          std::max({std::abs(cx[0] - exact), std::abs(cx[1]), std::abs(cy[0]), std::abs(cy[1] - exact)}));
       nodeErrors.push_back(errNode);
     }
     EXPECT_GT(fittedOrder(sizes, nodeErrors), 3.8) << "a = " << a;

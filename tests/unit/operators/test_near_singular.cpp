@@ -28,7 +28,10 @@ using namespace capsula::operators;
 using mesh::Vec3;
 
 const double defaultTolerance = DiscretisationParameters{}.nearSingularTolerance;
-const auto& defaultRule() { return quadrature::triangleRule(DiscretisationParameters{}.quadraturePoints); }
+const auto& defaultRule()
+{
+  return quadrature::triangleRule(DiscretisationParameters{}.quadraturePoints);
+}
 
 template <std::size_t N>
 double maxAbs(const std::array<double, N>& v)
@@ -84,10 +87,10 @@ TEST(NearSingular, FlatElementSolidAngleAndDoubleLayerTrace)
   for (const double ratio : {1.0, 0.1, 0.01, 0.001}) {
     for (const Vec3& x0 : targets(x, ratio * size)) {
       const double exact = flatSolidAngle(x0, p0, p1, p2);
-      const double solid = integrateAdaptively(element, SolidAngleIntegrand{x0.data()}, defaultRule(),
-                                               defaultTolerance)[0];
-      const auto dl = integrateAdaptively(element, DoubleLayerIntegrand<FreeSpace3DKernel>{x0.data()},
-                                          defaultRule(), defaultTolerance);
+      const double solid =
+          integrateAdaptively(element, SolidAngleIntegrand{x0.data()}, defaultRule(), defaultTolerance)[0];
+      const auto dl = integrateAdaptively(element, DoubleLayerIntegrand<FreeSpace3DKernel>{x0.data()}, defaultRule(),
+                                          defaultTolerance);
       double trace = 0.0;
       for (int a = 0; a < 6; ++a) {
         trace += dl[9 * a] + dl[9 * a + 4] + dl[9 * a + 8];
@@ -131,9 +134,15 @@ void expectCurvedElementMatchesReference(const Vec3& cellCentre)
   }
 }
 
-TEST(NearSingular, CurvedElementFreeSpace) { expectCurvedElementMatchesReference<FreeSpace3DKernel>(Vec3::Zero()); }
+TEST(NearSingular, CurvedElementFreeSpace)
+{
+  expectCurvedElementMatchesReference<FreeSpace3DKernel>(Vec3::Zero());
+}
 
-TEST(NearSingular, CurvedElementWall) { expectCurvedElementMatchesReference<Wall3DKernel>(Vec3(0.0, 1.3, 0.0)); }
+TEST(NearSingular, CurvedElementWall)
+{
+  expectCurvedElementMatchesReference<Wall3DKernel>(Vec3(0.0, 1.3, 0.0));
+}
 
 TEST(NearSingular, RoundOffAroundZeroStopsAtTheBudget)
 {
@@ -147,7 +156,7 @@ TEST(NearSingular, RoundOffAroundZeroStopsAtTheBudget)
   const DoubleLayerIntegrand<greens::Wall3D> integrand{x0.data()};
   const double poles[1][3] = {{x0[0], x0[1], x0[2]}};
   AdaptiveElementQuadrature<DoubleLayerIntegrand<greens::Wall3D>> adaptive(element, integrand, defaultRule(),
-                                                                          defaultTolerance, poles, 1);
+                                                                           defaultTolerance, poles, 1);
   const auto value = adaptive.integrate();
   EXPECT_GT(adaptive.ruleApplications(), maxRuleApplications - 4); // it did run into the budget
   EXPECT_LE(adaptive.ruleApplications(), maxRuleApplications);
@@ -169,7 +178,7 @@ TEST(NearSingular, RefinementIsLocal)
     const SingleLayerIntegrand<FreeSpace3DKernel> integrand{x0.data()};
     const double poles[1][3] = {{x0[0], x0[1], x0[2]}};
     AdaptiveElementQuadrature<SingleLayerIntegrand<FreeSpace3DKernel>> adaptive(element, integrand, defaultRule(),
-                                                                               defaultTolerance, poles, 1);
+                                                                                defaultTolerance, poles, 1);
     adaptive.integrate();
     work.push_back(adaptive.ruleApplications());
     std::printf("target %.0e h above an element: %d rule applications\n", ratio, work.back());

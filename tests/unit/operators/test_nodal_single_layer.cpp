@@ -67,7 +67,8 @@ TEST(NodalSingleLayer, AgreesWithTheSingleLayerOfTheSameLoad)
     auto solver = ot::makeSolver("FreeSpace", cell, 1.0, d);
     const auto f = nodalLoad(cell);
     const auto layout = elementNodeLayout(cell, f);
-    EXPECT_LT(relativeDifference(solver->singleLayerOfNodalLoad(f.data()), solver->singleLayer(op::LoadDensity(layout.data()))),
+    EXPECT_LT(relativeDifference(solver->singleLayerOfNodalLoad(f.data()),
+                                 solver->singleLayer(op::LoadDensity(layout.data()))),
               1e-13);
   }
   // Near the wall: the nodes' images are near-singular, integrated adaptively to 1e-6
@@ -77,7 +78,8 @@ TEST(NodalSingleLayer, AgreesWithTheSingleLayerOfTheSameLoad)
     auto solver = ot::makeSolver("Wall", cell);
     const auto f = nodalLoad(cell);
     const auto layout = elementNodeLayout(cell, f);
-    EXPECT_LT(relativeDifference(solver->singleLayerOfNodalLoad(f.data()), solver->singleLayer(op::LoadDensity(layout.data()))),
+    EXPECT_LT(relativeDifference(solver->singleLayerOfNodalLoad(f.data()),
+                                 solver->singleLayer(op::LoadDensity(layout.data()))),
               1e-6);
   }
 }
@@ -94,11 +96,12 @@ TEST(NodalSingleLayer, CacheFollowsTheGeometry)
   solver->singleLayerOfNodalLoad(f.data());
   std::vector<double> moved = cell.positions();
   for (std::size_t i = 0; i < moved.size(); i += 3) {
-    moved[i] *= 1.3;   // a spheroid
+    moved[i] *= 1.3; // a spheroid
   }
   solver->setPositions(moved.data());
   cell.setPositions(moved.data());
   const auto layout = elementNodeLayout(cell, f);
-  EXPECT_LT(relativeDifference(solver->singleLayerOfNodalLoad(f.data()), solver->singleLayer(op::LoadDensity(layout.data()))),
-            1e-13);
+  EXPECT_LT(
+      relativeDifference(solver->singleLayerOfNodalLoad(f.data()), solver->singleLayer(op::LoadDensity(layout.data()))),
+      1e-13);
 }

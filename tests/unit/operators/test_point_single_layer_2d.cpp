@@ -19,8 +19,8 @@ namespace {
 
 using namespace capsula;
 using namespace capsula::operators;
-using testing2d::ellipse;
 using capsula::testing::fittedOrder;
+using testing2d::ellipse;
 using testing2d::serialComm;
 
 // A smooth load with zero net force (a closed membrane's): f = (0.4 kappa + 0.2 x) n, the
@@ -37,7 +37,7 @@ double relativeError(int nodes, bool wall)
   const contour::Contour c = ellipse(nodes, 0.6, Eigen::Vector2d(0.3, 1.6));
   auto velocity = makeInterfaceVelocity2D(wall, serialComm(), nodes, {}, {});
   const std::vector<double> reference =
-    velocity->singleLayer(c, [](const contour::ContourPoint& p, int, double) { return load(p); });
+      velocity->singleLayer(c, [](const contour::ContourPoint& p, int, double) { return load(p); });
   Eigen::VectorXd f(2 * nodes);
   for (int i = 0; i < nodes; ++i) {
     f.segment<2>(2 * i) = load(c.nodePoint(i));

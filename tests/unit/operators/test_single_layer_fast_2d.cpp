@@ -87,8 +87,7 @@ TEST(RegularSums2D, PairFormulasAreTheGreensFunctionsAppliedToTheForce)
 /// tension plus a tangential part.
 Eigen::Vector2d someLoad(const contour::ContourPoint& p, int, double)
 {
-  return (1.0 + 0.3 * std::cos(3.0 * p.position.x())) * p.normal +
-         0.2 * std::sin(2.0 * p.position.y()) * p.tangent;
+  return (1.0 + 0.3 * std::cos(3.0 * p.position.x())) * p.normal + 0.2 * std::sin(2.0 * p.position.y()) * p.tangent;
 }
 
 template <class Kernel, class Density>
@@ -128,7 +127,7 @@ TEST(LayerPotentials2D, FastSingleLayerEqualsTheReferenceNearTheWall)
     const contour::Contour c = operators::testing2d::ellipse(128, 2.0, {0.3, 1.0 / std::sqrt(2.0) + gap});
     long long fastPieces = 0, referencePieces = 0;
     EXPECT_LT(fastMinusReference<greens::Wall2D>(c, d, 0, 128, someLoad, &fastPieces, &referencePieces), 1e-13)
-      << "gap " << gap;
+        << "gap " << gap;
     EXPECT_EQ(fastPieces, referencePieces) << "gap " << gap;
     if (gap < 0.01) {
       EXPECT_GT(fastPieces, 128) << "the test must exercise the near-singular rules";
@@ -149,7 +148,7 @@ TEST(LayerPotentials2D, FastSingleLayerEqualsTheReferenceForEverySubdivisionSett
     d.nearSingularDistance = distance;
     d.nearSingularLevels = bisections;
     EXPECT_LT(fastMinusReference<greens::Wall2D>(c, d, 0, 64, someLoad), 1e-13)
-      << "distance " << distance << ", bisections " << bisections;
+        << "distance " << distance << ", bisections " << bisections;
   }
   ContourDiscretisation2D d;
   LayerPotentials2D<greens::Wall2D> layers(d);

@@ -213,7 +213,7 @@ TEST(Velocity, WarmStartReachesTheColdSolutionInFewerIterations)
     for (std::size_t k = 0; k < coldAgain.velocities.size(); ++k) {
       historyDifference = std::max(historyDifference, std::abs(fromHistory.velocities[k] - coldAgain.velocities[k]));
     }
-    EXPECT_LT(historyDifference, 1e-9 * scale) << "lambda = " << lambda;   // as above
+    EXPECT_LT(historyDifference, 1e-9 * scale) << "lambda = " << lambda; // as above
   }
 }
 
@@ -233,7 +233,7 @@ TEST(Velocity, WarmStartHistoryOfAnotherMeshIsDropped)
   const auto cold = fine->nodeVelocities(LoadDensity::constantOverElements(loads), flow);
   const auto dropped = fine->nodeVelocities(LoadDensity::constantOverElements(loads), flow, history);
   EXPECT_EQ(dropped.iterations, cold.iterations);
-  EXPECT_EQ(dropped.velocities, cold.velocities);   // the same start, the same arithmetic
+  EXPECT_EQ(dropped.velocities, cold.velocities); // the same start, the same arithmetic
   EXPECT_EQ(history.size(), 1);
   EXPECT_EQ(history.length(), 3u * static_cast<std::size_t>(fine->surfaces().numNodes()));
 }
@@ -278,8 +278,8 @@ TEST(Velocity, PassiveCellDoesNotDisturbTheOther)
   mesh::Placement placementB;
   placementB.centre = centre + Vec3(2.2, 0.4, -0.3);
   auto alone = makeSolver("FreeSpace", sphere(2), lambda);
-  auto pair = makeSolver("FreeSpace", {sphere(2), mesh::makeEllipsoid(1, Vec3(0.5, 0.3, 0.4), placementB)},
-                         {lambda, 1.0});
+  auto pair =
+      makeSolver("FreeSpace", {sphere(2), mesh::makeEllipsoid(1, Vec3(0.5, 0.3, 0.4), placementB)}, {lambda, 1.0});
   const auto loadsA = hadamardRybczynskiLoads(alone->surfaces(), lambda);
   std::vector<double> loads = loadsA;
   loads.resize(3 * pair->surfaces().numElements(), 0.0);
@@ -297,7 +297,8 @@ TEST(Velocity, PassiveCellDoesNotDisturbTheOther)
   EXPECT_LT(differenceA, 1e-8 * scale);
   const auto positions = pair->surfaces().positions();
   const std::vector<double> pointsB(positions.begin() + 3 * numA, positions.end());
-  const auto flowAtB = alone->flowVelocity(pointsB, LoadDensity::constantOverElements(loadsA), a.velocities.data(), flow);
+  const auto flowAtB =
+      alone->flowVelocity(pointsB, LoadDensity::constantOverElements(loadsA), a.velocities.data(), flow);
   double differenceB = 0.0;
   for (std::size_t k = 0; k < flowAtB.size(); ++k) {
     differenceB = std::max(differenceB, std::abs(flowAtB[k] - ab.velocities[3 * numA + k]));

@@ -152,7 +152,8 @@ TEST(InterfaceVelocity2D, GmresSolutionSatisfiesTheEquation)
   for (int m = 1; m < 32; ++m) {
     const Eigen::Vector2d uInf = flow.background.at(c.nodes().col(m));
     for (int j = 0; j < 2; ++j) {
-      const double b = 2.0 / (1.0 + lambda) * uInf[j] - sl[2 * m + j] / (2.0 * M_PI * (1.0 + lambda) * flow.capillaryNumber);
+      const double b =
+          2.0 / (1.0 + lambda) * uInf[j] - sl[2 * m + j] / (2.0 * M_PI * (1.0 + lambda) * flow.capillaryNumber);
       residual = std::max(residual, std::abs(solution.velocities[2 * m + j] - coefficient * dl[2 * m + j] - b));
       scale = std::max(scale, std::abs(b));
     }
@@ -183,7 +184,7 @@ TEST(InterfaceVelocity2D, WarmStartHistoryStartsCloserAndSolvesTheSameEquation)
     const auto cold = velocity->nodeVelocities(c, noLoad, flow, {});
     const auto warm = velocity->nodeVelocities(c, noLoad, flow, {}, &history);
     EXPECT_EQ(history.size(), step + 1);
-    if (step >= 2) {   // the history holds a few solutions
+    if (step >= 2) { // the history holds a few solutions
       coldIterations += cold.iterations;
       warmIterations += warm.iterations;
     }
@@ -237,7 +238,8 @@ std::vector<double> velocitiesWithInwardNormal(operators::InterfaceVelocity2D& v
   for (int m = 0; m < c.numberOfNodes(); ++m) {
     const Eigen::Vector2d uInf = flow.background.at(c.nodes().col(m));
     for (int j = 0; j < 2; ++j) {
-      rhs[2 * m + j] = 2.0 / (1.0 + lambda) * uInf[j] - sl[2 * m + j] / (2.0 * M_PI * (1.0 + lambda) * flow.capillaryNumber);
+      rhs[2 * m + j] =
+          2.0 / (1.0 + lambda) * uInf[j] - sl[2 * m + j] / (2.0 * M_PI * (1.0 + lambda) * flow.capillaryNumber);
     }
   }
   for (const int m : fixedNodes) {

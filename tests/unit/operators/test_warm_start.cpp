@@ -78,13 +78,13 @@ TEST(WarmStartHistory, KeepsTheLastPairsAndRoundTripsThroughItsFlatForm)
   EXPECT_EQ(history.size(), 2);
   const std::vector<double> rhs = history.rightHandSides();
   ASSERT_EQ(rhs.size(), 24u);
-  const auto third = vectorOf(1.0, 2.0, 0.0);   // the oldest kept
+  const auto third = vectorOf(1.0, 2.0, 0.0); // the oldest kept
   EXPECT_EQ(std::vector<double>(rhs.begin(), rhs.begin() + 12), third);
   const WarmStartHistory copy = WarmStartHistory::fromFlattened(2, 12, rhs, history.solutions());
   EXPECT_EQ(copy.rightHandSides(), rhs);
   EXPECT_EQ(copy.solutions(), history.solutions());
   const auto b = vectorOf(0.2, 0.4, 0.0);
-  EXPECT_EQ(copy.initialGuess(b), history.initialGuess(b));   // bit for bit: a restart
+  EXPECT_EQ(copy.initialGuess(b), history.initialGuess(b)); // bit for bit: a restart
 }
 
 TEST(WarmStartHistory, MismatchedInputIsRejected)

@@ -46,8 +46,7 @@ TEST(GaussLegendre, ExactOnGeneralInterval)
       // int |x|^p = (b^{p+1} + |a|^{p+1}) / (p+1). x^p multiplies a node's rounding of the
       // affine map (~1 ulp) by p, hence a tolerance of several ulps times p + 1.
       const double scale = (std::pow(b, power + 1) + std::pow(-a, power + 1)) / (power + 1);
-      EXPECT_NEAR(integrate(rule, power), exact, 1e-15 * (power + 1) * scale)
-        << "n = " << n << ", x^" << power;
+      EXPECT_NEAR(integrate(rule, power), exact, 1e-15 * (power + 1) * scale) << "n = " << n << ", x^" << power;
     }
   }
 }
@@ -61,8 +60,8 @@ TEST(GaussLegendre, ErrorAtDegree2nIsTheClassicalRemainder)
     const double exact = 2.0 / (2 * n + 1);
     const double nFactorial = std::tgamma(n + 1.0);
     const double twoNFactorial = std::tgamma(2.0 * n + 1.0);
-    const double remainder = std::pow(2.0, 2 * n + 1) * std::pow(nFactorial, 4)
-                             / ((2 * n + 1) * twoNFactorial * twoNFactorial);
+    const double remainder =
+        std::pow(2.0, 2 * n + 1) * std::pow(nFactorial, 4) / ((2 * n + 1) * twoNFactorial * twoNFactorial);
     // The remainder is >= 1e-6 of the integral here; 1e-9 relative leaves it 3 digits.
     EXPECT_NEAR(exact - integrate(rule, 2 * n), remainder, 1e-9 * remainder) << "n = " << n;
   }
@@ -106,8 +105,7 @@ TEST(GaussLegendre, RejectsBadInput)
   try {
     gaussLegendre(0);
     FAIL() << "n = 0 was accepted";
-  }
-  catch (const capsula::core::InputError& error) {
+  } catch (const capsula::core::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("n = 0"), std::string::npos) << error.what();
   }
   EXPECT_THROW(gaussLegendre(-3), capsula::core::InputError);

@@ -133,8 +133,7 @@ TEST(LogWeightedGauss, ConvergesToSineIntegralForCosine)
   EXPECT_NEAR(exact, 0.946083070367183, 1e-15); // Si(1), Abramowitz & Stegun Table 5.1
   std::vector<double> errors;
   for (int n = 1; n <= 7; ++n) {
-    errors.push_back(std::abs(apply(logWeightedGauss(n), [](double x) { return std::cos(x); })
-                              - exact));
+    errors.push_back(std::abs(apply(logWeightedGauss(n), [](double x) { return std::cos(x); }) - exact));
   }
   // The error of an entire function falls faster than geometrically, ~ 1/(4^{2n} (2n)!):
   // each step gains at least two digits until round-off (1e-16) is reached at n = 6.
@@ -180,10 +179,8 @@ TEST(LogWeightedGauss, RejectsBadOrder)
     try {
       logWeightedGauss(n);
       FAIL() << "n = " << n << " was accepted";
-    }
-    catch (const capsula::core::InputError& error) {
-      EXPECT_NE(std::string(error.what()).find("n = " + std::to_string(n)), std::string::npos)
-        << error.what();
+    } catch (const capsula::core::InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("n = " + std::to_string(n)), std::string::npos) << error.what();
     }
   }
 }

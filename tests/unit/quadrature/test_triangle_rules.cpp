@@ -60,8 +60,8 @@ TEST(TriangleRules, SupportsTheThesisCounts)
 
 TEST(TriangleRules, StatedDegrees)
 {
-  const std::vector<std::pair<int, int>> countAndDegree = {
-    {1, 1}, {3, 2}, {4, 3}, {6, 4}, {7, 5}, {9, 5}, {12, 6}, {13, 7}, {16, 8}, {19, 9}};
+  const std::vector<std::pair<int, int>> countAndDegree = {{1, 1}, {3, 2},  {4, 3},  {6, 4},  {7, 5},
+                                                           {9, 5}, {12, 6}, {13, 7}, {16, 8}, {19, 9}};
   for (const auto& [count, degree] : countAndDegree) {
     EXPECT_EQ(triangleRule(count).degree, degree) << "N_Q = " << count;
     EXPECT_EQ(triangleRule(count).size(), count);
@@ -75,8 +75,7 @@ TEST(TriangleRules, ExactForEveryMonomialUpToTheDegree)
     for (int degree = 0; degree <= rule.degree; ++degree) {
       // 20-digit tables: only the round-off of <= 19 terms remains, some of mixed sign
       // (4 and 13 points); observed <= 4.4e-16, so 2e-15 leaves a margin of 4.
-      EXPECT_LT(worstErrorAtDegree(rule, degree), 2e-15) << "N_Q = " << count << ", degree "
-                                                         << degree;
+      EXPECT_LT(worstErrorAtDegree(rule, degree), 2e-15) << "N_Q = " << count << ", degree " << degree;
     }
   }
 }
@@ -103,7 +102,7 @@ TEST(TriangleRules, WeightsSumToAreaAndPointsLieInside)
     }
     EXPECT_NEAR(sum, 0.5, 1e-15) << "N_Q = " << count; // ~N_Q ulps
     const bool hasNegativeWeight =
-      std::any_of(rule.weight.begin(), rule.weight.end(), [](double w) { return w < 0.0; });
+        std::any_of(rule.weight.begin(), rule.weight.end(), [](double w) { return w < 0.0; });
     EXPECT_EQ(hasNegativeWeight, count == 4 || count == 13) << "N_Q = " << count;
   }
 }
@@ -117,8 +116,7 @@ TEST(TriangleRules, InvariantUnderTheTriangleSymmetries)
     auto contains = [&rule](double xi, double eta, double weight) {
       for (int k = 0; k < rule.size(); ++k) {
         // The tables are built from the same barycentric numbers: equal to round-off.
-        if (std::abs(rule.xi[k] - xi) < 1e-15 && std::abs(rule.eta[k] - eta) < 1e-15
-            && rule.weight[k] == weight) {
+        if (std::abs(rule.xi[k] - xi) < 1e-15 && std::abs(rule.eta[k] - eta) < 1e-15 && rule.weight[k] == weight) {
           return true;
         }
       }
@@ -126,8 +124,7 @@ TEST(TriangleRules, InvariantUnderTheTriangleSymmetries)
     };
     for (int k = 0; k < rule.size(); ++k) {
       EXPECT_TRUE(contains(rule.eta[k], rule.xi[k], rule.weight[k])) << "N_Q = " << count;
-      EXPECT_TRUE(contains(rule.eta[k], 1.0 - rule.xi[k] - rule.eta[k], rule.weight[k]))
-        << "N_Q = " << count;
+      EXPECT_TRUE(contains(rule.eta[k], 1.0 - rule.xi[k] - rule.eta[k], rule.weight[k])) << "N_Q = " << count;
     }
   }
 }
@@ -138,8 +135,7 @@ TEST(TriangleRules, RejectsUnknownCountNamingItAndTheSupportedOnes)
     try {
       triangleRule(count);
       FAIL() << "N_Q = " << count << " was accepted";
-    }
-    catch (const capsula::core::InputError& error) {
+    } catch (const capsula::core::InputError& error) {
       const std::string what = error.what();
       EXPECT_NE(what.find("N_Q = " + std::to_string(count)), std::string::npos) << what;
       EXPECT_NE(what.find("1, 3, 4, 6, 7, 9, 12, 13, 16, 19"), std::string::npos) << what;

@@ -47,17 +47,15 @@ class SceneRunFixture : public ::testing::Test {
 protected:
   void SetUp() override
   {
-    root_ = std::filesystem::temp_directory_path() /
-            ("capsula-scene-" + std::to_string(::getpid()) + "-" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    root_ = std::filesystem::temp_directory_path() / ("capsula-scene-" + std::to_string(::getpid()) + "-" +
+                                                      ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::remove_all(root_);
     std::filesystem::create_directories(root_);
   }
   void TearDown() override { std::filesystem::remove_all(root_); }
 
   /// runScene(deck) with its output in `directory` (restarting from `restart` if given).
-  SceneRunResult run(const Teuchos::ParameterList& deck, const std::string& directory,
-                     const std::string& restart = "")
+  SceneRunResult run(const Teuchos::ParameterList& deck, const std::string& directory, const std::string& restart = "")
   {
     static const auto kernels = operators::builtInKernels();
     SceneRunOptions options;

@@ -104,9 +104,8 @@ TEST(RunSummary, OneLayoutForEveryApp)
   summary.begin(statistics, true);
   summary.setTerms({"a term"});
   statistics.rhsEvaluations = 100;
-  const io::JsonValue json = summary.json("failed", "it broke", 2.5, statistics, [](io::JsonValue& j) {
-    j["result"] = 1.0;
-  });
+  const io::JsonValue json =
+      summary.json("failed", "it broke", 2.5, statistics, [](io::JsonValue& j) { j["result"] = 1.0; });
   EXPECT_EQ(keys(json), (std::vector<std::string>{"application", "status", "failure", "time", "version", "ranks",
                                                   "restarted", "terms", "steps", "result", "timings", "deck"}));
   io::JsonValue copy = json;
@@ -156,7 +155,7 @@ TEST(RunOutputs, ARestartIntoAnotherDirectoryCarriesTheTablesOver)
   const io::CsvTable table = io::readCsvTable((second / "metrics.csv").string());
   ASSERT_EQ(table.rows.size(), 3u);
   EXPECT_EQ(table.rows[2], (std::vector<double>{0.75, 1.5}));
-  EXPECT_EQ(io::readCsvTable((first / "metrics.csv").string()).rows.size(), 3u);   // untouched
+  EXPECT_EQ(io::readCsvTable((first / "metrics.csv").string()).rows.size(), 3u); // untouched
   fs::remove_all(first);
   fs::remove_all(second);
 }

@@ -34,7 +34,7 @@ TEST(MeshRegularisation, TriggerMustBeAboveTheStopAngle)
 {
   try {
     const auto deck = smallDeck(1, 0.0, false, [](Teuchos::ParameterList& d) {
-      enabled(4.0)(d);   // below the default stop at 5 degrees
+      enabled(4.0)(d); // below the default stop at 5 degrees
     });
     run::readSceneOutputSettings(*deck, scene::describeScene(*deck));
     FAIL() << "accepted a trigger below the stop angle";
@@ -71,7 +71,7 @@ TEST_F(MeshRegularisationRun, RestartReproducesTheRunBitForBit)
   const std::string first = read("split/summary.json");
   const auto early = first.find("\"mesh regularisations\": ");
   ASSERT_NE(early, std::string::npos);
-  EXPECT_GE(std::stoi(first.substr(early + 24)), 1);   // some before the split
+  EXPECT_GE(std::stoi(first.substr(early + 24)), 1); // some before the split
   run(*smallDeck(1, 0.0, false, tweak(0.6)), "split", "split");
   EXPECT_EQ(read("split/metrics.csv"), read("whole/metrics.csv"));
 }

@@ -48,7 +48,6 @@ protected:
     }
     EXPECT_EQ(read(a + "/snapshots.xdmf"), read(b + "/snapshots.xdmf"));
   }
-
 };
 
 TEST_F(SceneRunTest, WritesTheOutputContract)
@@ -56,23 +55,28 @@ TEST_F(SceneRunTest, WritesTheOutputContract)
   const auto result = run(*smallDeck(1, 2.0, true), "out");
   EXPECT_EQ(result.status, "finished");
   EXPECT_DOUBLE_EQ(result.time, 0.2);
-  for (const char* file : {"metrics.csv", "summary.json", "snapshots.xdmf", "snapshots.h5",
-                           "checkpoint.h5", "deck.xml", "run.json"}) {
+  for (const char* file :
+       {"metrics.csv", "summary.json", "snapshots.xdmf", "snapshots.h5", "checkpoint.h5", "deck.xml", "run.json"}) {
     EXPECT_TRUE(fs::exists(root_ / "out" / file)) << file;
   }
   // One file holds every snapshot: t = 0, 0.1, 0.2.
   EXPECT_EQ(capsula::io::readSnapshotLayouts((root_ / "out" / "snapshots.h5").string()).size(), 3u);
   const auto table = capsula::io::readCsvTable((root_ / "out" / "metrics.csv").string());
-  const std::vector<std::string> required{"time", "step", "dt", "D12", "D13", "D23", "x_c", "y_c", "z_c",
-                                          "u_slip", "u_migr", "volume", "area", "reduced_volume",
+  const std::vector<std::string> required{"time",         "step",
+                                          "dt",           "D12",
+                                          "D13",          "D23",
+                                          "x_c",          "y_c",
+                                          "z_c",          "u_slip",
+                                          "u_migr",       "volume",
+                                          "area",         "reduced_volume",
                                           "footprint_xz", "mean_shear_stress"};
   ASSERT_GE(table.columns.size(), required.size());
   for (std::size_t k = 0; k < required.size(); ++k) {
     EXPECT_EQ(table.columns[k], required[k]);
   }
-  ASSERT_EQ(table.rows.size(), 3u);   // t = 0, 0.1, 0.2
+  ASSERT_EQ(table.rows.size(), 3u); // t = 0, 0.1, 0.2
   EXPECT_DOUBLE_EQ(table.rows[2][0], 0.2);
-  EXPECT_GT(table.rows[2][3], 0.01);  // the capsule has deformed
+  EXPECT_GT(table.rows[2][3], 0.01); // the capsule has deformed
   const std::string summary = read("out/summary.json");
   EXPECT_NE(summary.find("\"status\": \"finished\""), std::string::npos);
   EXPECT_NE(summary.find("kernel: Wall"), std::string::npos);
@@ -92,11 +96,12 @@ TEST_F(SceneRunTest, WallShearStressCostsOnlyWhenAsked)
   EXPECT_EQ(read("off/metrics.csv").find("wall_area_upstream"), std::string::npos);
 
   before = flowPoints->numCalls();
-  result = run(*smallDeck(1, 2.0, true, [](Teuchos::ParameterList& d) {
-    auto& wall = d.sublist("Output").sublist("Wall shear stress");
-    wall.set("Enabled", true);
-    wall.set("Spacing", 1.0);
-  }),
+  result = run(*smallDeck(1, 2.0, true,
+                          [](Teuchos::ParameterList& d) {
+                            auto& wall = d.sublist("Output").sublist("Wall shear stress");
+                            wall.set("Enabled", true);
+                            wall.set("Spacing", 1.0);
+                          }),
                "on");
   EXPECT_GT(flowPoints->numCalls(), before);
   EXPECT_NE(read("on/metrics.csv").find("wall_area_upstream"), std::string::npos);
@@ -120,7 +125,8 @@ TEST_F(SceneRunTest, LiftVelocityIsWhatTheFixedHeightRemoves)
   // (u_migr_instant ~ 0) but u_lift still reports the rise rate the constraint removed
   // (Fig 5.14), of the same sign and size as the free cell's at this early time.
   run(*smallDeck(1, 1.6, true), "free");
-  run(*smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) { d.sublist("Cells").sublist("Cell 0").set("Fixed height", true); }),
+  run(*smallDeck(1, 1.6, true,
+                 [](Teuchos::ParameterList& d) { d.sublist("Cells").sublist("Cell 0").set("Fixed height", true); }),
       "held");
   const auto free = capsula::io::readCsvTable((root_ / "free" / "metrics.csv").string());
   const auto held = capsula::io::readCsvTable((root_ / "held" / "metrics.csv").string());
@@ -143,9 +149,8 @@ TEST_F(SceneRunTest, RestartReproducesTheUninterruptedRun)
 {
   const auto deck = smallDeck(1, 1.6, true);
   run(*deck, "whole");
-  const auto half = smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) {
-    d.sublist("Time integration").set("End time", 0.1);
-  });
+  const auto half =
+      smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) { d.sublist("Time integration").set("End time", 0.1); });
   run(*half, "split");
   const auto result = run(*deck, "split", "split");
   EXPECT_EQ(result.status, "finished");
@@ -163,9 +168,8 @@ TEST_F(SceneRunTest, RestartRefusesAChangedDeck)
 {
   run(*smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) { d.sublist("Time integration").set("End time", 0.1); }),
       "first");
-  const auto changed = smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) {
-    d.sublist("Flow").set("Capillary number", 0.6);
-  });
+  const auto changed =
+      smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) { d.sublist("Flow").set("Capillary number", 0.6); });
   try {
     run(*changed, "first", "first");
     FAIL() << "a restart with another capillary number must be refused";

@@ -33,7 +33,8 @@ TEST(SceneRunDeck, FillsInEveryDefault)
 
 TEST(SceneOutputSettings, RejectsOutputsTheSceneCannotHave)
 {
-  const auto described = [](const std::function<void(Teuchos::ParameterList&)>& tweak, bool wall = true) -> std::string {
+  const auto described = [](const std::function<void(Teuchos::ParameterList&)>& tweak,
+                            bool wall = true) -> std::string {
     try {
       const auto deck = smallDeck(1, 2.0, wall, tweak);
       run::readSceneOutputSettings(*deck, scene::describeScene(*deck));
@@ -50,12 +51,12 @@ TEST(SceneOutputSettings, RejectsOutputsTheSceneCannotHave)
               d.sublist("Output").set("Flow probes", scene::testing::realArray({1.0, -2.0, 3.0}));
             }).find("not in the fluid"),
             std::string::npos);
-  EXPECT_NE(described([](Teuchos::ParameterList& d) {
-              d.sublist("Output").sublist("Wall shear stress").set("Enabled", true);
-            },
-                      false)
-              .find("there is no wall"),
-            std::string::npos);
+  EXPECT_NE(
+      described(
+          [](Teuchos::ParameterList& d) { d.sublist("Output").sublist("Wall shear stress").set("Enabled", true); },
+          false)
+          .find("there is no wall"),
+      std::string::npos);
 }
 
 } // namespace

@@ -34,8 +34,8 @@ Teuchos::RCP<const Teuchos::Comm<int>> serialComm()
 
 std::string scratchDirectory(const std::string& name)
 {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("capsula_tether2d_" + name + "_" + std::to_string(::getpid()));
+  const auto path =
+      std::filesystem::temp_directory_path() / ("capsula_tether2d_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(path);
   return path.string();
 }
@@ -75,9 +75,9 @@ TEST(TetherRun2D, FreeCapsuleInShearReachesTheSmallDeformationShape)
 
 TEST(TetherRun2D, TetheredCellIsHeldAtTheAnchorAndPulledDownstream)
 {
-  const auto deck = tether2dDeck({"Cell/Number of points=48", "Flow/Capillary number=0.25",
-                                  "Tether/Minimum preparation time=0.5", "Tether/Maximum preparation time=1",
-                                  "Time integration/End time=1", "Output/Interval=0.25"});
+  const auto deck =
+      tether2dDeck({"Cell/Number of points=48", "Flow/Capillary number=0.25", "Tether/Minimum preparation time=0.5",
+                    "Tether/Maximum preparation time=1", "Time integration/End time=1", "Output/Interval=0.25"});
   TetherRun2D run(serialComm(), deck, nullptr);
   const TetherRunResult2D result = run.run("", std::nullopt);
   ASSERT_TRUE(result.tethered);
@@ -101,10 +101,10 @@ TEST(TetherRun2D, ForceTransientIsLeftOutOfTheMaximumAfterIt)
 {
   // A transient longer than the tethered stage: no step counts, the maximum after it stays 0
   // while max.tether_force has every step's.
-  const auto deck = tether2dDeck({"Cell/Number of points=32", "Flow/Capillary number=0.25",
-                                  "Tether/Minimum preparation time=0.25", "Tether/Maximum preparation time=0.25",
-                                  "Time integration/End time=0.25", "Output/Interval=0.25",
-                                  "Tether/Force transient=0.5"});
+  const auto deck =
+      tether2dDeck({"Cell/Number of points=32", "Flow/Capillary number=0.25", "Tether/Minimum preparation time=0.25",
+                    "Tether/Maximum preparation time=0.25", "Time integration/End time=0.25", "Output/Interval=0.25",
+                    "Tether/Force transient=0.5"});
   TetherRun2D run(serialComm(), deck, nullptr);
   const TetherRunResult2D result = run.run("", std::nullopt);
   ASSERT_TRUE(result.tethered);
@@ -125,9 +125,8 @@ TEST(TetherRun2D, PreparationEndsAtTheLargestDeformationWithANodeAtTheBottom)
   std::vector<double> times;
   for (const char* window : {"Tether/Preparation window=0.05", "Tether/Preparation window=0.1"}) {
     const auto deck = tether2dDeck({"Cell/Number of points=48", "Flow/Capillary number=0.25", window,
-                                    "Tether/Wait for a node at the bottom=true",
-                                    "Tether/Maximum preparation time=10", "Time integration/End time=0.01",
-                                    "Output/Interval=0.25"});
+                                    "Tether/Wait for a node at the bottom=true", "Tether/Maximum preparation time=10",
+                                    "Time integration/End time=0.01", "Output/Interval=0.25"});
     TetherRun2D run(serialComm(), deck, nullptr);
     const TetherRunResult2D result = run.run("", std::nullopt);
     ASSERT_TRUE(result.tethered);
@@ -168,9 +167,12 @@ void expectRestartReproducesTheRun(const std::vector<std::string>& extra, const 
   // The first part ends at tau = 0.25 of the tethered stage, an output time of the whole
   // run too: outputs at k 0.125 are exact binary numbers, so both runs step onto the same
   // times (a run ending at 0.3 would stop at 0.3, one passing it at 3 x 0.1 = 0.30000000000000004).
-  const std::vector<std::string> base{"Cell/Number of points=32", "Flow/Viscosity ratio=3",
-                                      "Flow/Capillary number=0.1", "Tether/Minimum preparation time=0.125",
-                                      "Tether/Maximum preparation time=0.25", "Output/Interval=0.125",
+  const std::vector<std::string> base{"Cell/Number of points=32",
+                                      "Flow/Viscosity ratio=3",
+                                      "Flow/Capillary number=0.1",
+                                      "Tether/Minimum preparation time=0.125",
+                                      "Tether/Maximum preparation time=0.25",
+                                      "Output/Interval=0.125",
                                       "Output/Checkpoint every=0"};
   std::vector<std::string> settings = base;
   settings.insert(settings.end(), extra.begin(), extra.end());
@@ -267,10 +269,13 @@ TEST(TetherRun2D, RegriddedFreeCellKeepsItsShape)
   // preparation (Maximum preparation time), A/A0 and D12 at tethering within 1e-4 of the
   // run without regrids (they differ by 1e-6 and 2e-6: 48 even markers against graded ones
   // are different discretisations, so not to round-off), and the area kept to 1e-4.
-  const std::vector<std::string> settings{"Cell/Number of points=48", "Flow/Capillary number=0.25",
+  const std::vector<std::string> settings{"Cell/Number of points=48",
+                                          "Flow/Capillary number=0.25",
                                           "Tether/Minimum preparation time=0.5",
-                                          "Tether/Maximum preparation time=0.5", "Time integration/End time=0.25",
-                                          "Output/Interval=0.25", "Tether/Regrid at tethering=true"};
+                                          "Tether/Maximum preparation time=0.5",
+                                          "Time integration/End time=0.25",
+                                          "Output/Interval=0.25",
+                                          "Tether/Regrid at tethering=true"};
   auto regridding = settings;
   regridding.push_back("Tether/Preparation regrid interval=0.05");
   const std::string a = scratchDirectory("prep_plain");
@@ -297,10 +302,9 @@ TEST(TetherRun2D, RegriddedCellIsTetheredAtTheLowestPointOfItsSpline)
   // the nearest marker. The regridding keeps the shape: A/A0, D12 and the area right after
   // tethering match those of the plain run (the same free cell) to the splines'
   // interpolation error (48 points: 6e-5 in A/A0, 2e-5 in D12).
-  const std::vector<std::string> settings{"Cell/Number of points=48", "Flow/Capillary number=0.25",
-                                          "Tether/Minimum preparation time=0.5",
-                                          "Tether/Maximum preparation time=1", "Time integration/End time=1",
-                                          "Output/Interval=0.25"};
+  const std::vector<std::string> settings{
+      "Cell/Number of points=48",          "Flow/Capillary number=0.25",  "Tether/Minimum preparation time=0.5",
+      "Tether/Maximum preparation time=1", "Time integration/End time=1", "Output/Interval=0.25"};
   auto regridded = settings;
   regridded.push_back("Tether/Regrid at tethering=true");
   TetherRun2D plain(serialComm(), tether2dDeck(settings), nullptr);
@@ -325,8 +329,7 @@ TEST(TetherRun2D, RegriddedCellIsTetheredAtTheLowestPointOfItsSpline)
   // at the anchor. (Later the membrane next to the tether may dip below it: 0.0047 at tau = 1.)
   EXPECT_NEAR(gradedRows.rows[0][column(gradedRows, "lowest_point")], 0.005, 1e-12);
   for (const std::string name : {"contour_length_ratio", "D12", "area"}) {
-    EXPECT_NEAR(gradedRows.rows[0][column(gradedRows, name)], plainRows.rows[0][column(plainRows, name)], 2e-4)
-        << name;
+    EXPECT_NEAR(gradedRows.rows[0][column(gradedRows, name)], plainRows.rows[0][column(plainRows, name)], 2e-4) << name;
   }
   // At the moment of tethering the free cell's tension is continuous, so the force should be
   // ~0; what the switch to a tethered spline with natural ends puts in is O(h kappa gamma),
@@ -348,10 +351,10 @@ TEST(TetherRun2D, AreaDriftStaysSmallAtLambdaTen)
   // The short version of the area-drift check (docs/tether2d-results.md has the full runs: the
   // thesis kept it below 1.5% at lambda = 10): 40 points, a/b = 0.5, Ca = 0.1, lambda = 10,
   // through tethering to tau = 1. The GMRES path with its double layer is exercised.
-  const auto deck = tether2dDeck({"Cell/Number of points=40", "Cell/Aspect ratio=0.5", "Flow/Viscosity ratio=10",
-                                  "Flow/Capillary number=0.1", "Tether/Minimum preparation time=0.25",
-                                  "Tether/Maximum preparation time=0.5", "Time integration/End time=1",
-                                  "Output/Interval=0.25"});
+  const auto deck =
+      tether2dDeck({"Cell/Number of points=40", "Cell/Aspect ratio=0.5", "Flow/Viscosity ratio=10",
+                    "Flow/Capillary number=0.1", "Tether/Minimum preparation time=0.25",
+                    "Tether/Maximum preparation time=0.5", "Time integration/End time=1", "Output/Interval=0.25"});
   TetherRun2D run(serialComm(), deck, nullptr);
   const TetherRunResult2D result = run.run("", std::nullopt);
   ASSERT_TRUE(result.tethered);

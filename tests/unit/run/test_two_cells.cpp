@@ -95,27 +95,52 @@ struct Mirrored {
   double sign;
   double scale;
 };
-constexpr std::array<Mirrored, 12> kMirrored{{{"x_c", 1, 1}, {"y_c", 1, 1}, {"z_c", -1, 1},
-                                              {"u_slip", 1, 1e-2}, {"u_migr", 1, 1e-3},
-                                              {"w_c", -1, 1e-3}, {"u_slip_instant", 1, 1e-2},
-                                              {"u_migr_instant", 1, 1e-3}, {"D12", 1, 1e-2},
-                                              {"inclination_deg", 1, 1}, {"mean_shear_stress", 1, 1e-1},
+constexpr std::array<Mirrored, 12> kMirrored{{{"x_c", 1, 1},
+                                              {"y_c", 1, 1},
+                                              {"z_c", -1, 1},
+                                              {"u_slip", 1, 1e-2},
+                                              {"u_migr", 1, 1e-3},
+                                              {"w_c", -1, 1e-3},
+                                              {"u_slip_instant", 1, 1e-2},
+                                              {"u_migr_instant", 1, 1e-3},
+                                              {"D12", 1, 1e-2},
+                                              {"inclination_deg", 1, 1},
+                                              {"mean_shear_stress", 1, 1e-1},
                                               {"omega_z", 1, 0.5}}};
 
 TEST_F(TwoCellsTest, MetricsHaveAColumnPerCellAndThePairColumns)
 {
   run(*pairDeck({0.0, 2.5, 1.25}, {0.0, 2.5, -1.25}), "pair");
   const auto t = table("pair");
-  EXPECT_EQ(t.rows.size(), 3u);   // t = 0, 0.05, 0.1: one row per output, not per cell
+  EXPECT_EQ(t.rows.size(), 3u); // t = 0, 0.05, 0.1: one row per output, not per cell
   EXPECT_EQ(std::count(t.columns.begin(), t.columns.end(), "cell"), 0);
-  for (const char* column : {"time", "D12_0", "D12_1", "x_c_0", "x_c_1", "u_slip_1", "shape_change_rate_1",
-                             "gmres_iterations", "dx_0_1", "dy_0_1", "dz_0_1", "distance_0_1", "du_0_1",
-                             "dv_0_1", "dw_0_1", "dslip_0_1", "gap_0_1", "min_angle_deg_0",
-                             "min_angle_deg_1", "max_edge_ratio_1", "min_tension_0", "wall_gap_per_h_1", "max_distortion_1"}) {
+  for (const char* column : {"time",
+                             "D12_0",
+                             "D12_1",
+                             "x_c_0",
+                             "x_c_1",
+                             "u_slip_1",
+                             "shape_change_rate_1",
+                             "gmres_iterations",
+                             "dx_0_1",
+                             "dy_0_1",
+                             "dz_0_1",
+                             "distance_0_1",
+                             "du_0_1",
+                             "dv_0_1",
+                             "dw_0_1",
+                             "dslip_0_1",
+                             "gap_0_1",
+                             "min_angle_deg_0",
+                             "min_angle_deg_1",
+                             "max_edge_ratio_1",
+                             "min_tension_0",
+                             "wall_gap_per_h_1",
+                             "max_distortion_1"}) {
     EXPECT_EQ(std::count(t.columns.begin(), t.columns.end(), column), 1) << column;
   }
   EXPECT_EQ(t.columns.size(), 3u + 2u * 27u + 1u + 9u + 2u * 5u + 1u);
-  EXPECT_EQ(t.columns.back(), "gap_per_h_0_1");   // the stability diagnostics come last
+  EXPECT_EQ(t.columns.back(), "gap_per_h_0_1"); // the stability diagnostics come last
   // Separation and gap at t = 0: centres 2.5 apart; the level-1 icosphere has nodes on the
   // z axis, so the gap of the discrete surfaces is exactly the spheres' 0.5.
   EXPECT_NEAR(value(t, 0, "dz_0_1"), 2.5, 1e-12);
@@ -146,9 +171,8 @@ TEST_F(TwoCellsTest, SideBySideCellsMoveAsMirrorImages)
   for (std::size_t row = 0; row < t.rows.size(); ++row) {
     for (const auto& m : kMirrored) {
       const std::string name = m.name;
-      EXPECT_LE(mismatch(value(t, row, name + "_0"), value(t, row, name + "_1"), m.sign, m.scale),
-                kSymmetryTolerance)
-        << name << " at row " << row;
+      EXPECT_LE(mismatch(value(t, row, name + "_0"), value(t, row, name + "_1"), m.sign, m.scale), kSymmetryTolerance)
+          << name << " at row " << row;
     }
   }
   // They do interact: they move apart (thesis Fig 6.4: U_z(1) - U_z(2) > 0).
@@ -173,7 +197,7 @@ TEST_F(TwoCellsTest, MirrorImageDecksGiveMirrorImageResults)
       for (const auto& m : kMirrored) {
         const std::string name = std::string(m.name) + cell;
         EXPECT_LE(mismatch(value(a, row, name), value(b, row, name), m.sign, m.scale), kSymmetryTolerance)
-          << name << " at row " << row;
+            << name << " at row " << row;
       }
     }
     EXPECT_LE(mismatch(value(a, row, "dz_0_1"), value(b, row, "dz_0_1"), -1, 1), kSymmetryTolerance);
@@ -190,18 +214,18 @@ TEST_F(TwoCellsTest, MirrorImageDecksGiveMirrorImageResults)
 // comparison.
 TEST_F(TwoCellsTest, FarApartEachCellMatchesTheIsolatedCell)
 {
-  const double h = 1.25;   // the thesis's lower height
+  const double h = 1.25; // the thesis's lower height
   run(*pairDeck({11.0, h, 0.0}, {-11.0, h, 0.0}), "pair");
   run(*pairDeck({0.0, h, 0.0}, {}, 1), "single");
   const auto pair = table("pair"), single = table("single");
   const std::size_t last = single.rows.size() - 1;
   ASSERT_EQ(pair.rows.size(), single.rows.size());
   for (const char* cell : {"_0", "_1"}) {
-    for (const char* name : {"D12", "y_c", "u_slip", "u_slip_instant", "mean_shear_stress", "omega_z",
-                             "reduced_volume"}) {
+    for (const char* name :
+         {"D12", "y_c", "u_slip", "u_slip_instant", "mean_shear_stress", "omega_z", "reduced_volume"}) {
       const double isolated = value(single, last, name);
       EXPECT_LE(std::abs(value(pair, last, std::string(name) + cell) - isolated), 5e-3 * std::abs(isolated))
-        << name << cell << " vs the isolated " << isolated;
+          << name << cell << " vs the isolated " << isolated;
     }
   }
 }
@@ -225,7 +249,7 @@ TEST_F(TwoCellsTest, CellsComingTooCloseStopTheRunWithOutputsAndCheckpoint)
   const std::size_t last = t.rows.size() - 1;
   EXPECT_DOUBLE_EQ(value(t, last, "time"), result.time);
   EXPECT_LT(value(t, last, "gap_0_1"), 0.565);
-  EXPECT_GT(value(t, last, "gap_0_1"), 0.56);   // stopped at the first step below, not later
+  EXPECT_GT(value(t, last, "gap_0_1"), 0.56); // stopped at the first step below, not later
   EXPECT_TRUE(fs::exists(root_ / "close" / "checkpoint.h5"));
   const std::string summary = read("close/summary.json");
   EXPECT_NE(summary.find("\"status\": \"too close\""), std::string::npos) << summary;
@@ -286,8 +310,7 @@ TEST_F(TwoCellsTest, WallAreasOutsideTheIsolatedCellsRange)
     run(*withMap(2.0, 1.0), "bad");
     FAIL() << "a reversed range must be refused";
   } catch (const core::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("'Output/Wall shear stress/Isolated range'"), std::string::npos)
-      << e.what();
+    EXPECT_NE(std::string(e.what()).find("'Output/Wall shear stress/Isolated range'"), std::string::npos) << e.what();
   }
 }
 
@@ -299,17 +322,15 @@ TEST_F(TwoCellsTest, TouchingCellsAreRejectedAtTheStart)
     run(*pairDeck({0.0, 2.0, 1.0}, {0.0, 2.0, -1.0}), "touching");
     FAIL() << "touching cells must be rejected";
   } catch (const core::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("'Cells/Cell 0' and 'Cells/Cell 1' touch at the start"),
-              std::string::npos)
-      << e.what();
+    EXPECT_NE(std::string(e.what()).find("'Cells/Cell 0' and 'Cells/Cell 1' touch at the start"), std::string::npos)
+        << e.what();
   }
   // Closer than the minimum gap counts as touching.
   try {
     run(*pairDeck({0.0, 2.0, 1.02}, {0.0, 2.0, -1.02}), "close");
     FAIL() << "cells 0.04 apart, below the default minimum gap 0.05, must be rejected";
   } catch (const core::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("not more than 'Cells/Minimum gap' = 0.05"), std::string::npos)
-      << e.what();
+    EXPECT_NE(std::string(e.what()).find("not more than 'Cells/Minimum gap' = 0.05"), std::string::npos) << e.what();
   }
 }
 

@@ -19,7 +19,7 @@ using capsula::scene::testing::smallDeck;
 TEST(WallShearStressMap, GridIsCentredOnTheCellAndCoversTheExtents)
 {
   const auto grid = run::WallGrid::around(10.0, -1.0, 3.0, 5.0, 2.0, 0.5);
-  EXPECT_EQ(grid.nx, 17);   // 6 spacings upstream, 10 downstream, the centre
+  EXPECT_EQ(grid.nx, 17); // 6 spacings upstream, 10 downstream, the centre
   EXPECT_EQ(grid.nz, 9);
   EXPECT_DOUBLE_EQ(grid.node(6, 4)[0], 10.0);
   EXPECT_DOUBLE_EQ(grid.node(6, 4)[2], -1.0);
@@ -56,7 +56,7 @@ TEST(WallShearStressMap, AreasAreTrapezoidalAndSplitAtTheCell)
 
 TEST(WallShearStressMap, AreasOutsideTheIsolatedCellsRange)
 {
-  const auto grid = run::WallGrid::around(0.0, 0.0, 2.0, 4.0, 1.0, 0.5);   // 6 x 2 in all
+  const auto grid = run::WallGrid::around(0.0, 0.0, 2.0, 4.0, 1.0, 0.5); // 6 x 2 in all
   // Below the range where x < -1 (nodes at -2 .. -1.5: dual strip [-2, -1.25] x [-1, 1]),
   // above it where x > 3 (nodes 3.5 .. 4: [3.25, 4] x [-1, 1]), inside elsewhere; the range
   // ends themselves count as inside. Sums of halves and quarters: exact.
@@ -73,7 +73,7 @@ TEST(WallShearStressMap, AreasOutsideTheIsolatedCellsRange)
   areas = run::areasOutsideRange(grid, stress, 0.0, 10.0);
   EXPECT_DOUBLE_EQ(areas.below + areas.above, 0.0);
   areas = run::areasOutsideRange(grid, stress, 5.0, 10.0);
-  EXPECT_DOUBLE_EQ(areas.below, 12.0);   // the whole grid
+  EXPECT_DOUBLE_EQ(areas.below, 12.0); // the whole grid
 }
 
 TEST(WallShearStressMap, WallShearStressConvergesAtFourthOrderAndMatchesTheOperators)
@@ -85,18 +85,18 @@ TEST(WallShearStressMap, WallShearStressConvergesAtFourthOrderAndMatchesTheOpera
   // adaptive near-singular quadrature (distance 0) the operators' own stencil (which also
   // evaluates u(0) = 0) must agree to the truncation error at h = 0.02, measured below
   // 1e-5: 5e-5 allowed.
-  auto s = makeScene(*smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) {
-    d.sublist("Cells").sublist("Cell 0").set("Prestress", 0.05);
-  }));
+  auto s = makeScene(*smallDeck(
+      1, 1.6, true, [](Teuchos::ParameterList& d) { d.sublist("Cells").sublist("Cell 0").set("Prestress", 0.05); }));
   std::vector<double> x = s.initialPositions();
-  for (std::size_t i = 0; i < x.size(); i += 3) {   // stretch it so it disturbs the flow
+  for (std::size_t i = 0; i < x.size(); i += 3) { // stretch it so it disturbs the flow
     x[i] *= 1.2;
   }
   const auto fields = s.evaluate(0.0, x);
   const auto grid = run::WallGrid::around(0.0, 0.0, 2.0, 2.0, 1.0, 0.5);
   const auto at = [&](double step) {
-    return run::wallShearStressOnGrid(s.solver(), grid, step, capsula::operators::LoadDensity(fields.loadDensity.data()),
-                                        fields.solverVelocities.data(), s.flow());
+    return run::wallShearStressOnGrid(s.solver(), grid, step,
+                                      capsula::operators::LoadDensity(fields.loadDensity.data()),
+                                      fields.solverVelocities.data(), s.flow());
   };
   const auto coarse = at(0.04), medium = at(0.02), fine = at(0.01);
   double firstChange = 0.0, secondChange = 0.0;
@@ -109,7 +109,8 @@ TEST(WallShearStressMap, WallShearStressConvergesAtFourthOrderAndMatchesTheOpera
   for (const auto& p : grid.nodes()) {
     wallPoints.insert(wallPoints.end(), {p[0], p[2]});
   }
-  const auto theirs = capsula::operators::wallShearStress(s.solver(), wallPoints, 0.02, capsula::operators::LoadDensity(fields.loadDensity.data()),
+  const auto theirs = capsula::operators::wallShearStress(s.solver(), wallPoints, 0.02,
+                                                          capsula::operators::LoadDensity(fields.loadDensity.data()),
                                                           fields.solverVelocities.data(), s.flow());
   double lowest = HUGE_VAL, highest = 0.0;
   for (std::size_t k = 0; k < fine.magnitude.size(); ++k) {
@@ -130,8 +131,9 @@ TEST(WallShearStressMap, WallShearStressOfTheUndisturbedFlowIsOne)
   auto s = makeScene(*smallDeck(1, 1.6, true));
   const auto fields = s.evaluate(0.0, s.initialPositions());
   const auto grid = run::WallGrid::around(0.0, 0.0, 1.0, 1.0, 1.0, 0.5);
-  const auto stress = run::wallShearStressOnGrid(s.solver(), grid, 0.03, capsula::operators::LoadDensity(fields.loadDensity.data()),
-                                                   fields.solverVelocities.data(), s.flow());
+  const auto stress =
+      run::wallShearStressOnGrid(s.solver(), grid, 0.03, capsula::operators::LoadDensity(fields.loadDensity.data()),
+                                 fields.solverVelocities.data(), s.flow());
   for (double sigma : stress.magnitude) {
     EXPECT_NEAR(sigma, 1.0, 1e-10);
   }

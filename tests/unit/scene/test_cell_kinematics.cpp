@@ -39,7 +39,10 @@ const Vec3 kTranslation(0.3, -0.7, 0.2);
 const Vec3 kRotation(0.1, 0.4, -0.9);
 const Vec3 kPivot(-1.0, 0.5, 2.0);
 
-Vec3 rigidField(const Vec3& x) { return kTranslation + kRotation.cross(x - kPivot); }
+Vec3 rigidField(const Vec3& x)
+{
+  return kTranslation + kRotation.cross(x - kPivot);
+}
 // A deforming field: shear plus a quadratic stretch.
 Vec3 deformingField(const Vec3& x)
 {
@@ -80,8 +83,8 @@ TEST(CellKinematics, CentroidVelocityMatchesTheRateOfTheDiscreteCentroid)
     const Vec3 cm = mesh::centroid(cell);
     errors.push_back(((cp - cm) / (2.0 * eps) - rate).norm());
   }
-  EXPECT_LT(errors[2], 2e-3);                 // level 3: a fraction of a percent of |rate| ~ 1
-  EXPECT_LT(errors[2], 0.3 * errors[0]);      // and it converges
+  EXPECT_LT(errors[2], 2e-3);            // level 3: a fraction of a percent of |rate| ~ 1
+  EXPECT_LT(errors[2], 0.3 * errors[0]); // and it converges
 }
 
 TEST(CellKinematics, RigidMotionFitRecoversTheMotion)
@@ -119,7 +122,7 @@ TEST(FixedHeightConstraint, RemovesTheCentroidRiseOfEachConstrainedCell)
     EXPECT_EQ(u[k], before[k]);
   }
   const double removed = before[offset + 1] - u[offset + 1];
-  EXPECT_GT(std::abs(removed), 0.1);   // the field does lift this cell
+  EXPECT_GT(std::abs(removed), 0.1); // the field does lift this cell
   for (std::size_t k = offset; k < u.size(); ++k) {
     EXPECT_DOUBLE_EQ(u[k], before[k] - ((k - offset) % 3 == 1 ? removed : 0.0));
   }

@@ -26,7 +26,7 @@ TEST(CellMetrics, SphereHasTheKnownShape)
   EXPECT_NEAR(shape.area / (4.0 * M_PI * 2.25), 1.0, 1e-4);
   EXPECT_NEAR(shape.reducedVolume, 1.0, 1e-4);
   EXPECT_NEAR(shape.footprintXZ / (M_PI * 2.25), 1.0, 3e-3);
-  EXPECT_LT((shape.centroid - p.centre).norm(), 1e-12);   // symmetric mesh: exact
+  EXPECT_LT((shape.centroid - p.centre).norm(), 1e-12); // symmetric mesh: exact
   EXPECT_LT(shape.deformation.D12, 1e-4);
 }
 

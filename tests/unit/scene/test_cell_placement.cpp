@@ -48,7 +48,7 @@ TEST(CellPlacement, DetectsOverlappingCells)
   const auto a = sphereAt(0, 3, 0);
   const auto apart = sphereAt(2.05, 3, 0);
   const auto overlapping = sphereAt(1.8, 3, 0);
-  const auto inside = sphereAt(0.1, 3, 0, 0.3);   // wholly inside a: no surface crossing
+  const auto inside = sphereAt(0.1, 3, 0, 0.3); // wholly inside a: no surface crossing
   EXPECT_FALSE(scene::surfacesOverlap(a, apart));
   EXPECT_TRUE(scene::surfacesOverlap(a, overlapping));
   EXPECT_TRUE(scene::surfacesOverlap(a, inside));
@@ -58,9 +58,7 @@ TEST(CellPlacement, DetectsOverlappingCells)
     scene::requireNoOverlap({&a, &apart, &overlapping}, {"Cells/Cell 0", "Cells/Cell 1", "Cells/Cell 2"});
     FAIL() << "cells 0 and 2 overlap";
   } catch (const capsula::core::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("'Cells/Cell 0' and 'Cells/Cell 2' overlap"),
-              std::string::npos)
-      << e.what();
+    EXPECT_NE(std::string(e.what()).find("'Cells/Cell 0' and 'Cells/Cell 2' overlap"), std::string::npos) << e.what();
   }
 }
 
@@ -68,13 +66,13 @@ TEST(SurfaceGap, ClosestPointOnATriangleInEveryRegion)
 {
   const mesh::Vec3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);
   // Exact in floating point: every answer is a short sum of small binary fractions.
-  EXPECT_EQ(scene::closestPointOnTriangle({0.5, 0.5, 3}, a, b, c), mesh::Vec3(0.5, 0.5, 0));   // face
-  EXPECT_EQ(scene::closestPointOnTriangle({-1, -1, 1}, a, b, c), a);                          // vertex
+  EXPECT_EQ(scene::closestPointOnTriangle({0.5, 0.5, 3}, a, b, c), mesh::Vec3(0.5, 0.5, 0)); // face
+  EXPECT_EQ(scene::closestPointOnTriangle({-1, -1, 1}, a, b, c), a);                         // vertex
   EXPECT_EQ(scene::closestPointOnTriangle({3, -1, 0}, a, b, c), b);
   EXPECT_EQ(scene::closestPointOnTriangle({-1, 3, 0}, a, b, c), c);
-  EXPECT_EQ(scene::closestPointOnTriangle({1, -2, 0}, a, b, c), mesh::Vec3(1, 0, 0));         // edge ab
-  EXPECT_EQ(scene::closestPointOnTriangle({-2, 1, 0}, a, b, c), mesh::Vec3(0, 1, 0));         // edge ca
-  EXPECT_EQ(scene::closestPointOnTriangle({2, 2, 0}, a, b, c), mesh::Vec3(1, 1, 0));          // edge bc
+  EXPECT_EQ(scene::closestPointOnTriangle({1, -2, 0}, a, b, c), mesh::Vec3(1, 0, 0)); // edge ab
+  EXPECT_EQ(scene::closestPointOnTriangle({-2, 1, 0}, a, b, c), mesh::Vec3(0, 1, 0)); // edge ca
+  EXPECT_EQ(scene::closestPointOnTriangle({2, 2, 0}, a, b, c), mesh::Vec3(1, 1, 0));  // edge bc
   // A degenerate (collinear) triangle is its longest edge.
   EXPECT_EQ(scene::closestPointOnTriangle({1, 1, 0}, a, b, mesh::Vec3(1, 0, 0)), mesh::Vec3(1, 0, 0));
 }
@@ -96,28 +94,25 @@ TEST(SurfaceGap, GapBetweenTwoSpheres)
   EXPECT_GE(oblique.distance, 0.3 - 1e-12);
   EXPECT_LE(oblique.distance, 0.3 + 2 * 0.014);
   // Symmetric in its arguments.
-  EXPECT_DOUBLE_EQ(scene::minimumSurfaceGap(sphereAt(centre[0], centre[1], centre[2]), a).distance,
-                   oblique.distance);
+  EXPECT_DOUBLE_EQ(scene::minimumSurfaceGap(sphereAt(centre[0], centre[1], centre[2]), a).distance, oblique.distance);
 }
 
 TEST(CellPlacement, RejectsTouchingCells)
 {
   const auto a = sphereAt(0, 3, 0);
-  const auto touching = sphereAt(2.0, 3, 0);   // node (1, 3, 0) of each coincides
+  const auto touching = sphereAt(2.0, 3, 0); // node (1, 3, 0) of each coincides
   const auto near = sphereAt(2.03, 3, 0);
   const auto apart = sphereAt(2.5, 3, 0);
-  EXPECT_FALSE(scene::surfacesOverlap(a, touching));   // not overlapping, but touching:
+  EXPECT_FALSE(scene::surfacesOverlap(a, touching)); // not overlapping, but touching:
   try {
     scene::requireNoOverlap({&a, &touching}, {"Cells/Cell 0", "Cells/Cell 1"});
     FAIL() << "touching cells must be rejected even with no minimum gap";
   } catch (const capsula::core::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("'Cells/Cell 0' and 'Cells/Cell 1' touch at the start"),
-              std::string::npos)
-      << e.what();
+    EXPECT_NE(std::string(e.what()).find("'Cells/Cell 0' and 'Cells/Cell 1' touch at the start"), std::string::npos)
+        << e.what();
   }
   EXPECT_NO_THROW(scene::requireNoOverlap({&a, &near}, {"Cells/Cell 0", "Cells/Cell 1"}));
-  EXPECT_THROW(scene::requireNoOverlap({&a, &near}, {"Cells/Cell 0", "Cells/Cell 1"}, 0.05),
-               capsula::core::InputError);
+  EXPECT_THROW(scene::requireNoOverlap({&a, &near}, {"Cells/Cell 0", "Cells/Cell 1"}, 0.05), capsula::core::InputError);
   EXPECT_NO_THROW(scene::requireNoOverlap({&a, &apart}, {"Cells/Cell 0", "Cells/Cell 1"}, 0.05));
 }
 

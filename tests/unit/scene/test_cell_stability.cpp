@@ -33,7 +33,7 @@ struct Cell {
     elasticity::MembraneDiscretisation discretisation;
     discretisation.forceMethod = elasticity::MembraneForceMethod::VirtualWork;
     membrane = std::make_unique<elasticity::MembraneMechanics>(
-      surface, reference, std::make_shared<elasticity::SkalakLaw>(1.0, 0.5), discretisation);
+        surface, reference, std::make_shared<elasticity::SkalakLaw>(1.0, 0.5), discretisation);
     membrane->evaluate(surface.positionData());
   }
 
@@ -103,7 +103,7 @@ TEST(CellStability, WallGapIsTheLowestNodeOverItsElementSize)
   const scene::CellStability s = scene::measureStability(cell.surface, *cell.membrane);
   // 1e-12: positions built as 1.05 + (-1) carry round-off of ~1e-16 relative.
   EXPECT_NEAR(s.wallGapPerElementSize, 0.05 / size, 1e-12);
-  EXPECT_GT(size, 0.5);   // level 1: edges ~0.6 a, so the gap is ~0.08 of an element
+  EXPECT_GT(size, 0.5); // level 1: edges ~0.6 a, so the gap is ~0.08 of an element
   EXPECT_LT(size, 0.75);
 }
 

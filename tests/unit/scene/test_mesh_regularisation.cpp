@@ -25,7 +25,6 @@ namespace scene = capsula::scene;
 using scene::testing::makeScene;
 using scene::testing::smallDeck;
 
-
 // A tangential twist about the axis through the cell's centre (the origin): nodes stay on
 // the sphere, elements shear (level 2, twist 1.2: smallest angle ~20 degrees).
 mesh::Vec3 twist(const mesh::Vec3& x)
@@ -84,7 +83,7 @@ TEST(MeshRegularisation, RedistributesADegradedCellAlongItsSurface)
 {
   auto s = makeScene(*smallDeck(2, 0.0, false, enabled(30.0)));
   ASSERT_TRUE(s.regularisesMeshes());
-  const std::vector<double> X0 = s.referencePositions(0);   // the unstressed sphere
+  const std::vector<double> X0 = s.referencePositions(0); // the unstressed sphere
   auto x = twisted(s.initialPositions());
   const double angle = smallestAngle(s, x), V = volume(s, x);
   ASSERT_LT(angle, 25.0);
@@ -93,9 +92,9 @@ TEST(MeshRegularisation, RedistributesADegradedCellAlongItsSurface)
   ASSERT_EQ(events.size(), 1u);
   EXPECT_EQ(events[0].cell, 0);
   EXPECT_DOUBLE_EQ(events[0].minAngleBefore, angle);
-  EXPECT_GT(events[0].minAngleAfter, angle + 3.0);   // measured 20.3 -> 25.7 (10 passes max)
+  EXPECT_GT(events[0].minAngleAfter, angle + 3.0); // measured 20.3 -> 25.7 (10 passes max)
   EXPECT_DOUBLE_EQ(smallestAngle(s, x), events[0].minAngleAfter);
-  EXPECT_NEAR(volume(s, x) / V, 1.0, 1e-12);          // the default restores the volume
+  EXPECT_NEAR(volume(s, x) / V, 1.0, 1e-12); // the default restores the volume
   // The cell and the solver see the new positions.
   EXPECT_EQ(s.cell(0).positions(), x);
 

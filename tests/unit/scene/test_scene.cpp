@@ -23,7 +23,6 @@ namespace scene = capsula::scene;
 using scene::testing::makeScene;
 using scene::testing::smallDeck;
 
-
 bool anyTermContains(const scene::Scene& s, const std::string& piece)
 {
   return std::any_of(s.terms().begin(), s.terms().end(),
@@ -117,12 +116,11 @@ TEST(Scene, FixedHeightHoldsTheCentroidStill)
 {
   // Near the wall a deformed cell migrates; the constraint removes exactly its centroid
   // rise rate (round-off), leaving the horizontal motion alone.
-  auto deck = smallDeck(1, 1.5, true, [](Teuchos::ParameterList& d) {
-    d.sublist("Cells").sublist("Cell 0").set("Fixed height", true);
-  });
+  auto deck = smallDeck(
+      1, 1.5, true, [](Teuchos::ParameterList& d) { d.sublist("Cells").sublist("Cell 0").set("Fixed height", true); });
   auto s = makeScene(*deck);
   std::vector<double> x = s.initialPositions();
-  for (std::size_t i = 0; i < x.size(); i += 3) {   // an ellipsoid tilted in xy
+  for (std::size_t i = 0; i < x.size(); i += 3) { // an ellipsoid tilted in xy
     const double px = x[i], py = x[i + 1] - 1.5;
     x[i] = 1.2 * px + 0.1 * py;
     x[i + 1] = 1.5 + 0.85 * py + 0.1 * px;
@@ -133,7 +131,7 @@ TEST(Scene, FixedHeightHoldsTheCentroidStill)
   std::vector<double> held = free;
   s.constrain(x, held);
   const mesh::Vec3 heldRate = scene::centroidVelocity(s.cell(0), held.data());
-  EXPECT_GT(std::abs(freeRate[1]), 1e-4);       // there is something to remove
+  EXPECT_GT(std::abs(freeRate[1]), 1e-4); // there is something to remove
   EXPECT_NEAR(heldRate[1], 0.0, 1e-14);
   EXPECT_NEAR(heldRate[0], freeRate[0], 1e-14);
 }

@@ -42,7 +42,7 @@ TEST(SceneParameters, DeclaresOneSublistPerCellOfTheDeck)
   ASSERT_EQ(description.numCells(), 2);
   EXPECT_EQ(description.cells[1].path, "Cells/Cell 1");
   EXPECT_EQ(description.cells[1].membraneLaw, "NeoHookean");
-  EXPECT_EQ(description.cells[0].membraneLaw, "Skalak");   // the default
+  EXPECT_EQ(description.cells[0].membraneLaw, "Skalak"); // the default
   EXPECT_DOUBLE_EQ(description.capillaryNumber, 0.3);
   EXPECT_TRUE(description.wall);
   EXPECT_FALSE(description.anyFixedHeight());
@@ -53,11 +53,13 @@ TEST(SceneParameters, DeclaresOneSublistPerCellOfTheDeck)
 
 TEST(SceneParameters, RejectsBadValuesNamingTheKey)
 {
-  EXPECT_NE(validationError([](Teuchos::ParameterList& d) { d.sublist("Flow").set("Capillary number", 0.0); })
-              .find("'Flow/Capillary number'"),
+  EXPECT_NE(validationError([](Teuchos::ParameterList& d) {
+              d.sublist("Flow").set("Capillary number", 0.0);
+            }).find("'Flow/Capillary number'"),
             std::string::npos);
-  EXPECT_NE(validationError([](Teuchos::ParameterList& d) { d.sublist("Flow").set("Capillary number", -0.3); })
-              .find("'Flow/Capillary number'"),
+  EXPECT_NE(validationError([](Teuchos::ParameterList& d) {
+              d.sublist("Flow").set("Capillary number", -0.3);
+            }).find("'Flow/Capillary number'"),
             std::string::npos);
   EXPECT_NE(validationError([](Teuchos::ParameterList& d) {
               d.sublist("Cells").sublist("Cell 0").set("Area dilation C", 0.0);
@@ -77,9 +79,8 @@ TEST(SceneParameters, RejectsBadValuesNamingTheKey)
             }).find("'Cells/Cell 0/Mesh level' = 9"),
             std::string::npos);
   // A misspelt cell sublist is an unknown key, not a silently ignored cell.
-  const std::string misspelt = validationError([](Teuchos::ParameterList& d) {
-    d.sublist("Cells").sublist("Cel 1").set("Mesh level", 1);
-  });
+  const std::string misspelt =
+      validationError([](Teuchos::ParameterList& d) { d.sublist("Cells").sublist("Cel 1").set("Mesh level", 1); });
   EXPECT_NE(misspelt.find("Cel 1"), std::string::npos) << misspelt;
 }
 
@@ -94,7 +95,7 @@ TEST(SceneDescription, RejectsInconsistentScenes)
             std::string::npos);
   EXPECT_NE(described([](Teuchos::ParameterList& d) { d.sublist("Cells").sublist("Cell 0").set("Fixed height", true); },
                       false)
-              .find("'Cells/Cell 0/Fixed height' is true but 'Wall/Enabled' is false"),
+                .find("'Cells/Cell 0/Fixed height' is true but 'Wall/Enabled' is false"),
             std::string::npos);
 }
 

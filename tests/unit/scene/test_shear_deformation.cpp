@@ -28,8 +28,8 @@ TEST(ShearDeformation, UsesTheShearPlaneNotTheSortedAxes)
   // vorticity axis (z) the middle one, 1.0. Sorted by length D12 would be (1.3-1)/(2.3).
   const mesh::Mat3 R = mesh::rotationAboutAxis(mesh::Vec3::UnitZ(), M_PI / 6.0);
   mesh::Mat3 axes;
-  axes << R.col(0), R.col(2), R.col(1);   // sorted by length: 1.3 (x'), 1.0 (z), 0.7 (y')
-  axes.col(2) *= -1.0;                    // keep det = +1 as the mesh package does
+  axes << R.col(0), R.col(2), R.col(1); // sorted by length: 1.3 (x'), 1.0 (z), 0.7 (y')
+  axes.col(2) *= -1.0;                  // keep det = +1 as the mesh package does
   const auto d = shearDeformation(exactEllipsoid(mesh::Vec3(1.3, 1.0, 0.7), axes));
   EXPECT_DOUBLE_EQ(d.D12, 0.6 / 2.0);
   EXPECT_DOUBLE_EQ(d.D13, 0.3 / 2.3);
@@ -48,8 +48,7 @@ TEST(ShearDeformation, InclinationIsFoldedAndSigned)
     EXPECT_NEAR(d.inclinationDegrees, 30.0, 1e-10) << degrees;
   }
   const mesh::Mat3 R = mesh::rotationAboutAxis(mesh::Vec3::UnitZ(), -20.0 * M_PI / 180.0);
-  EXPECT_NEAR(shearDeformation(exactEllipsoid(mesh::Vec3(2.0, 1.5, 1.0), R)).inclinationDegrees,
-              -20.0, 1e-10);
+  EXPECT_NEAR(shearDeformation(exactEllipsoid(mesh::Vec3(2.0, 1.5, 1.0), R)).inclinationDegrees, -20.0, 1e-10);
 }
 
 TEST(ShearDeformation, OfADiscreteEllipsoidMatchesItsSemiAxes)

@@ -100,7 +100,8 @@ TEST(VelocityJacobian, PreconditionedStageSolveConverges)
     auto deck = smallDeck(2, 1.6, true, [&](Teuchos::ParameterList& d) {
       d.sublist("Flow").set("Capillary number", 0.002);
       d.sublist("Cells").sublist("Cell 0").set("Membrane law", std::string("NeoHookean"));
-      d.sublist("Solver").sublist("Stiff").set("Preconditioner", std::string(preconditioned ? "Local mobility" : "None"));
+      d.sublist("Solver").sublist("Stiff").set("Preconditioner",
+                                               std::string(preconditioned ? "Local mobility" : "None"));
       d.sublist("Solver").sublist("Stiff").set("Maximum iterations", 1000);
     });
     auto s = makeScene(*deck);
@@ -132,9 +133,8 @@ TEST(VelocityJacobian, PreconditionedStageSolveConverges)
 // unchanged (its rise rate is zero to round-off).
 TEST(VelocityJacobian, RespectsTheFixedHeightConstraint)
 {
-  auto deck = smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) {
-    d.sublist("Cells").sublist("Cell 0").set("Fixed height", true);
-  });
+  auto deck = smallDeck(
+      1, 1.6, true, [](Teuchos::ParameterList& d) { d.sublist("Cells").sublist("Cell 0").set("Fixed height", true); });
   auto s = makeScene(*deck);
   scene::VelocityJacobian jacobian(s, *deck, kernels());
   const std::vector<double> x = s.initialPositions();
@@ -176,13 +176,12 @@ TEST(VelocityJacobian, StiffCapsuleRunConvergesAtOrderThree)
     auto s = makeScene(*deck);
     ti::TimeIntegrationSettings settings;
     settings.method = ti::Method::ROS34PW2;
-    settings.tolerance = 1e-9;   // stage solves to an RMS residual of 1e-11
+    settings.tolerance = 1e-9; // stage solves to an RMS residual of 1e-11
     settings.adaptive = false;
     settings.initialStep = h;
     settings.endTime = 0.2;
-    ti::TimeIntegrator integrator(settings, [&s](double t, const std::vector<double>& y, std::vector<double>& u) {
-      s.velocity(t, y, u);
-    });
+    ti::TimeIntegrator integrator(
+        settings, [&s](double t, const std::vector<double>& y, std::vector<double>& u) { s.velocity(t, y, u); });
     integrator.setLinearisedSystem(std::make_shared<scene::VelocityJacobian>(s, *deck, kernels()));
     auto state = integrator.start(0.0, s.initialPositions());
     while (state.time < settings.endTime) {

@@ -29,7 +29,6 @@ Teuchos::RCP<Teuchos::ParameterList> lambdaFiveDeck(bool warmStart)
   });
 }
 
-
 double largest(const std::vector<double>& v)
 {
   double m = 0.0;

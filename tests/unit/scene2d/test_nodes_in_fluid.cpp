@@ -28,7 +28,7 @@ timeint::TimeIntegrator relaxingNode(bool adaptive)
   settings.adaptive = adaptive;
   settings.tolerance = 1e-6;
   settings.initialStep = 2e-3; // the preparation's step that the a/b = 0.25 cells were tethered with
-  return timeint::TimeIntegrator(settings, [](double, const std::vector<double>&y, std::vector<double>& dydt) {
+  return timeint::TimeIntegrator(settings, [](double, const std::vector<double>& y, std::vector<double>& dydt) {
     dydt[0] = 0.0;
     dydt[1] = -rate * (y[1] - film);
   });

@@ -44,7 +44,8 @@ TEST(TetherProcedure2D, TheLowestNodeMovesToTheAnchorAndBecomesNodeZero)
   nodes = (rotation * nodes).colwise() + Eigen::Vector2d(3.0, 2.0);
   int lowest = 0;
   for (int i = 1; i < nodes.cols(); ++i) {
-    if (nodes(1, i) < nodes(1, lowest)) lowest = i;
+    if (nodes(1, i) < nodes(1, lowest))
+      lowest = i;
   }
   ASSERT_NE(lowest, 0);
 
@@ -73,12 +74,12 @@ TEST(TetherProcedure2D, PreparationEndsWhenTheShapeStopsChangingOrAtTheLatest)
   s.preparationTolerance = 1e-3;
   s.minimumPreparationTime = 0.5;
   s.maximumPreparationTime = 20.0;
-  EXPECT_FALSE(preparationComplete(s, 0.2, 0.0));      // too early, even if steady
-  EXPECT_FALSE(preparationComplete(s, 3.0, 2e-3));     // still deforming
-  EXPECT_TRUE(preparationComplete(s, 3.0, -2e-3));     // past the maximum: relaxing
+  EXPECT_FALSE(preparationComplete(s, 0.2, 0.0));  // too early, even if steady
+  EXPECT_FALSE(preparationComplete(s, 3.0, 2e-3)); // still deforming
+  EXPECT_TRUE(preparationComplete(s, 3.0, -2e-3)); // past the maximum: relaxing
   EXPECT_TRUE(preparationComplete(s, 3.0, 5e-4));
   EXPECT_TRUE(preparationComplete(s, 3.0, -5e-4));
-  EXPECT_TRUE(preparationComplete(s, 20.0, 1.0));      // the maximum time
+  EXPECT_TRUE(preparationComplete(s, 20.0, 1.0)); // the maximum time
 }
 
 TEST(TetherProcedure2D, PreparationChecksLandOnMultiplesOfTheWindow)

@@ -21,7 +21,6 @@ using scene2d::TetherGrading2D;
 
 namespace {
 
-
 contour::ContourOptions tethered()
 {
   contour::ContourOptions options;

@@ -87,14 +87,14 @@ TEST(VelocityJacobian2D, IsTheDerivativeOfTheVelocityAtRest)
   for (const bool wall : {false, true}) {
     for (const bool tethered : {false, true}) {
       // J~'s single layer with the right-hand side's rule (6 Gauss-Legendre points, not 3).
-      const auto deck = tether2dDeck({"Cell/Number of points=32", "Cell/Aspect ratio=0.7", "Flow/Capillary number=0.05",
-                                      "Solver/Stiff/Gauss-Legendre points=0",
-                                      wall ? "Wall/Enabled=true" : "Wall/Enabled=false",
-                                      wall ? "Cell/Lowest point height=0.1" : "Cell/Lowest point height=-1",
-                                      wall ? "Tether/Enabled=true" : "Tether/Enabled=false"});
+      const auto deck =
+          tether2dDeck({"Cell/Number of points=32", "Cell/Aspect ratio=0.7", "Flow/Capillary number=0.05",
+                        "Solver/Stiff/Gauss-Legendre points=0", wall ? "Wall/Enabled=true" : "Wall/Enabled=false",
+                        wall ? "Cell/Lowest point height=0.1" : "Cell/Lowest point height=-1",
+                        wall ? "Tether/Enabled=true" : "Tether/Enabled=false"});
       CapsuleModel2D model = jacobianModelOf(deck);
       if (tethered) {
-        model.tether(0);   // node 0 held; the reference relabelled by 0: still unstressed
+        model.tether(0); // node 0 held; the reference relabelled by 0: still unstressed
       }
       VelocityJacobian2D jacobian(model, serial(), deck);
       const std::vector<double> x = model.initialState();
@@ -181,7 +181,7 @@ TEST(VelocityJacobian2D, ApproximateJacobianIsCloseOnSmoothDirections)
     }
     const std::vector<double> Jv = applied(jacobian, v);
     const Eigen::VectorXd approximate =
-      jacobian.approximateJacobian().cast<double>() * Eigen::Map<const Eigen::VectorXd>(v.data(), n);
+        jacobian.approximateJacobian().cast<double>() * Eigen::Map<const Eigen::VectorXd>(v.data(), n);
     double worst = 0.0;
     for (Eigen::Index i = 0; i < n; ++i) {
       worst = std::max(worst, std::abs(approximate[i] - Jv[static_cast<std::size_t>(i)]));
@@ -199,7 +199,7 @@ TEST(VelocityJacobian2D, TetheredNodeStaysHeldInTheStageSolve)
   model.tether(5);
   VelocityJacobian2D jacobian(model, serial(), deck);
   std::vector<double> x = model.initialState();
-  std::rotate(x.begin(), x.begin() + 10, x.end());   // node 5 of the free cell is node 0 now
+  std::rotate(x.begin(), x.begin() + 10, x.end()); // node 5 of the free cell is node 0 now
   jacobian.linearise(0.0, x);
   std::vector<double> r = direction(x.size());
   const std::vector<double> Jr = applied(jacobian, r);
@@ -224,15 +224,14 @@ TEST(VelocityJacobian2D, StiffCellRunConvergesAtOrderThree)
 {
   const auto deck = tether2dDeck({"Cell/Number of points=32", "Flow/Capillary number=0.01", "Cell/Prestress=0.1",
                                   "Cell/Lowest point height=0.1", "Time integration/Method=ROS34PW2",
-                                  "Time integration/Tolerance=1e-9"});   // stage solves to 1e-11 RMS
+                                  "Time integration/Tolerance=1e-9"}); // stage solves to 1e-11 RMS
   const auto run = [&](int steps) {
     CapsuleModel2D model = jacobianModelOf(deck);
     auto settings = timeint::timeIntegrationSettings(deck.sublist("Time integration"));
     settings.adaptive = false;
     settings.initialStep = 0.2 / steps;
-    timeint::TimeIntegrator integrator(settings, [&model](double, const std::vector<double>& y, std::vector<double>& u) {
-      model.rightHandSide(y, u);
-    });
+    timeint::TimeIntegrator integrator(settings, [&model](double, const std::vector<double>& y,
+                                                          std::vector<double>& u) { model.rightHandSide(y, u); });
     integrator.setLinearisedSystem(std::make_shared<VelocityJacobian2D>(model, serial(), deck));
     auto state = integrator.start(0.0, model.initialState());
     while (state.time < 0.2) {

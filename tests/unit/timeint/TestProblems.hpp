@@ -43,7 +43,9 @@ inline TestProblem rotation()
             f[1] = y[0];
           },
           {1.0, 0.0},
-          [](double t) { return std::vector<double>{std::cos(t), std::sin(t)}; }};
+          [](double t) {
+            return std::vector<double>{std::cos(t), std::sin(t)};
+          }};
 }
 
 /// y' = -5 (y - cos t), y(0) = 1: relaxes onto a moving target (time scale 1/5 against
@@ -51,13 +53,10 @@ inline TestProblem rotation()
 inline TestProblem relaxation()
 {
   return {"y' = -5 (y - cos t)",
-          [](double t, const std::vector<double>& y, std::vector<double>& f) {
-            f[0] = -5.0 * (y[0] - std::cos(t));
-          },
+          [](double t, const std::vector<double>& y, std::vector<double>& f) { f[0] = -5.0 * (y[0] - std::cos(t)); },
           {1.0},
           [](double t) {
-            return std::vector<double>{(25.0 * std::cos(t) + 5.0 * std::sin(t)) / 26.0 +
-                                       std::exp(-5.0 * t) / 26.0};
+            return std::vector<double>{(25.0 * std::cos(t) + 5.0 * std::sin(t)) / 26.0 + std::exp(-5.0 * t) / 26.0};
           }};
 }
 

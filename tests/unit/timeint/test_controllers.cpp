@@ -46,7 +46,7 @@ TEST(ThesisStepController, HalvesExactlyBelowRatioZeroPointSevenFive)
   EXPECT_TRUE(keep.accepted);
   EXPECT_EQ(keep.nextStep, h);
   const auto halve = c.decide(h, errorForRatio(eps, 0.75 * below), false);
-  EXPECT_FALSE(halve.accepted);   // retried with half the step
+  EXPECT_FALSE(halve.accepted); // retried with half the step
   EXPECT_EQ(halve.nextStep, 0.5 * h);
   // The largest accepted error: eps / (2 * 0.75^4) = 1.58 eps.
   EXPECT_TRUE(c.decide(h, 1.58 * eps, false).accepted);
@@ -72,8 +72,7 @@ TEST(PiStepController, AcceptedStepFollowsThePiFormula)
   const auto d = c.decide(h, err, previous, false);
   EXPECT_TRUE(d.accepted);
   // h * 0.9 * err^-0.17 * previous^0.04, to rounding.
-  EXPECT_NEAR(d.nextStep, h * p.safety * std::pow(err, -p.alpha) * std::pow(previous, p.beta),
-              1e-15);
+  EXPECT_NEAR(d.nextStep, h * p.safety * std::pow(err, -p.alpha) * std::pow(previous, p.beta), 1e-15);
   // The proportional part: the same error after a larger previous error allows a larger
   // step (the error is falling), after a smaller one a smaller step.
   EXPECT_GT(c.decide(h, err, 0.9, false).nextStep, c.decide(h, err, 0.1, false).nextStep);
@@ -85,14 +84,14 @@ TEST(PiStepController, ClampsAndRejects)
 {
   const ti::PiStepController c(5);
   const double h = 1.0;
-  EXPECT_EQ(c.decide(h, 0.0, 1.0, false).nextStep, 10.0 * h);   // growth capped
-  EXPECT_LE(c.decide(h, 1e-3, 0.5, true).nextStep, h);          // no growth after a rejection
+  EXPECT_EQ(c.decide(h, 0.0, 1.0, false).nextStep, 10.0 * h); // growth capped
+  EXPECT_LE(c.decide(h, 1e-3, 0.5, true).nextStep, h);        // no growth after a rejection
   const auto reject = c.decide(h, 2.0, 0.5, false);
   EXPECT_FALSE(reject.accepted);
   EXPECT_NEAR(reject.nextStep, h * 0.9 * std::pow(2.0, -0.2), 1e-15);
   const auto hard = c.decide(h, 1e12, 0.5, false);
   EXPECT_FALSE(hard.accepted);
-  EXPECT_EQ(hard.nextStep, 0.2 * h);   // shrink capped
+  EXPECT_EQ(hard.nextStep, 0.2 * h); // shrink capped
   EXPECT_EQ(c.decide(h, std::nan(""), 0.5, false).nextStep, 0.2 * h);
   EXPECT_EQ(c.rememberedError(1e-9), 1e-4);
 }

@@ -32,8 +32,7 @@ double fixedStepError(ti::Method method, const TestProblem& problem, int steps, 
 void expectFixedStepOrder(ti::Method method, int expectedOrder)
 {
   const double endTime = 2.0;
-  for (const auto& problem : {ti::testing::exponentialDecay(), ti::testing::cosine(),
-                              ti::testing::rotation()}) {
+  for (const auto& problem : {ti::testing::exponentialDecay(), ti::testing::cosine(), ti::testing::rotation()}) {
     // 4th-order methods need h <= 1/8 to be asymptotic on y' = cos t; 5th-order ones
     // would reach round-off (1e-15) at h = 1/64.
     const int coarsest = expectedOrder == 4 ? 16 : 8;
@@ -43,9 +42,8 @@ void expectFixedStepOrder(ti::Method method, int expectedOrder)
       error.push_back(fixedStepError(method, problem, steps, endTime));
     }
     const double order = capsula::testing::logLogSlope(h, error);
-    std::printf("%-16s %-14s errors %.3e %.3e %.3e %.3e  order %.3f\n",
-                ti::toString(method).c_str(), problem.name.c_str(), error[0], error[1], error[2],
-                error[3], order);
+    std::printf("%-16s %-14s errors %.3e %.3e %.3e %.3e  order %.3f\n", ti::toString(method).c_str(),
+                problem.name.c_str(), error[0], error[1], error[2], error[3], order);
     // In the asymptotic range the observed slope is within 0.2 of the order (a wrong
     // coefficient drops it by >= 1).
     EXPECT_NEAR(order, expectedOrder, 0.2) << ti::toString(method) << " on " << problem.name;
@@ -155,7 +153,7 @@ TEST(AdaptiveControl, RightHandSideEvaluationsAreCountedPerStage)
     s.method = method;
     s.tolerance = 1e-8;
     s.endTime = 5.0;
-    s.initialStep = 0.5;   // too large: forces some rejections at the start
+    s.initialStep = 0.5; // too large: forces some rejections at the start
     ti::TimeIntegrator integrator(s, problem.rhs);
     auto state = integrator.start(0.0, problem.y0);
     integrator.integrate(state, {}, {});

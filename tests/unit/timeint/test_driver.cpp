@@ -71,11 +71,10 @@ TEST(Driver, ObserversRunExactlyAtOutputTimes)
     const ti::OutputSchedule schedule{0.1, true};
     std::vector<double> times;
     std::vector<ti::OutputReason> reasons;
-    const auto reason = integrator.integrate(
-      state, schedule, {[&](const ti::IntegrationState& st, ti::OutputReason r) {
-        times.push_back(st.time);
-        reasons.push_back(r);
-      }});
+    const auto reason = integrator.integrate(state, schedule, {[&](const ti::IntegrationState& st, ti::OutputReason r) {
+                                               times.push_back(st.time);
+                                               reasons.push_back(r);
+                                             }});
     EXPECT_EQ(reason, ti::StopReason::EndTime);
     ASSERT_EQ(times.size(), 11u) << ti::toString(method);
     EXPECT_EQ(reasons.front(), ti::OutputReason::Start);
@@ -102,9 +101,8 @@ TEST(Driver, OutputTimesDoNotDisturbTheStepSizeMuch)
     ti::TimeIntegrator withOutputs(adaptiveSettings(method, 20.0), rhs);
     auto b = withOutputs.start(0.0, {2.0, 0.0});
     withOutputs.integrate(b, {1.0, true}, {});
-    std::printf("%s: %lld steps without outputs, %lld with 19 output times\n",
-                ti::toString(method).c_str(), static_cast<long long>(a.statistics.acceptedSteps),
-                static_cast<long long>(b.statistics.acceptedSteps));
+    std::printf("%s: %lld steps without outputs, %lld with 19 output times\n", ti::toString(method).c_str(),
+                static_cast<long long>(a.statistics.acceptedSteps), static_cast<long long>(b.statistics.acceptedSteps));
     EXPECT_LE(b.statistics.acceptedSteps, a.statistics.acceptedSteps + 2 * 19);
     // Same accuracy class: the two end states agree to the tolerance's order.
     EXPECT_LT(ti::testing::maxError(a.y, b.y), 1e-5);
@@ -117,7 +115,7 @@ TEST(Driver, RestartFromAnObservedStateReproducesTheRunBitForBit)
   for (const auto method : {ti::Method::RKF45, ti::Method::DormandPrince45, ti::Method::RK4}) {
     ti::TimeIntegrationSettings s = adaptiveSettings(method, 12.0);
     if (method == ti::Method::RK4) {
-      s.initialStep = 0.0137;   // does not divide the output interval
+      s.initialStep = 0.0137; // does not divide the output interval
     }
     const ti::OutputSchedule schedule{0.75, true};
 
@@ -136,13 +134,11 @@ TEST(Driver, RestartFromAnObservedStateReproducesTheRunBitForBit)
     ASSERT_EQ(checkpoint.time, 5.25);
 
     for (const bool throughRecord : {false, true}) {
-      ti::IntegrationState resumed =
-        throughRecord ? ti::fromRecord(ti::toRecord(checkpoint), "test") : checkpoint;
-      ti::TimeIntegrator restarted(s, rhs);   // a fresh integrator, as in a new process
+      ti::IntegrationState resumed = throughRecord ? ti::fromRecord(ti::toRecord(checkpoint), "test") : checkpoint;
+      ti::TimeIntegrator restarted(s, rhs); // a fresh integrator, as in a new process
       std::vector<std::vector<double>> restartOutputs;
-      restarted.integrate(resumed, schedule, {[&](const ti::IntegrationState& st, ti::OutputReason) {
-                            restartOutputs.push_back(st.y);
-                          }});
+      restarted.integrate(resumed, schedule,
+                          {[&](const ti::IntegrationState& st, ti::OutputReason) { restartOutputs.push_back(st.y); }});
       // Outputs 8..16 again, no duplicate of output 7.
       ASSERT_EQ(restartOutputs.size(), fullOutputs.size() - 8) << ti::toString(method);
       for (std::size_t k = 0; k < restartOutputs.size(); ++k) {
@@ -202,7 +198,7 @@ TEST(Driver, SteadyStateIsDetectedByTheRateOfChange)
   auto state = integrator.start(0.0, problem.y0);
   std::vector<ti::OutputReason> reasons;
   const auto stop = integrator.integrate(
-    state, {1.0, false}, {[&](const ti::IntegrationState&, ti::OutputReason r) { reasons.push_back(r); }});
+      state, {1.0, false}, {[&](const ti::IntegrationState&, ti::OutputReason r) { reasons.push_back(r); }});
   EXPECT_EQ(stop, ti::StopReason::SteadyState);
   EXPECT_TRUE(state.steady);
   ASSERT_FALSE(reasons.empty());
@@ -236,7 +232,7 @@ TEST(Driver, SteadyStateIsDetectedByTheL2ChangeBetweenSteps)
     const std::vector<double> before = state.y;
     report = integrator.step(state, s.endTime);
     lastMeasure = std::hypot(state.y[0] - before[0], state.y[1] - before[1]);
-    EXPECT_DOUBLE_EQ(report.steadyMeasure, lastMeasure);   // hypot rounds differently
+    EXPECT_DOUBLE_EQ(report.steadyMeasure, lastMeasure); // hypot rounds differently
   }
   EXPECT_LT(lastMeasure, 1e-7);
   EXPECT_LT(state.time, 100.0);

@@ -33,10 +33,10 @@ void fadingStiffness(double t, const std::vector<double>& y, std::vector<double>
 class KrylovLikeSystem final : public ti::LinearisedSystem {
 public:
   explicit KrylovLikeSystem(int iterations)
-    : iterations_(iterations),
-      dense_([](double t, const std::vector<double>&, std::vector<double>& J) { J = {-1.0, 0.0, 0.0, -rate(t)}; })
-  {
-  }
+      : iterations_(iterations), dense_([](double t, const std::vector<double>&, std::vector<double>& J) {
+          J = {-1.0, 0.0, 0.0, -rate(t)};
+        })
+  {}
   void linearise(double t, const std::vector<double>& y) override { dense_.linearise(t, y); }
   ti::LinearSolveReport solve(double shift, const std::vector<double>& r, std::vector<double>& x,
                               double residual) override
@@ -119,7 +119,7 @@ TEST(MethodSwitch, SwitchesToTheStiffMethodAndBack)
   }
   EXPECT_GE(firstStiff, 0.0);
   EXPECT_LT(firstStiff, 0.5);
-  EXPECT_GT(backToExplicit, 1.5);    // not while the stiff method takes large steps
+  EXPECT_GT(backToExplicit, 1.5); // not while the stiff method takes large steps
   EXPECT_LT(backToExplicit, 2.5);
   EXPECT_FALSE(state.stiffActive);
   EXPECT_EQ(state.statistics.methodSwitches, 2);

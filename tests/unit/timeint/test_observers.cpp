@@ -29,8 +29,8 @@ ti::TimeIntegrationSettings fixedSteps(double step, double endTime)
 class Recorder final : public ti::IntegrationObserver {
 public:
   double event = std::numeric_limits<double>::infinity();
-  std::int64_t stopAfterStep = -1;    ///< accepted steps after which afterStep says Stop
-  int stopAtOutput = -1;              ///< number of the output at which atOutput says Stop
+  std::int64_t stopAfterStep = -1; ///< accepted steps after which afterStep says Stop
+  int stopAtOutput = -1;           ///< number of the output at which atOutput says Stop
   std::vector<double> stepTimes, outputTimes;
   std::vector<bool> stepsAtOutputTimes;
   std::vector<ti::OutputReason> reasons;
@@ -40,15 +40,14 @@ public:
   {
     stepTimes.push_back(state.time);
     stepsAtOutputTimes.push_back(atOutputTime);
-    return state.statistics.acceptedSteps == stopAfterStep ? ti::ObserverVerdict::Stop
-                                                           : ti::ObserverVerdict::Continue;
+    return state.statistics.acceptedSteps == stopAfterStep ? ti::ObserverVerdict::Stop : ti::ObserverVerdict::Continue;
   }
   ti::ObserverVerdict atOutput(const ti::IntegrationState& state, ti::OutputReason reason) override
   {
     outputTimes.push_back(state.time);
     reasons.push_back(reason);
     return static_cast<int>(outputTimes.size()) == stopAtOutput + 1 ? ti::ObserverVerdict::Stop
-                                                                     : ti::ObserverVerdict::Continue;
+                                                                    : ti::ObserverVerdict::Continue;
   }
 };
 
@@ -60,7 +59,7 @@ TEST(IntegrationObservers, StepsLandOnEventsAndOutputsAndSeeWhichIsWhich)
   ti::TimeIntegrator integrator(fixedSteps(0.3, 1.0), problem.rhs);
   auto state = integrator.start(0.0, problem.y0);
   Recorder recorder;
-  recorder.event = 0.45;   // between the steps at 0.3 and 0.6: a step is cut to land on it
+  recorder.event = 0.45; // between the steps at 0.3 and 0.6: a step is cut to land on it
   const auto stop = integrator.integrate(state, ti::OutputSchedule(0.5), {&recorder});
   EXPECT_EQ(stop, ti::StopReason::EndTime);
   // Steps of 0.3 from 0, cut at the event 0.45 and the outputs 0.5 and 1 (exact landings).
@@ -69,7 +68,7 @@ TEST(IntegrationObservers, StepsLandOnEventsAndOutputsAndSeeWhichIsWhich)
   for (std::size_t k = 0; k < steps.size(); ++k) {
     EXPECT_DOUBLE_EQ(recorder.stepTimes[k], steps[k]) << "step " << k;
   }
-  EXPECT_EQ(recorder.stepTimes[1], 0.45);   // bit for bit on the event
+  EXPECT_EQ(recorder.stepTimes[1], 0.45); // bit for bit on the event
   EXPECT_EQ(recorder.stepsAtOutputTimes, (std::vector<bool>{false, false, true, false, true}));
   EXPECT_EQ(recorder.outputTimes, (std::vector<double>{0.0, 0.5, 1.0}));
   EXPECT_EQ(recorder.reasons.back(), ti::OutputReason::End);
@@ -81,11 +80,11 @@ TEST(IntegrationObservers, AStopAfterAStepEndsTheIntegrationWithoutItsOutput)
   ti::TimeIntegrator integrator(fixedSteps(0.25, 2.0), problem.rhs);
   auto state = integrator.start(0.0, problem.y0);
   Recorder recorder;
-  recorder.stopAfterStep = 2;   // t = 0.5, an output time
+  recorder.stopAfterStep = 2; // t = 0.5, an output time
   EXPECT_EQ(integrator.integrate(state, ti::OutputSchedule(0.5), {&recorder}), ti::StopReason::Requested);
   EXPECT_EQ(state.time, 0.5);
-  EXPECT_EQ(recorder.outputTimes, std::vector<double>{0.0});   // the start only
-  EXPECT_EQ(state.nextOutput, 1);                              // output 1 not taken
+  EXPECT_EQ(recorder.outputTimes, std::vector<double>{0.0}); // the start only
+  EXPECT_EQ(state.nextOutput, 1);                            // output 1 not taken
 }
 
 TEST(IntegrationObservers, AStopAtAnOutputEndsTheIntegrationAfterIt)
@@ -94,7 +93,7 @@ TEST(IntegrationObservers, AStopAtAnOutputEndsTheIntegrationAfterIt)
   ti::TimeIntegrator integrator(fixedSteps(0.25, 2.0), problem.rhs);
   auto state = integrator.start(0.0, problem.y0);
   Recorder first, second;
-  first.stopAtOutput = 2;   // at t = 1
+  first.stopAtOutput = 2; // at t = 1
   EXPECT_EQ(integrator.integrate(state, ti::OutputSchedule(0.5), {&first, &second}), ti::StopReason::Requested);
   EXPECT_EQ(state.time, 1.0);
   // Every observer saw that output, the later one too.
@@ -136,6 +135,6 @@ TEST(IntegrationObservers, OutputTimesGivenByTheRunAndItsEndTime)
   Recorder recorder;
   EXPECT_EQ(integrator.integrate(state, schedule, {&recorder}), ti::StopReason::EndTime);
   const std::vector<double> expected{1.0, 1.0 + 2.0 * 0.3, 1.0 + 2.0 * 0.6, 1.0 + 2.0 * (0.3 * 3.0), 3.0};
-  EXPECT_EQ(recorder.outputTimes, expected);   // bit for bit: the steps land on them
+  EXPECT_EQ(recorder.outputTimes, expected); // bit for bit: the steps land on them
   EXPECT_EQ(state.time, 3.0);
 }

@@ -18,17 +18,15 @@ namespace {
 Teuchos::RCP<const Teuchos::ParameterList> validList()
 {
   auto valid = Teuchos::rcp(new Teuchos::ParameterList("Capsula"));
-  ti::declareTimeIntegrationParameters(
-    core::declareSublist(*valid, "Time integration", "Time stepping"));
+  ti::declareTimeIntegrationParameters(core::declareSublist(*valid, "Time integration", "Time stepping"));
   return valid;
 }
 
 Teuchos::RCP<Teuchos::ParameterList> validatedDeck(const std::string& timeIntegrationXml)
 {
-  auto deck = core::readDeckFromString(
-    "<ParameterList name=\"Capsula\"><ParameterList name=\"Time integration\">" +
-      timeIntegrationXml + "</ParameterList></ParameterList>",
-    "deck.xml");
+  auto deck = core::readDeckFromString("<ParameterList name=\"Capsula\"><ParameterList name=\"Time integration\">" +
+                                           timeIntegrationXml + "</ParameterList></ParameterList>",
+                                       "deck.xml");
   core::validateDeck(*deck, *validList(), "deck.xml");
   return deck;
 }
@@ -71,7 +69,7 @@ TEST(TimeIntegrationParameters, DeckValuesReachTheIntegrator)
   auto state = integrator.start(0.0, problem.y0);
   integrator.integrate(state, {}, {});
   EXPECT_EQ(state.time, 2.5);
-  EXPECT_NEAR(state.y[0], std::exp(-2.5), 1e-8);   // tolerance 1e-9 per step, ~20 steps
+  EXPECT_NEAR(state.y[0], std::exp(-2.5), 1e-8); // tolerance 1e-9 per step, ~20 steps
 }
 
 TEST(TimeIntegrationParameters, RK4RunsWithFixedSteps)
@@ -97,8 +95,7 @@ TEST(TimeIntegrationParameters, BadValuesAreNamed)
   } catch (const core::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("Time integration/Method"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(validatedDeck(R"(<Parameter name="Tolerance" type="double" value="0"/>)"),
-               core::InputError);
+  EXPECT_THROW(validatedDeck(R"(<Parameter name="Tolerance" type="double" value="0"/>)"), core::InputError);
   const auto deck = validatedDeck(R"(<Parameter name="Minimum step" type="double" value="0.01"/>
                                      <Parameter name="Initial step" type="double" value="0.001"/>)");
   const auto problem = ti::testing::exponentialDecay();

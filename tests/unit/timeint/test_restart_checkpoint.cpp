@@ -17,8 +17,7 @@ namespace io = capsula::io;
 
 TEST(RestartThroughCheckpointFile, ReproducesTheUninterruptedRunBitForBit)
 {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("capsula_timeint_restart_" + std::to_string(::getpid()));
+  const auto dir = std::filesystem::temp_directory_path() / ("capsula_timeint_restart_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "checkpoint.h5").string();
 
@@ -39,7 +38,7 @@ TEST(RestartThroughCheckpointFile, ReproducesTheUninterruptedRunBitForBit)
   ti::TimeIntegrator uninterrupted(settings, rhs);
   auto full = uninterrupted.start(0.0, y0);
   uninterrupted.integrate(full, schedule, {[&](const ti::IntegrationState& state, ti::OutputReason) {
-                            if (state.time == 3.0) {   // the app's checkpoint observer
+                            if (state.time == 3.0) { // the app's checkpoint observer
                               const auto record = ti::toRecord(state);
                               io::Checkpoint c;
                               c.time = state.time;

@@ -74,7 +74,7 @@ std::vector<double> stiffLinearExact(double t)
 std::shared_ptr<ti::DenseLinearisedSystem> exactStiffJacobian()
 {
   return std::make_shared<ti::DenseLinearisedSystem>(
-    [](double, const std::vector<double>&, std::vector<double>& J) { J.assign(kStiff, kStiff + 4); });
+      [](double, const std::vector<double>&, std::vector<double>& J) { J.assign(kStiff, kStiff + 4); });
 }
 
 ti::TimeIntegrationSettings fixedSteps(ti::Method method, double h, double end)
@@ -121,7 +121,7 @@ TEST(Rosenbrock, CoefficientsSatisfyTheOrderConditions)
   const auto r2 = orderConditionResiduals(ti::ros2());
   EXPECT_NEAR(r2[0], 0.0, 1e-15);
   EXPECT_NEAR(r2[1], 0.0, 1e-15);
-  EXPECT_GT(std::abs(r2[2]) + std::abs(r2[3]), 1e-3);   // and not order 3
+  EXPECT_GT(std::abs(r2[2]) + std::abs(r2[3]), 1e-3); // and not order 3
   // The embedded solution of ROS34PW2 has order 2: its first two conditions hold.
   auto embedded = ti::ros34pw2();
   embedded.b = embedded.bEmbedded;
@@ -144,7 +144,7 @@ TEST(Rosenbrock, StabilityFunctionIsLStable)
   }
   const auto t = ti::ros34pw2();
   const double z = 1e-2;
-  EXPECT_LT(std::abs(ti::rosenbrockStabilityFunction(t, -z) - std::exp(-z)), 1e-9);   // O(z^4) ~ 1e-8 / 24
+  EXPECT_LT(std::abs(ti::rosenbrockStabilityFunction(t, -z) - std::exp(-z)), 1e-9); // O(z^4) ~ 1e-8 / 24
 }
 
 // A stiff mode is damped in one step whatever its rate: one step of h = 1 on y' = -rate y.
@@ -152,12 +152,11 @@ TEST(Rosenbrock, OneStepDampsAStiffMode)
 {
   for (const ti::Method method : {ti::Method::ROS34PW2, ti::Method::ROS2}) {
     for (const double rate : {1e3, 1e6, 1e9}) {
-      ti::TimeIntegrator integrator(fixedSteps(method, 1.0, 1.0),
-                                    [rate](double, const std::vector<double>& y, std::vector<double>& f) {
-                                      f[0] = -rate * y[0];
-                                    });
+      ti::TimeIntegrator integrator(
+          fixedSteps(method, 1.0, 1.0),
+          [rate](double, const std::vector<double>& y, std::vector<double>& f) { f[0] = -rate * y[0]; });
       integrator.setLinearisedSystem(std::make_shared<ti::DenseLinearisedSystem>(
-        [rate](double, const std::vector<double>&, std::vector<double>& J) { J[0] = -rate; }));
+          [rate](double, const std::vector<double>&, std::vector<double>& J) { J[0] = -rate; }));
       const auto y = integrateTo(integrator, {1.0}, 1.0);
       // |R(-rate)| ~ 3 / rate for ROS34PW2 and smaller for ROS2: far below 1 for any rate.
       EXPECT_LT(std::abs(y[0]), 10.0 / rate) << ti::toString(method) << " rate " << rate;
@@ -187,12 +186,11 @@ TEST(Rosenbrock, ObservedOrderOnAStiffLinearSystem)
 TEST(Rosenbrock, KeepsItsOrderWithAnApproximateJacobian)
 {
   const std::vector<ti::DenseLinearisedSystem::JacobianFunction> jacobians{
-    pendulumJacobian,
-    [](double, const std::vector<double>&, std::vector<double>& J) { J.assign(4, 0.0); },
-    [](double t, const std::vector<double>& y, std::vector<double>& J) {
-      pendulumJacobian(t, y, J);
-      J = {0.5 * J[0] + 0.3, 0.5 * J[1], 0.5 * J[2], 0.5 * J[3] - 0.2};
-    }};
+      pendulumJacobian, [](double, const std::vector<double>&, std::vector<double>& J) { J.assign(4, 0.0); },
+      [](double t, const std::vector<double>& y, std::vector<double>& J) {
+        pendulumJacobian(t, y, J);
+        J = {0.5 * J[0] + 0.3, 0.5 * J[1], 0.5 * J[2], 0.5 * J[3] - 0.2};
+      }};
   for (std::size_t k = 0; k < jacobians.size(); ++k) {
     const auto reference = [&] {
       ti::TimeIntegrator fine(fixedSteps(ti::Method::ROS34PW2, 1.0 / 2048, 1.0), pendulumRhs);
@@ -240,7 +238,7 @@ TEST(Rosenbrock, AdaptiveStepsFollowAccuracyNotStiffness)
 TEST(Rosenbrock, FiniteDifferenceJacobian)
 {
   auto system = ti::DenseLinearisedSystem::finiteDifferences(
-    pendulumRhs, [](double, const std::vector<double>&, std::vector<double>& f) { f[1] *= 2.0; });
+      pendulumRhs, [](double, const std::vector<double>&, std::vector<double>& f) { f[1] *= 2.0; });
   system.linearise(0.0, {0.7, -0.4});
   std::vector<double> exact(4);
   pendulumJacobian(0.0, {0.7, -0.4}, exact);
@@ -286,7 +284,7 @@ TEST(Rosenbrock, FailedSolveRejectsAndShrinksTheStep)
   s.initialStep = 0.4;
   s.endTime = 1.0;
   ti::TimeIntegrator integrator(s, stiffLinearRhs);
-  const double limit = 0.05;   // shift = h gamma: steps up to 0.115 solve
+  const double limit = 0.05; // shift = h gamma: steps up to 0.115 solve
   integrator.setLinearisedSystem(std::make_shared<SolverFailingAboveShift>(limit));
   auto state = integrator.start(0.0, stiffLinearExact(0.0));
   const auto report = integrator.step(state, 1.0);

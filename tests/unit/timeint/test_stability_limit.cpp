@@ -23,8 +23,8 @@ TEST(StabilityLimit, RealStabilityBoundaries)
   EXPECT_NEAR(ti::realStabilityBoundary(ti::dormandPrince45()), 3.3066, 1e-4);
   EXPECT_NEAR(ti::realStabilityBoundary(ti::rungeKuttaFehlberg45()), 3.0200, 1e-4);
   EXPECT_NEAR(ti::realStabilityBoundary(ti::rungeKuttaFehlberg45Extrapolated()), 3.6777, 1e-4);
-  for (const auto& tableau : {ti::rungeKuttaFehlberg45(), ti::rungeKuttaFehlberg45Extrapolated(),
-                              ti::dormandPrince45()}) {
+  for (const auto& tableau :
+       {ti::rungeKuttaFehlberg45(), ti::rungeKuttaFehlberg45Extrapolated(), ti::dormandPrince45()}) {
     const double r = ti::realStabilityBoundary(tableau);
     EXPECT_LE(std::abs(ti::stabilityFunction(tableau, -r)), 1.0 + 1e-9) << tableau.name;
     EXPECT_GT(std::abs(ti::stabilityFunction(tableau, -r - 1e-3)), 1.0) << tableau.name;
@@ -51,7 +51,7 @@ ti::TimeIntegrationSettings loose(bool limit)
 {
   ti::TimeIntegrationSettings s;
   s.method = ti::Method::RKF45;
-  s.tolerance = 1e-3;   // loose: the error control lets the step grow past 3.02 / 400
+  s.tolerance = 1e-3; // loose: the error control lets the step grow past 3.02 / 400
   s.initialStep = 1e-4;
   s.endTime = 4.0;
   s.stabilityLimit = limit;
@@ -75,7 +75,7 @@ TEST(StabilityLimit, StepsStayInsideTheStabilityRegion)
   }
   // 12 power iterations from a vector with every mode in it reach rho to 0.1%.
   EXPECT_NEAR(state.stabilityStep, bound, 1e-3 * bound);
-  EXPECT_LE(largestFast, 1.0);   // the fast mode only decays
+  EXPECT_LE(largestFast, 1.0); // the fast mode only decays
   EXPECT_NEAR(state.y[0], (std::cos(4.0) + std::sin(4.0) - std::exp(-4.0)) / 2.0, 1e-3);
 }
 
@@ -95,7 +95,7 @@ TEST(StabilityLimit, WithoutItTheErrorControlAcceptsUnstableSteps)
   while (state.time < 4.0) {
     const auto report = integrator.step(state, 4.0);
     beyond += report.stepSize > bound ? 1 : 0;
-    if (state.time > 1.0) {   // exp(-400) later: anything left is the instability's
+    if (state.time > 1.0) { // exp(-400) later: anything left is the instability's
       fastAfterDecay = std::max(fastAfterDecay, std::abs(state.y[2]));
     }
   }

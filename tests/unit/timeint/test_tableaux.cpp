@@ -46,8 +46,8 @@ double dot(const Vector& a, const Vector& b)
 struct OrderCondition {
   int order;
   std::string tree;
-  double value;      // sum_i b_i Phi_i(tree)
-  double expected;   // 1 / gamma(tree)
+  double value;    // sum_i b_i Phi_i(tree)
+  double expected; // 1 / gamma(tree)
 };
 
 /// The 17 order conditions of the rooted trees with up to 5 nodes (Butcher; Hairer,
@@ -61,23 +61,23 @@ std::vector<OrderCondition> orderConditions(const ti::ButcherTableau& t, const V
   const Vector AAc = multiply(t, Ac), AAc2 = multiply(t, Ac2), AAAc = multiply(t, AAc);
   const Vector AcAc = multiply(t, times(c, Ac));
   return {
-    {1, "t", dot(b, one), 1.0},
-    {2, "[t]", dot(b, c), 1.0 / 2},
-    {3, "[t,t]", dot(b, c2), 1.0 / 3},
-    {3, "[[t]]", dot(b, Ac), 1.0 / 6},
-    {4, "[t,t,t]", dot(b, c3), 1.0 / 4},
-    {4, "[t,[t]]", dot(b, times(c, Ac)), 1.0 / 8},
-    {4, "[[t,t]]", dot(b, Ac2), 1.0 / 12},
-    {4, "[[[t]]]", dot(b, AAc), 1.0 / 24},
-    {5, "[t,t,t,t]", dot(b, times(c2, c2)), 1.0 / 5},
-    {5, "[t,t,[t]]", dot(b, times(c2, Ac)), 1.0 / 10},
-    {5, "[[t],[t]]", dot(b, times(Ac, Ac)), 1.0 / 20},
-    {5, "[t,[t,t]]", dot(b, times(c, Ac2)), 1.0 / 15},
-    {5, "[t,[[t]]]", dot(b, times(c, AAc)), 1.0 / 30},
-    {5, "[[t,t,t]]", dot(b, Ac3), 1.0 / 20},
-    {5, "[[t,[t]]]", dot(b, AcAc), 1.0 / 40},
-    {5, "[[[t,t]]]", dot(b, AAc2), 1.0 / 60},
-    {5, "[[[[t]]]]", dot(b, AAAc), 1.0 / 120},
+      {1, "t", dot(b, one), 1.0},
+      {2, "[t]", dot(b, c), 1.0 / 2},
+      {3, "[t,t]", dot(b, c2), 1.0 / 3},
+      {3, "[[t]]", dot(b, Ac), 1.0 / 6},
+      {4, "[t,t,t]", dot(b, c3), 1.0 / 4},
+      {4, "[t,[t]]", dot(b, times(c, Ac)), 1.0 / 8},
+      {4, "[[t,t]]", dot(b, Ac2), 1.0 / 12},
+      {4, "[[[t]]]", dot(b, AAc), 1.0 / 24},
+      {5, "[t,t,t,t]", dot(b, times(c2, c2)), 1.0 / 5},
+      {5, "[t,t,[t]]", dot(b, times(c2, Ac)), 1.0 / 10},
+      {5, "[[t],[t]]", dot(b, times(Ac, Ac)), 1.0 / 20},
+      {5, "[t,[t,t]]", dot(b, times(c, Ac2)), 1.0 / 15},
+      {5, "[t,[[t]]]", dot(b, times(c, AAc)), 1.0 / 30},
+      {5, "[[t,t,t]]", dot(b, Ac3), 1.0 / 20},
+      {5, "[[t,[t]]]", dot(b, AcAc), 1.0 / 40},
+      {5, "[[[t,t]]]", dot(b, AAc2), 1.0 / 60},
+      {5, "[[[[t]]]]", dot(b, AAAc), 1.0 / 120},
   };
 }
 
@@ -91,9 +91,8 @@ void expectOrder(const ti::ButcherTableau& t, const Vector& b, int order, const 
   for (const auto& condition : orderConditions(t, b)) {
     if (condition.order <= order) {
       EXPECT_NEAR(condition.value, condition.expected, orderConditionTolerance)
-        << t.name << " " << what << ": order condition of tree " << condition.tree;
-    } else if (condition.order == order + 1 &&
-               std::abs(condition.value - condition.expected) > 1e-6) {
+          << t.name << " " << what << ": order condition of tree " << condition.tree;
+    } else if (condition.order == order + 1 && std::abs(condition.value - condition.expected) > 1e-6) {
       someHigherConditionFails = true;
     }
   }

@@ -75,8 +75,7 @@ inline ContourPoint contourPoint(const Eigen::Vector2d& position, const Eigen::V
   point.metric = first.norm();
   point.tangent = first / point.metric;
   point.normal = Eigen::Vector2d(point.tangent.y(), -point.tangent.x());
-  point.curvature = (first.x() * second.y() - first.y() * second.x()) /
-                    (point.metric * point.metric * point.metric);
+  point.curvature = (first.x() * second.y() - first.y() * second.x()) / (point.metric * point.metric * point.metric);
   return point;
 }
 

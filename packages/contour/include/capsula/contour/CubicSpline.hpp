@@ -48,8 +48,8 @@ public:
   /// Natural spline (tethered contour, eqs A.31-A.32). Needs n >= 1 piece.
   static CubicSpline natural(std::vector<double> knots, const std::vector<double>& values);
   /// Clamped spline with slopes dx/ds prescribed at s_0 and s_n. Needs n >= 1 piece.
-  static CubicSpline clamped(std::vector<double> knots, const std::vector<double>& values,
-                             double startSlope, double endSlope);
+  static CubicSpline clamped(std::vector<double> knots, const std::vector<double>& values, double startSlope,
+                             double endSlope);
   /// Not-a-knot spline: exact for cubics without any end data. Needs n >= 3 pieces.
   static CubicSpline notAKnot(std::vector<double> knots, const std::vector<double>& values);
   /// The interpolant of samples in time (thesis Section 3.11.2: the centroid velocity as
@@ -76,8 +76,7 @@ public:
 private:
   CubicSpline(std::vector<double> knots, SplineEnds ends);
   /// Coefficients (eqs A.22-A.25) from values at all n + 1 knots and second derivatives.
-  void buildPieces(const std::vector<double>& knotValues,
-                   const std::vector<double>& secondDerivatives);
+  void buildPieces(const std::vector<double>& knotValues, const std::vector<double>& secondDerivatives);
 
   std::vector<double> knots_;
   std::vector<CubicPiece> pieces_;

@@ -30,8 +30,7 @@ struct EllipseShape {
 Eigen::Matrix2Xd ellipseNodes(int numberOfNodes, const EllipseShape& shape);
 
 /// Equally spaced points on a circle, counter-clockwise, node 0 at angle `firstNodeAngle`.
-Eigen::Matrix2Xd circleNodes(int numberOfNodes, double radius,
-                             const Eigen::Vector2d& centre = Eigen::Vector2d::Zero(),
+Eigen::Matrix2Xd circleNodes(int numberOfNodes, double radius, const Eigen::Vector2d& centre = Eigen::Vector2d::Zero(),
                              double firstNodeAngle = 0.0);
 
 } // namespace capsula::contour

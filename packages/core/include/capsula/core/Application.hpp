@@ -18,17 +18,16 @@ namespace capsula::core {
 
 struct RunContext {
   Teuchos::RCP<const Teuchos::Comm<int>> comm;
-  Teuchos::RCP<Teuchos::ParameterList> deck;   ///< validated, defaults filled in
-  std::string deckName;                        ///< the file it came from
+  Teuchos::RCP<Teuchos::ParameterList> deck; ///< validated, defaults filled in
+  std::string deckName;                      ///< the file it came from
   CommandLineOptions options;
-  std::ostream* out = nullptr;                 ///< rank 0: stdout; other ranks: a black hole
+  std::ostream* out = nullptr; ///< rank 0: stdout; other ranks: a black hole
 };
 
 /// Runs an app. Must be called from main() before MPI is initialised (it owns
 /// MPI and Kokkos through Tpetra::ScopeGuard). Returns the process exit code:
 /// 0 on success, 1 on an error (the message is printed on stderr), 2 on a usage error.
-int runApplication(int argc, char** argv, const AppDescription& app,
-                   const ValidParameterBuilder& validParameters,
+int runApplication(int argc, char** argv, const AppDescription& app, const ValidParameterBuilder& validParameters,
                    const std::function<void(RunContext&)>& run);
 
 } // namespace capsula::core

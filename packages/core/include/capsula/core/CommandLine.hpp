@@ -10,8 +10,8 @@
 namespace capsula::core {
 
 struct CommandLineOptions {
-  std::string deckPath;                   ///< empty if none was given
-  std::vector<std::string> overrides;     ///< each "List/Sub/Key=value", in order
+  std::string deckPath;               ///< empty if none was given
+  std::vector<std::string> overrides; ///< each "List/Sub/Key=value", in order
   std::optional<std::string> outputDirectory;
   std::optional<std::string> restartDirectory;
   bool printDefaults = false;
@@ -24,9 +24,9 @@ CommandLineOptions parseCommandLine(int argc, const char* const* argv);
 
 /// What an app says about itself in --help.
 struct AppDescription {
-  std::string name;                    ///< e.g. "cell3d"
-  std::string summary;                 ///< one line
-  std::vector<std::string> examples;   ///< full command lines
+  std::string name;                  ///< e.g. "cell3d"
+  std::string summary;               ///< one line
+  std::vector<std::string> examples; ///< full command lines
   bool supportsRestart = false;
 };
 

@@ -22,7 +22,7 @@ namespace capsula::core {
 /// Builds the valid parameter list for a given (possibly partial) deck. Most
 /// components ignore the deck; a scene uses it to declare one sublist per cell.
 using ValidParameterBuilder =
-  std::function<Teuchos::RCP<const Teuchos::ParameterList>(const Teuchos::ParameterList& deck)>;
+    std::function<Teuchos::RCP<const Teuchos::ParameterList>(const Teuchos::ParameterList& deck)>;
 
 /// Reads an XML deck. Throws IoError if the file cannot be read, InputError if
 /// it is not a Teuchos XML parameter list (the message names the file).
@@ -30,20 +30,17 @@ Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path);
 
 /// Parses a deck from an XML string (tests, restart records). `sourceName`
 /// names it in messages.
-Teuchos::RCP<Teuchos::ParameterList> readDeckFromString(const std::string& xml,
-                                                        const std::string& sourceName);
+Teuchos::RCP<Teuchos::ParameterList> readDeckFromString(const std::string& xml, const std::string& sourceName);
 
 /// Checks `deck` against `valid` as described above and fills in defaults.
 /// `deckName` (usually the file path) is named in every message.
-void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
-                  const std::string& deckName);
+void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid, const std::string& deckName);
 
 /// Applies one `--set` override, "List/Sub/Key=value". The key path must exist
 /// in `valid` (or already in `deck`); the value is parsed as that key's type:
 /// double, int, bool (true/false/1/0/yes/no/on/off), string, or Array(double)
 /// ("{1, 2, 3}" or "1,2,3"). Throws InputError naming the override.
-void applyOverride(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
-                   const std::string& assignment);
+void applyOverride(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid, const std::string& assignment);
 
 /// Writes `list` as Teuchos XML that readDeck() reads back. With `withDocs`,
 /// each parameter is preceded by an XML comment holding its doc string and

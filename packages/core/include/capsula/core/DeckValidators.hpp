@@ -91,7 +91,6 @@ private:
 std::size_t editDistance(const std::string& a, const std::string& b);
 
 /// The candidate closest to `word`, if it is close enough to be a likely typo.
-std::optional<std::string> closestMatch(const std::string& word,
-                                        const std::vector<std::string>& candidates);
+std::optional<std::string> closestMatch(const std::string& word, const std::vector<std::string>& candidates);
 
 } // namespace capsula::core

@@ -88,8 +88,7 @@ inline EdgeResultant edgeTensionResultant(const EdgeNodalData& edge, double midP
 }
 
 /// int_edge T . b dl alone (see edgeTensionResultant).
-inline Vec3 edgeTensionForce(const EdgeNodalData& edge, double midParameter,
-                             const quadrature::Rule1D& rule)
+inline Vec3 edgeTensionForce(const EdgeNodalData& edge, double midParameter, const quadrature::Rule1D& rule)
 {
   return edgeTensionResultant(edge, midParameter, rule).force;
 }

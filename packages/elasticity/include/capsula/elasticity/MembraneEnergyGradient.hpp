@@ -30,9 +30,8 @@ struct ReferenceQuadraturePoint {
 };
 
 /// The reference data of one point: `X` the reference nodes, `p` their shape parameters.
-inline ReferenceQuadraturePoint referenceQuadraturePoint(const mesh::ElementNodes& X,
-                                                         const mesh::ShapeParameters& p, double xi,
-                                                         double eta, double ruleWeight)
+inline ReferenceQuadraturePoint referenceQuadraturePoint(const mesh::ElementNodes& X, const mesh::ShapeParameters& p,
+                                                         double xi, double eta, double ruleWeight)
 {
   ReferenceQuadraturePoint r;
   mesh::shapeFunctionDerivatives(p, xi, eta, r.dXi, r.dEta);
@@ -53,8 +52,8 @@ inline ReferenceQuadraturePoint referenceQuadraturePoint(const mesh::ElementNode
 /// Adds the point's share of dE/dx_k to gradient[k] (k = 0..5, the element's nodes) for
 /// the current nodes `x`, and returns its share of E. Returns NaN (and adds nothing)
 /// where the current tangents are degenerate (det g <= 0: a crushed element).
-inline double addEnergyGradient(const ReferenceQuadraturePoint& r, const mesh::ElementNodes& x,
-                                const MembraneLaw& law, mesh::Vec3 gradient[6])
+inline double addEnergyGradient(const ReferenceQuadraturePoint& r, const mesh::ElementNodes& x, const MembraneLaw& law,
+                                mesh::Vec3 gradient[6])
 {
   mesh::Vec3 g1 = mesh::Vec3::Zero(), g2 = mesh::Vec3::Zero();
   for (int k = 0; k < 6; ++k) {

@@ -17,7 +17,6 @@ struct MembraneLawParameters {
 std::vector<std::string> membraneLawNames();
 
 /// Throws InputError for an unknown name (listing the known ones) or invalid moduli.
-std::unique_ptr<MembraneLaw> makeMembraneLaw(const std::string& name,
-                                             const MembraneLawParameters& parameters);
+std::unique_ptr<MembraneLaw> makeMembraneLaw(const std::string& name, const MembraneLawParameters& parameters);
 
 } // namespace capsula::elasticity

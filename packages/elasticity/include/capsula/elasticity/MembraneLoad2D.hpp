@@ -14,8 +14,7 @@
 namespace capsula::elasticity {
 
 /// Delta f = gamma kappa n - (d gamma / dl) t at one point of the contour.
-inline Eigen::Vector2d membraneLoad2D(double tension, double tensionSlope,
-                                      const contour::ContourPoint& point)
+inline Eigen::Vector2d membraneLoad2D(double tension, double tensionSlope, const contour::ContourPoint& point)
 {
   return tension * point.curvature * point.normal - tensionSlope * point.tangent;
 }

@@ -96,8 +96,7 @@ public:
   /// shape. Throws InputError for a wrong size, a null law, a bad N_Q or edge-point
   /// count, or a reference element folded against its neighbours.
   MembraneMechanics(const mesh::SurfaceMesh& mesh, std::vector<double> referencePositions,
-                    std::shared_ptr<const MembraneLaw> law,
-                    const MembraneDiscretisation& discretisation = {});
+                    std::shared_ptr<const MembraneLaw> law, const MembraneDiscretisation& discretisation = {});
 
   /// Computes everything below for the current positions (3 * numNodes doubles), or with
   /// LoadOnly what the load needs. Throws NumericalError if the membrane is folded or
@@ -181,11 +180,11 @@ private:
   std::vector<std::array<Vec3, 2>> referenceDual_; // G^xi, G^eta carried into the nodal plane
 
   // Work arrays, sized once.
-  std::vector<std::array<Vec3, 2>> currentTangent_; // x_xi, x_eta per element node (material)
-  std::vector<double> weight_;                      // per node: sum of incident areas
-  std::vector<Mat3> gradient_;                      // per node: averaged A
+  std::vector<std::array<Vec3, 2>> currentTangent_;       // x_xi, x_eta per element node (material)
+  std::vector<double> weight_;                            // per node: sum of incident areas
+  std::vector<Mat3> gradient_;                            // per node: averaged A
   std::vector<ReferenceQuadraturePoint> referencePoints_; // VirtualWork: N_Q per element
-  std::unique_ptr<mesh::SurfaceMassMatrix> mass_;          // VirtualWork only
+  std::unique_ptr<mesh::SurfaceMassMatrix> mass_;         // VirtualWork only
 
   // Results.
   std::vector<double> area_;

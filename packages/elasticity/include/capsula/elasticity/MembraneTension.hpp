@@ -14,8 +14,7 @@ namespace capsula::elasticity {
 
 /// T (eq 3.30) from B = A A^T, the current unit normal n, the principal stretches of
 /// B and the law's derivatives at their invariants.
-inline Mat3 membraneTension(const Mat3& B, const Vec3& n, const PrincipalStretches& s,
-                            const EnergyDerivatives& dw)
+inline Mat3 membraneTension(const Mat3& B, const Vec3& n, const PrincipalStretches& s, const EnergyDerivatives& dw)
 {
   const double J = s.areaRatio();
   return (2.0 / J) * (dw.dI1 * B + (J * J * dw.dI2) * tangentProjector(n));

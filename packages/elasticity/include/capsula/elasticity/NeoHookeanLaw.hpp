@@ -36,10 +36,7 @@ public:
 
   std::string name() const override { return "NeoHookean"; }
   double shearModulus() const override { return shearModulus_; }
-  double energyDensity(double I1, double I2) const override
-  {
-    return neoHookeanEnergyDensity(shearModulus_, I1, I2);
-  }
+  double energyDensity(double I1, double I2) const override { return neoHookeanEnergyDensity(shearModulus_, I1, I2); }
   EnergyDerivatives energyDerivatives(double I1, double I2) const override
   {
     return neoHookeanEnergyDerivatives(shearModulus_, I1, I2);

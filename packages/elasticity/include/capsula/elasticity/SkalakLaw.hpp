@@ -13,8 +13,7 @@ inline double skalakEnergyDensity(double shearModulus, double areaDilation, doub
   return 0.25 * shearModulus * (I1 * I1 + 2.0 * I1 - 2.0 * I2 + areaDilation * I2 * I2);
 }
 
-inline EnergyDerivatives skalakEnergyDerivatives(double shearModulus, double areaDilation,
-                                                 double I1, double I2)
+inline EnergyDerivatives skalakEnergyDerivatives(double shearModulus, double areaDilation, double I1, double I2)
 {
   return {0.5 * shearModulus * (I1 + 1.0), 0.5 * shearModulus * (areaDilation * I2 - 1.0)};
 }
@@ -27,8 +26,7 @@ inline EnergySecondDerivatives skalakEnergySecondDerivatives(double shearModulus
 class SkalakLaw final : public MembraneLaw {
 public:
   /// Throws InputError unless G is finite and positive and C finite and non-negative.
-  SkalakLaw(double shearModulus, double areaDilation)
-      : shearModulus_(shearModulus), areaDilation_(areaDilation)
+  SkalakLaw(double shearModulus, double areaDilation) : shearModulus_(shearModulus), areaDilation_(areaDilation)
   {
     requireModulus("Skalak", "shear modulus G", shearModulus);
     requireModulus("Skalak", "area-dilation ratio C", areaDilation, true);

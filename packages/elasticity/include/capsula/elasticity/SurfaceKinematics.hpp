@@ -27,8 +27,7 @@ inline std::array<Vec3, 2> dualTangents(const Vec3& tangentXi, const Vec3& tange
 
 /// A = x_xi G^xi^T + x_eta G^eta^T (eqs 3.33-3.35); `dual` from dualTangents() of the
 /// reference tangents at the same material point.
-inline Mat3 surfaceDeformationGradient(const Vec3& currentXi, const Vec3& currentEta,
-                                       const std::array<Vec3, 2>& dual)
+inline Mat3 surfaceDeformationGradient(const Vec3& currentXi, const Vec3& currentEta, const std::array<Vec3, 2>& dual)
 {
   return currentXi * dual[0].transpose() + currentEta * dual[1].transpose();
 }

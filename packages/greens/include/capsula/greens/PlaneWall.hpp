@@ -15,7 +15,10 @@ inline constexpr int wallNormalAxis = 1;
 
 /// The "+-" of thesis eqs B.3-B.4, B.11-B.12, B.15-B.16: +1 when the force index j is
 /// tangential to the wall, -1 when it is normal.
-inline constexpr double imageSign(int j) { return j == wallNormalAxis ? -1.0 : 1.0; }
+inline constexpr double imageSign(int j)
+{
+  return j == wallNormalAxis ? -1.0 : 1.0;
+}
 
 /// xh = x - x0 (field point from the pole x0) and X = x - x0' (from its image below the wall).
 template <int D>
@@ -44,9 +47,8 @@ inline void addStokesletImages(const double X[D], double h, double imageDiagonal
       const double dij = (i == j) ? 1.0 : 0.0;
       const double imageStokeslet = dij * imageDiagonal + X[i] * X[j] * invRD;
       const double dipole = s * (dij * invRD - d * X[i] * X[j] * invRD2);
-      const double doublet = Xn * dipole
-                             + s * ((j == wallNormalAxis ? X[i] : 0.0)
-                                    - (i == wallNormalAxis ? X[j] : 0.0)) * invRD;
+      const double doublet =
+          Xn * dipole + s * ((j == wallNormalAxis ? X[i] : 0.0) - (i == wallNormalAxis ? X[j] : 0.0)) * invRD;
       G[i][j] += -imageStokeslet + 2.0 * h * h * dipole - 2.0 * h * doublet;
     }
   }
@@ -68,13 +70,11 @@ inline void addStressletImages(const double X[D], double h, double invRD2, doubl
       const double s = imageSign(j);
       for (int k = 0; k < D; ++k) {
         const double Xijk = X[i] * X[j] * X[k];
-        const double deltaTerms = (i == k ? X[j] : 0.0) + (i == j ? X[k] : 0.0)
-                                  + (k == j ? X[i] : 0.0);
+        const double deltaTerms = (i == k ? X[j] : 0.0) + (i == j ? X[k] : 0.0) + (k == j ? X[i] : 0.0);
         const double imageStresslet = -twoD * Xijk * invRD2;
         const double dipole = twoD * s * (-deltaTerms * invRD2 + dPlusTwo * Xijk * invRD4);
-        const double doublet = Xn * dipole
-                               + twoD * s * ((i == k ? X[j] * Xn : 0.0)
-                                             - (j == wallNormalAxis ? X[i] * X[k] : 0.0)) * invRD2;
+        const double doublet =
+            Xn * dipole + twoD * s * ((i == k ? X[j] * Xn : 0.0) - (j == wallNormalAxis ? X[i] * X[k] : 0.0)) * invRD2;
         T[i][j][k] += -imageStresslet + 2.0 * h * h * dipole - 2.0 * h * doublet;
       }
     }
@@ -89,8 +89,7 @@ inline void addPressureImages(const double X[D], double h, double invRD, double 
   constexpr double d = D;
   const double Xn = X[wallNormalAxis];
   for (int j = 0; j < D; ++j) {
-    const double doublet = 2.0 * imageSign(j)
-                           * ((j == wallNormalAxis ? invRD : 0.0) - d * X[j] * Xn * invRD2);
+    const double doublet = 2.0 * imageSign(j) * ((j == wallNormalAxis ? invRD : 0.0) - d * X[j] * Xn * invRD2);
     P[j] += -2.0 * X[j] * invRD - 2.0 * h * doublet;
   }
 }

@@ -67,18 +67,9 @@ struct Wall2D {
   static constexpr int dimension = 2;
   static constexpr const char* name = "plane wall 2D";
 
-  static void stokeslet(const double x[2], const double x0[2], double G[2][2])
-  {
-    stokesletWall2D(x, x0, G);
-  }
-  static void stresslet(const double x[2], const double x0[2], double T[2][2][2])
-  {
-    stressletWall2D(x, x0, T);
-  }
-  static void pressure(const double x[2], const double x0[2], double P[2])
-  {
-    pressureWall2D(x, x0, P);
-  }
+  static void stokeslet(const double x[2], const double x0[2], double G[2][2]) { stokesletWall2D(x, x0, G); }
+  static void stresslet(const double x[2], const double x0[2], double T[2][2][2]) { stressletWall2D(x, x0, T); }
+  static void pressure(const double x[2], const double x0[2], double P[2]) { pressureWall2D(x, x0, P); }
 };
 
 } // namespace capsula::greens

@@ -71,18 +71,9 @@ struct Wall3D {
   static constexpr int dimension = 3;
   static constexpr const char* name = "plane wall 3D";
 
-  static void stokeslet(const double x[3], const double x0[3], double G[3][3])
-  {
-    stokesletWall3D(x, x0, G);
-  }
-  static void stresslet(const double x[3], const double x0[3], double T[3][3][3])
-  {
-    stressletWall3D(x, x0, T);
-  }
-  static void pressure(const double x[3], const double x0[3], double P[3])
-  {
-    pressureWall3D(x, x0, P);
-  }
+  static void stokeslet(const double x[3], const double x0[3], double G[3][3]) { stokesletWall3D(x, x0, G); }
+  static void stresslet(const double x[3], const double x0[3], double T[3][3][3]) { stressletWall3D(x, x0, T); }
+  static void pressure(const double x[3], const double x0[3], double P[3]) { pressureWall3D(x, x0, P); }
 };
 
 } // namespace capsula::greens

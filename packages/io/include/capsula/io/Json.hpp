@@ -24,7 +24,7 @@ class JsonValue {
 public:
   enum class Kind { Null, Boolean, Integer, Number, String, Array, Object };
 
-  JsonValue() = default;   ///< null
+  JsonValue() = default; ///< null
   JsonValue(bool value);
   JsonValue(int value);
   JsonValue(long value);
@@ -66,8 +66,7 @@ private:
 
 /// The JSON text, indented by `indent` spaces per level (0: one line). Paths of
 /// non-finite numbers written as null are added to `nonFinitePaths` if given.
-std::string toJson(const JsonValue& value, int indent = 2,
-                   std::vector<std::string>* nonFinitePaths = nullptr);
+std::string toJson(const JsonValue& value, int indent = 2, std::vector<std::string>* nonFinitePaths = nullptr);
 
 /// "\"text\"" with JSON escapes.
 std::string jsonQuoted(const std::string& text);

@@ -42,7 +42,7 @@ private:
 
   std::string path_;
   std::vector<std::string> columns_;
-  std::vector<std::string> rows_;   // formatted lines, without the line break
+  std::vector<std::string> rows_; // formatted lines, without the line break
 };
 
 /// A CSV table of numbers as written by MetricsCsv.

@@ -14,8 +14,8 @@
 namespace capsula::io {
 
 struct RunMetadata {
-  std::string application;   ///< e.g. "cell3d"
-  std::string deckSource;    ///< the deck file the run was started from
+  std::string application; ///< e.g. "cell3d"
+  std::string deckSource;  ///< the deck file the run was started from
   int ranks = 1;
 };
 

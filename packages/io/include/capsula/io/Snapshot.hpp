@@ -41,13 +41,13 @@ struct Field {
 };
 
 struct SnapshotBlock {
-  std::string name;                       ///< letters, digits, '_', '-', '.'
+  std::string name; ///< letters, digits, '_', '-', '.'
   Topology topology = Topology::QuadraticTriangles;
-  int dimension = 3;                      ///< coordinates per node: 3 (XYZ) or 2 (XY)
-  std::vector<double> positions;          ///< nodes x dimension, row-major
-  std::vector<std::int64_t> connectivity; ///< elements x nodes per element (none for grids)
-  int nodesPerPolyline = 0;               ///< Polylines only
-  std::array<std::int64_t, 2> gridShape{0, 0};  ///< StructuredGrid only
+  int dimension = 3;                           ///< coordinates per node: 3 (XYZ) or 2 (XY)
+  std::vector<double> positions;               ///< nodes x dimension, row-major
+  std::vector<std::int64_t> connectivity;      ///< elements x nodes per element (none for grids)
+  int nodesPerPolyline = 0;                    ///< Polylines only
+  std::array<std::int64_t, 2> gridShape{0, 0}; ///< StructuredGrid only
   std::vector<Field> nodeFields;
   std::vector<Field> cellFields;
 

@@ -31,8 +31,8 @@ struct SnapshotLayout {
     std::vector<FieldLayout> nodeFields;
     std::vector<FieldLayout> cellFields;
   };
-  std::string group;      ///< "/snapshots/000012": <group>/<block>/positions, fields
-  std::string meshGroup;  ///< "/mesh/000000": <meshGroup>/<block>/connectivity
+  std::string group;     ///< "/snapshots/000012": <group>/<block>/positions, fields
+  std::string meshGroup; ///< "/mesh/000000": <meshGroup>/<block>/connectivity
   double time = 0.0;
   std::int64_t step = 0;
   std::vector<BlockLayout> blocks;

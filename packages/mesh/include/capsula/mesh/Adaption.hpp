@@ -20,9 +20,9 @@ std::vector<double> adaptionQuality(const SurfaceMesh& mesh, const NodeCurvature
 std::vector<int> indicesAtOrAbove(const std::vector<double>& values, double threshold);
 
 struct AdaptionOptions {
-  double threshold = 0.2;                                   ///< eq 4.3
+  double threshold = 0.2; ///< eq 4.3
   CurvatureMethod curvature = CurvatureMethod::QuadraticFit;
-  int numQuadraturePoints = 7;                              ///< for the element areas
+  int numQuadraturePoints = 7; ///< for the element areas
 };
 
 /// One adaption pass: curvature by options.curvature, Q_e, and refineElements() of the
@@ -34,9 +34,9 @@ RefinedMesh adaptToCurvature(const SurfaceMesh& mesh, const std::vector<std::vec
 
 /// A Lagrangian membrane mesh refined where the current shape needs it.
 struct AdaptedMembraneMesh {
-  SurfaceMesh current;              ///< the refined topology at the current positions
-  std::vector<double> reference;    ///< the same nodes in the reference configuration
-  int markedElements = 0;           ///< elements with Q_e >= threshold (0: nothing refined)
+  SurfaceMesh current;           ///< the refined topology at the current positions
+  std::vector<double> reference; ///< the same nodes in the reference configuration
+  int markedElements = 0;        ///< elements with Q_e >= threshold (0: nothing refined)
 };
 
 /// adaptToCurvature for a membrane: Q_e (eq 4.3) from the CURRENT shape `current`, the

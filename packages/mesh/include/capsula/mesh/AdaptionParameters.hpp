@@ -10,8 +10,8 @@ namespace capsula::mesh {
 
 struct AdaptionSettings {
   bool enabled = false;
-  int checkInterval = 20;   ///< accepted steps between two checks of Q_e
-  int maxElements = 5120;   ///< per cell; no refinement past it
+  int checkInterval = 20; ///< accepted steps between two checks of Q_e
+  int maxElements = 5120; ///< per cell; no refinement past it
   AdaptionOptions options;
 };
 

@@ -20,7 +20,7 @@ struct Polyline {
 /// piece of the cut (closed loops for a closed surface), each loop ordered
 /// counter-clockwise seen from the side planeNormal points to. Empty if the plane
 /// misses the surface.
-std::vector<Polyline> crossSection(const SurfaceMesh& mesh, const Vec3& planePoint,
-                                   const Vec3& planeNormal, int subdivisions = 8);
+std::vector<Polyline> crossSection(const SurfaceMesh& mesh, const Vec3& planePoint, const Vec3& planeNormal,
+                                   int subdivisions = 8);
 
 } // namespace capsula::mesh

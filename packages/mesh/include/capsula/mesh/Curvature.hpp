@@ -27,9 +27,9 @@ namespace capsula::mesh {
 
 /// Curvature estimates at the nodes of a mesh (index = node).
 struct NodeCurvatures {
-  std::vector<double> mean;      ///< kappa = (k1 + k2) / 2
-  std::vector<double> gaussian;  ///< K = k1 k2
-  std::vector<Vec3> normal;      ///< outward unit normal
+  std::vector<double> mean;     ///< kappa = (k1 + k2) / 2
+  std::vector<double> gaussian; ///< K = k1 k2
+  std::vector<Vec3> normal;     ///< outward unit normal
 };
 
 enum class CurvatureMethod { ElementAverage, JetFit, QuadraticFit };
@@ -68,8 +68,7 @@ struct QuadraticFitOptions {
 };
 
 /// Iterative local quadratic fit, starting from the element-averaged normals.
-NodeCurvatures quadraticFitCurvature(const SurfaceMesh& mesh,
-                                     const QuadraticFitOptions& options = {});
+NodeCurvatures quadraticFitCurvature(const SurfaceMesh& mesh, const QuadraticFitOptions& options = {});
 /// The same from given initial normals (e.g. the previous time step's, as the thesis
 /// suggests); they must point outwards.
 NodeCurvatures quadraticFitCurvature(const SurfaceMesh& mesh, const std::vector<Vec3>& initialNormals,

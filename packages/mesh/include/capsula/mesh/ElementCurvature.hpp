@@ -22,8 +22,8 @@ namespace capsula::mesh {
 
 /// Second derivatives of phi_i (eq 3.19, ERRATA fix in phi_3). phi_i is quadratic, so
 /// they are constant over the element.
-inline void shapeFunctionSecondDerivatives(const ShapeParameters& p, double dXiXi[6],
-                                           double dXiEta[6], double dEtaEta[6])
+inline void shapeFunctionSecondDerivatives(const ShapeParameters& p, double dXiXi[6], double dXiEta[6],
+                                           double dEtaEta[6])
 {
   const double a = p.alpha, b = p.beta, g = p.gamma;
   const double s4 = 1.0 / (a * (1.0 - a));
@@ -60,8 +60,7 @@ struct CurvaturePair {
 /// the textbook H = (EN - 2FM + GL) / (2(EG - F^2)) is -1/R on an outward-normal sphere
 /// (x_uu points inwards), so kappa = -H; K = (LN - M^2)/(EG - F^2) does not depend on the
 /// sign of n.
-inline CurvaturePair curvatureFromFundamentalForms(double E, double F, double G, double L,
-                                                   double M, double N)
+inline CurvaturePair curvatureFromFundamentalForms(double E, double F, double G, double L, double M, double N)
 {
   const double det = E * G - F * F;
   return {-(E * N - 2.0 * F * M + G * L) / (2.0 * det), (L * N - M * M) / det};
@@ -75,8 +74,7 @@ inline CurvaturePair graphCurvature(double fx, double fy, double fxx, double fxy
   // The graph map (x, y) -> (x, y, f): E = 1 + fx^2, F = fx fy, G = 1 + fy^2 and
   // (L, M, N) = (fxx, fxy, fyy) / w with w = sqrt(1 + fx^2 + fy^2).
   const double w = std::sqrt(1.0 + fx * fx + fy * fy);
-  return curvatureFromFundamentalForms(1.0 + fx * fx, fx * fy, 1.0 + fy * fy, fxx / w, fxy / w,
-                                       fyy / w);
+  return curvatureFromFundamentalForms(1.0 + fx * fx, fx * fy, 1.0 + fy * fy, fxx / w, fxy / w, fyy / w);
 }
 
 /// max(|k1|, |k2|) = |kappa| + sqrt(kappa^2 - K). The discriminant is a square for a
@@ -96,8 +94,7 @@ struct CurvedSurfacePoint {
 };
 
 /// Normal, metric and curvature of the element map at (xi, eta).
-inline CurvedSurfacePoint evaluateCurvature(const ElementNodes& x, const ShapeParameters& p,
-                                            double xi, double eta)
+inline CurvedSurfacePoint evaluateCurvature(const ElementNodes& x, const ShapeParameters& p, double xi, double eta)
 {
   double dXi[6], dEta[6], dXiXi[6], dXiEta[6], dEtaEta[6];
   shapeFunctionDerivatives(p, xi, eta, dXi, dEta);
@@ -116,16 +113,14 @@ inline CurvedSurfacePoint evaluateCurvature(const ElementNodes& x, const ShapePa
   s.metric = areaVector.norm();
   s.normal = areaVector / s.metric;
   const CurvaturePair k = curvatureFromFundamentalForms(
-      xXi.dot(xXi), xXi.dot(xEta), xEta.dot(xEta), xXiXi.dot(s.normal), xXiEta.dot(s.normal),
-      xEtaEta.dot(s.normal));
+      xXi.dot(xXi), xXi.dot(xEta), xEta.dot(xEta), xXiXi.dot(s.normal), xXiEta.dot(s.normal), xEtaEta.dot(s.normal));
   s.mean = k.mean;
   s.gaussian = k.gaussian;
   return s;
 }
 
 /// The same at local node i (0..5) of the element.
-inline CurvedSurfacePoint evaluateCurvatureAtNode(const ElementNodes& x, const ShapeParameters& p,
-                                                  int i)
+inline CurvedSurfacePoint evaluateCurvatureAtNode(const ElementNodes& x, const ShapeParameters& p, int i)
 {
   const auto c = nodeParametricCoordinates(p, i);
   return evaluateCurvature(x, p, c[0], c[1]);

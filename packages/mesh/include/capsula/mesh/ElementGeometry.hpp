@@ -20,8 +20,7 @@ namespace capsula::mesh {
 using ElementNodes = std::array<Vec3, 6>;
 
 /// Copies the six nodes listed in `connectivity` out of a flat position array.
-inline ElementNodes gatherElementNodes(const std::array<int, 6>& connectivity,
-                                       const double* positions)
+inline ElementNodes gatherElementNodes(const std::array<int, 6>& connectivity, const double* positions)
 {
   ElementNodes x;
   for (int i = 0; i < 6; ++i) {
@@ -52,8 +51,7 @@ inline Vec3 surfacePosition(const ElementNodes& x, const ShapeParameters& p, dou
 }
 
 /// Position, tangents, unit normal and metric at (xi, eta) (eqs 3.20-3.24).
-inline SurfacePoint evaluateSurfacePoint(const ElementNodes& x, const ShapeParameters& p, double xi,
-                                         double eta)
+inline SurfacePoint evaluateSurfacePoint(const ElementNodes& x, const ShapeParameters& p, double xi, double eta)
 {
   double phi[6], dXi[6], dEta[6];
   shapeFunctions(p, xi, eta, phi);
@@ -86,8 +84,8 @@ inline SurfacePoint evaluateAtNode(const ElementNodes& x, const ShapeParameters&
 /// f takes a SurfacePoint and returns anything that can be scaled and summed
 /// (double, Vec3, Mat3); `zero` is the additive identity of that type.
 template <typename Rule, typename Integrand, typename Value>
-inline Value integrateOverElement(const ElementNodes& x, const ShapeParameters& p, const Rule& rule,
-                                  Integrand&& f, Value zero)
+inline Value integrateOverElement(const ElementNodes& x, const ShapeParameters& p, const Rule& rule, Integrand&& f,
+                                  Value zero)
 {
   Value sum = zero;
   for (std::size_t q = 0; q < rule.weight.size(); ++q) {

@@ -41,8 +41,7 @@ inline double taylorDeformation(double li, double lj)
 inline Vec3 taylorDeformations(const EquivalentEllipsoid& ellipsoid)
 {
   const Vec3& l = ellipsoid.semiAxes;
-  return Vec3(taylorDeformation(l[0], l[1]), taylorDeformation(l[0], l[2]),
-              taylorDeformation(l[1], l[2]));
+  return Vec3(taylorDeformation(l[0], l[1]), taylorDeformation(l[0], l[2]), taylorDeformation(l[1], l[2]));
 }
 
 } // namespace capsula::mesh

@@ -16,8 +16,7 @@ namespace capsula::mesh {
 /// Area of every element, int_E h_s dxi deta (h_s is not polynomial: not exact).
 std::vector<double> elementAreas(const SurfaceMesh& mesh, int numQuadraturePoints = 7);
 /// The same for another configuration, `positions` numbered as the mesh's nodes.
-std::vector<double> elementAreas(const SurfaceMesh& mesh, const double* positions,
-                                 int numQuadraturePoints = 7);
+std::vector<double> elementAreas(const SurfaceMesh& mesh, const double* positions, int numQuadraturePoints = 7);
 
 double surfaceArea(const SurfaceMesh& mesh, int numQuadraturePoints = 7);
 

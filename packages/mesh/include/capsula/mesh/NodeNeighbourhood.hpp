@@ -28,7 +28,6 @@ NodeGraph nodeGraph(const SurfaceMesh& mesh);
 
 /// The nodes within `rings` (>= 1) edges of `node`, without `node` itself, nearest rings
 /// first. `scratch` (numNodes() ints, all -1 on entry and on return) marks visited nodes.
-std::vector<int> nodeNeighbourhood(const NodeGraph& graph, int node, int rings,
-                                   std::vector<int>& scratch);
+std::vector<int> nodeNeighbourhood(const NodeGraph& graph, int node, int rings, std::vector<int>& scratch);
 
 } // namespace capsula::mesh

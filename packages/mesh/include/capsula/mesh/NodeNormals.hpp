@@ -13,7 +13,6 @@ namespace capsula::mesh {
 /// the node's parametric point, A_e the element area (N_Q-point rule).
 std::vector<Vec3> nodeNormals(const SurfaceMesh& mesh, int numQuadraturePoints = 7);
 /// The same for another configuration, `positions` numbered as the mesh's nodes.
-std::vector<Vec3> nodeNormals(const SurfaceMesh& mesh, const double* positions,
-                              int numQuadraturePoints = 7);
+std::vector<Vec3> nodeNormals(const SurfaceMesh& mesh, const double* positions, int numQuadraturePoints = 7);
 
 } // namespace capsula::mesh

@@ -82,8 +82,7 @@ struct RedistributedNodes {
 /// node) tangentially, carrying the reference positions `reference` along (see above).
 /// Throws InputError for arrays of the wrong size or options out of range.
 RedistributedNodes redistributeNodes(const SurfaceMesh& mesh, const std::vector<double>& positions,
-                                     const std::vector<double>& reference,
-                                     const RedistributionOptions& options = {});
+                                     const std::vector<double>& reference, const RedistributionOptions& options = {});
 
 /// The point of element `nodes` (shape parameters `parameters`) closest to `target`:
 /// Gauss-Newton in (xi, eta), kept inside the parameter triangle. Returns xi, eta and the

@@ -36,12 +36,18 @@ inline ShapeParameters shapeParameters(const std::array<Point, 6>& x)
 inline std::array<double, 2> nodeParametricCoordinates(const ShapeParameters& p, int i)
 {
   switch (i) {
-  case 0: return {0.0, 0.0};
-  case 1: return {1.0, 0.0};
-  case 2: return {0.0, 1.0};
-  case 3: return {p.alpha, 0.0};
-  case 4: return {p.gamma, 1.0 - p.gamma};
-  default: return {0.0, p.beta};
+  case 0:
+    return {0.0, 0.0};
+  case 1:
+    return {1.0, 0.0};
+  case 2:
+    return {0.0, 1.0};
+  case 3:
+    return {p.alpha, 0.0};
+  case 4:
+    return {p.gamma, 1.0 - p.gamma};
+  default:
+    return {0.0, p.beta};
   }
 }
 
@@ -59,8 +65,7 @@ inline void shapeFunctions(const ShapeParameters& p, double xi, double eta, doub
 }
 
 /// d phi_i / d xi and d phi_i / d eta, i = 0..5 (derivatives of eq 3.19).
-inline void shapeFunctionDerivatives(const ShapeParameters& p, double xi, double eta, double dXi[6],
-                                     double dEta[6])
+inline void shapeFunctionDerivatives(const ShapeParameters& p, double xi, double eta, double dXi[6], double dEta[6])
 {
   const double a = p.alpha, b = p.beta, g = p.gamma;
   const double c2 = (a - g) / (1.0 - g); // coupling term of phi_2

@@ -18,8 +18,7 @@ SurfaceMesh makeEllipsoid(int level, const Vec3& semiAxes, const Placement& plac
 /// Spheroid with its symmetry axis along body z: semi-axes (equatorial,
 /// equatorial, polar). Oblate if polar < equatorial: the resting platelet is
 /// makeSpheroid(level, 1.5, 0.25) in micrometres (aspect ratio 6:1, Haga et al. 1998).
-SurfaceMesh makeSpheroid(int level, double equatorialRadius, double polarRadius,
-                         const Placement& placement = {});
+SurfaceMesh makeSpheroid(int level, double equatorialRadius, double polarRadius, const Placement& placement = {});
 
 /// Evans & Fung (1972) biconcave red-cell profile, symmetry axis along body z:
 ///   z(r) = +-(R0 / 2) sqrt(1 - (r/R0)^2) (c0 + c1 (r/R0)^2 + c2 (r/R0)^4),
@@ -38,7 +37,6 @@ struct BiconcaveProfile {
 
 /// The unit-sphere point (x, y, z) goes to (R0 x, R0 y, z (R0/2)(c0 + c1 s + c2 s^2))
 /// with s = x^2 + y^2: since |z| = sqrt(1 - s) on the sphere, this lands on the profile.
-SurfaceMesh makeBiconcaveCell(int level, const BiconcaveProfile& profile = {},
-                              const Placement& placement = {});
+SurfaceMesh makeBiconcaveCell(int level, const BiconcaveProfile& profile = {}, const Placement& placement = {});
 
 } // namespace capsula::mesh

@@ -11,8 +11,8 @@ namespace capsula::mesh {
 /// node spacing (eq 3.17). `positions` (3 per node) may be any configuration of the
 /// mesh; f takes a SurfacePoint and returns a double, Vec3, Mat3, ...
 template <typename Rule, typename Integrand, typename Value>
-Value integrateOverSurface(const SurfaceMesh& mesh, const double* positions, const Rule& rule,
-                           Integrand&& f, Value zero)
+Value integrateOverSurface(const SurfaceMesh& mesh, const double* positions, const Rule& rule, Integrand&& f,
+                           Value zero)
 {
   Value sum = zero;
   for (int e = 0; e < mesh.numElements(); ++e) {

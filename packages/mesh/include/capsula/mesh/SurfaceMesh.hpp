@@ -82,16 +82,10 @@ public:
   const ElementConnectivity& element(int e) const { return elements_[e]; }
   const std::vector<ElementConnectivity>& elements() const { return elements_; }
   /// The six node positions of element e, from the mesh's own positions.
-  ElementNodes elementNodes(int e) const
-  {
-    return gatherElementNodes(element(e), positions_.data());
-  }
+  ElementNodes elementNodes(int e) const { return gatherElementNodes(element(e), positions_.data()); }
   /// The six node positions of element e, from another flat position array
   /// with the same node numbering (a reference or trial configuration).
-  ElementNodes elementNodes(int e, const double* positions) const
-  {
-    return gatherElementNodes(element(e), positions);
-  }
+  ElementNodes elementNodes(int e, const double* positions) const { return gatherElementNodes(element(e), positions); }
 
   // --- nodes ----------------------------------------------------------------
   NodeKind nodeKind(int node) const { return nodeKinds_[node]; }
@@ -131,9 +125,12 @@ private:
 inline std::array<int, 3> localEdgeNodes(int k)
 {
   switch (k) {
-  case 0: return {0, 1, 3};
-  case 1: return {1, 2, 4};
-  default: return {2, 0, 5};
+  case 0:
+    return {0, 1, 3};
+  case 1:
+    return {1, 2, 4};
+  default:
+    return {2, 0, 5};
   }
 }
 

@@ -51,11 +51,13 @@ public:
 
   /// `poles`: the points where the integrand is singular (target and images; at most
   /// maxPoles).
-  AdaptiveElementQuadrature(const ElementMap& element, const Integrand& integrand,
-                            const quadrature::TriangleRule& rule, double tolerance,
-                            const double (*poles)[3], int numPoles)
-    : element_(element), integrand_(integrand), rule_(rule), tolerance_(tolerance),
-      numPoles_(std::min(numPoles, maxPoles))
+  AdaptiveElementQuadrature(const ElementMap& element, const Integrand& integrand, const quadrature::TriangleRule& rule,
+                            double tolerance, const double (*poles)[3], int numPoles)
+      : element_(element),
+        integrand_(integrand),
+        rule_(rule),
+        tolerance_(tolerance),
+        numPoles_(std::min(numPoles, maxPoles))
   {
     for (int p = 0; p < numPoles_; ++p) {
       for (int i = 0; i < 3; ++i) {

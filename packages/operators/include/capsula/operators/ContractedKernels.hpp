@@ -38,8 +38,8 @@ struct FreeSpace3DKernel : greens::FreeSpace3D {
   {
     const double d[3] = {x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]};
     const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    const double scale = -6.0 * (d[0] * v[0] + d[1] * v[1] + d[2] * v[2])
-                         * (d[0] * a[0] + d[1] * a[1] + d[2] * a[2]) / (r2 * r2 * std::sqrt(r2));
+    const double scale = -6.0 * (d[0] * v[0] + d[1] * v[1] + d[2] * v[2]) * (d[0] * a[0] + d[1] * a[1] + d[2] * a[2]) /
+                         (r2 * r2 * std::sqrt(r2));
     for (int j = 0; j < 3; ++j) {
       u[j] += scale * d[j];
     }

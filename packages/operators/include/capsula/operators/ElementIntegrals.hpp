@@ -34,8 +34,7 @@ class ElementMap {
 public:
   ElementMap(const mesh::ElementNodes& nodes, const mesh::ShapeParameters& shape) : shape_(shape)
   {
-    constexpr double lagrangePoints[6][2] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0},
-                                             {0.5, 0.0}, {0.5, 0.5}, {0.0, 0.5}};
+    constexpr double lagrangePoints[6][2] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {0.5, 0.0}, {0.5, 0.5}, {0.0, 0.5}};
     for (int k = 0; k < 6; ++k) {
       double phi[6];
       mesh::shapeFunctions(shape, lagrangePoints[k][0], lagrangePoints[k][1], phi);
@@ -60,8 +59,8 @@ public:
     const double L[6] = {zeta * (2.0 * zeta - 1.0), xi * (2.0 * xi - 1.0), eta * (2.0 * eta - 1.0),
                          4.0 * xi * zeta,           4.0 * xi * eta,        4.0 * eta * zeta};
     for (int i = 0; i < 3; ++i) {
-      x[i] = L[0] * position_[0][i] + L[1] * position_[1][i] + L[2] * position_[2][i]
-             + L[3] * position_[3][i] + L[4] * position_[4][i] + L[5] * position_[5][i];
+      x[i] = L[0] * position_[0][i] + L[1] * position_[1][i] + L[2] * position_[2][i] + L[3] * position_[3][i] +
+             L[4] * position_[4][i] + L[5] * position_[5][i];
     }
   }
 
@@ -87,8 +86,8 @@ public:
       }
     }
     for (int a = 0; a < 6; ++a) {
-      s.phi[a] = phi_[a][0] * L[0] + phi_[a][1] * L[1] + phi_[a][2] * L[2] + phi_[a][3] * L[3]
-                 + phi_[a][4] * L[4] + phi_[a][5] * L[5];
+      s.phi[a] = phi_[a][0] * L[0] + phi_[a][1] * L[1] + phi_[a][2] * L[2] + phi_[a][3] * L[3] + phi_[a][4] * L[4] +
+                 phi_[a][5] * L[5];
     }
     const double area[3] = {tXi[1] * tEta[2] - tXi[2] * tEta[1], tXi[2] * tEta[0] - tXi[0] * tEta[2],
                             tXi[0] * tEta[1] - tXi[1] * tEta[0]};
@@ -215,8 +214,8 @@ struct SolidAngleIntegrand {
   {
     const double d[3] = {s.x[0] - x0[0], s.x[1] - x0[1], s.x[2] - x0[2]};
     const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    value[0] = (d[0] * s.weightedNormal[0] + d[1] * s.weightedNormal[1] + d[2] * s.weightedNormal[2])
-               / (r2 * std::sqrt(r2));
+    value[0] =
+        (d[0] * s.weightedNormal[0] + d[1] * s.weightedNormal[1] + d[2] * s.weightedNormal[2]) / (r2 * std::sqrt(r2));
   }
 };
 

@@ -18,8 +18,7 @@ struct GmresResult {
 /// Solves A x = b from the initial guess in x; x holds the result.
 GmresResult solveWithGmres(const Teuchos::RCP<const Tpetra::Operator<double>>& A,
                            const Teuchos::RCP<const Tpetra::MultiVector<double>>& b,
-                           const Teuchos::RCP<Tpetra::MultiVector<double>>& x,
-                           const SolverParameters& parameters);
+                           const Teuchos::RCP<Tpetra::MultiVector<double>>& x, const SolverParameters& parameters);
 
 /// The same with a right preconditioner M ~ A^-1 (null: none), by flexible GMRES: it
 /// keeps the preconditioned vectors, so its residual estimate is that of the iterate
@@ -29,7 +28,7 @@ GmresResult solveWithGmres(const Teuchos::RCP<const Tpetra::Operator<double>>& A
 GmresResult solveWithGmres(const Teuchos::RCP<const Tpetra::Operator<double>>& A,
                            const Teuchos::RCP<const Tpetra::Operator<double>>& M,
                            const Teuchos::RCP<const Tpetra::MultiVector<double>>& b,
-                           const Teuchos::RCP<Tpetra::MultiVector<double>>& x,
-                           const SolverParameters& parameters, bool zeroInitialGuess = false);
+                           const Teuchos::RCP<Tpetra::MultiVector<double>>& x, const SolverParameters& parameters,
+                           bool zeroInitialGuess = false);
 
 } // namespace capsula::operators

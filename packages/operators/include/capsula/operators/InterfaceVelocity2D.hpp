@@ -87,10 +87,8 @@ public:
 
 /// The evaluator for free space (wall = false) or for the wall y = 0 (Blake's 2D image
 /// system, thesis App. B.1), for contours of `numNodes` nodes.
-std::unique_ptr<InterfaceVelocity2D> makeInterfaceVelocity2D(bool wall,
-                                                             const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
-                                                             int numNodes,
-                                                             const ContourDiscretisation2D& discretisation,
-                                                             const SolverParameters& solver);
+std::unique_ptr<InterfaceVelocity2D>
+makeInterfaceVelocity2D(bool wall, const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes,
+                        const ContourDiscretisation2D& discretisation, const SolverParameters& solver);
 
 } // namespace capsula::operators

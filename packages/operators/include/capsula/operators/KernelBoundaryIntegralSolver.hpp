@@ -25,8 +25,7 @@ class KernelBoundaryIntegralSolver final : public BoundaryIntegralSolver {
 public:
   /// The surfaces' current positions are the first geometry.
   KernelBoundaryIntegralSolver(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
-                               const DiscretisationParameters& discretisation,
-                               const SolverParameters& solver);
+                               const DiscretisationParameters& discretisation, const SolverParameters& solver);
 
   std::string kernelName() const override { return Kernel::name; }
   const CellSurfaces& surfaces() const override { return surfaces_; }
@@ -55,8 +54,8 @@ public:
 private:
   double lambdaOfNode(int node) const { return surfaces_.viscosityRatio(surfaces_.cellOfNode(node)); }
   // Both nodeVelocities: GMRES from `initialGuess`, or from `history` when that is given.
-  VelocitySolution solveNodeVelocities(const LoadDensity& load, const FlowConditions& flow,
-                                       const double* initialGuess, WarmStartHistory* history);
+  VelocitySolution solveNodeVelocities(const LoadDensity& load, const FlowConditions& flow, const double* initialGuess,
+                                       WarmStartHistory* history);
   void requireInFluid(const std::vector<double>& points) const;
   std::vector<double> ownedPointsShare(const std::vector<double>& points) const;
 
@@ -74,7 +73,7 @@ SolverFactory solverFactory()
   return [](const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
             const DiscretisationParameters& discretisation, const SolverParameters& solver) {
     return std::unique_ptr<BoundaryIntegralSolver>(
-      new KernelBoundaryIntegralSolver<Kernel>(comm, std::move(surfaces), discretisation, solver));
+        new KernelBoundaryIntegralSolver<Kernel>(comm, std::move(surfaces), discretisation, solver));
   };
 }
 
@@ -82,16 +81,17 @@ SolverFactory solverFactory()
 // Implementation
 
 template <class Kernel>
-KernelBoundaryIntegralSolver<Kernel>::KernelBoundaryIntegralSolver(
-  const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
-  const DiscretisationParameters& discretisation, const SolverParameters& solver)
-  : distribution_(comm, surfaces.numNodes()),
-    surfaces_(std::move(surfaces)),
-    solverParameters_(solver),
-    potentials_(discretisation),
-    singleLayerTimer_(core::timer("Single layer")),
-    solveTimer_(core::timer("Viscosity-ratio GMRES solve")),
-    flowTimer_(core::timer("Flow velocity at points"))
+KernelBoundaryIntegralSolver<Kernel>::KernelBoundaryIntegralSolver(const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                                                                   CellSurfaces surfaces,
+                                                                   const DiscretisationParameters& discretisation,
+                                                                   const SolverParameters& solver)
+    : distribution_(comm, surfaces.numNodes()),
+      surfaces_(std::move(surfaces)),
+      solverParameters_(solver),
+      potentials_(discretisation),
+      singleLayerTimer_(core::timer("Single layer")),
+      solveTimer_(core::timer("Viscosity-ratio GMRES solve")),
+      flowTimer_(core::timer("Flow velocity at points"))
 {
   validate(solverParameters_);
   potentials_.setTopology(surfaces_, distribution_.firstOwnedNode(), distribution_.numOwnedNodes());
@@ -121,10 +121,9 @@ VelocitySolution KernelBoundaryIntegralSolver<Kernel>::nodeVelocities(const Load
 }
 
 template <class Kernel>
-VelocitySolution KernelBoundaryIntegralSolver<Kernel>::solveNodeVelocities(const LoadDensity& load,
-                                                                           const FlowConditions& flow,
-                                                                           const double* initialGuess,
-                                                                           WarmStartHistory* history)
+VelocitySolution
+KernelBoundaryIntegralSolver<Kernel>::solveNodeVelocities(const LoadDensity& load, const FlowConditions& flow,
+                                                          const double* initialGuess, WarmStartHistory* history)
 {
   core::require<core::InputError>(flow.capillaryNumber > 0.0 && std::isfinite(flow.capillaryNumber),
                                   "The capillary number is ", flow.capillaryNumber,
@@ -146,8 +145,8 @@ VelocitySolution KernelBoundaryIntegralSolver<Kernel>::solveNodeVelocities(const
     const double lambda = lambdaOfNode(g);
     const mesh::Vec3 background = flow.background.at(mesh::nodeAt(positions, g));
     for (int j = 0; j < 3; ++j) {
-      rhs[3 * t + j] = 2.0 / (1.0 + lambda) * background[j]
-                       - single[3 * t + j] / (4.0 * M_PI * (1.0 + lambda) * flow.capillaryNumber);
+      rhs[3 * t + j] = 2.0 / (1.0 + lambda) * background[j] -
+                       single[3 * t + j] / (4.0 * M_PI * (1.0 + lambda) * flow.capillaryNumber);
     }
   }
   VelocitySolution solution;
@@ -158,10 +157,10 @@ VelocitySolution KernelBoundaryIntegralSolver<Kernel>::solveNodeVelocities(const
 
   Teuchos::TimeMonitor guard(*solveTimer_);
   std::vector<double> globalRhs, guess;
-  if (history) {   // every rank forms the same guess from the same global vectors
+  if (history) { // every rank forms the same guess from the same global vectors
     globalRhs = distribution_.gather(rhs);
     if (!history->empty() && history->length() != globalRhs.size()) {
-      *history = WarmStartHistory(history->depth());   // another mesh: its solutions do not apply
+      *history = WarmStartHistory(history->depth()); // another mesh: its solutions do not apply
     }
     guess = history->initialGuess(globalRhs);
     initialGuess = guess.data();
@@ -194,17 +193,17 @@ VelocitySolution KernelBoundaryIntegralSolver<Kernel>::solveNodeVelocities(const
     rowScale[t] = 1.0 / (4.0 * M_PI * (1.0 + lambdaOfNode(first + t)));
   }
   auto A = Teuchos::rcp(new SecondKindOperator(
-    map,
-    [this](const double* density, double* rows) {
-      potentials_.doubleLayerAtNodes(density, DoubleLayerForm::Subtracted, rows);
-    },
-    std::move(densityScale), std::move(rowScale)));
+      map,
+      [this](const double* density, double* rows) {
+        potentials_.doubleLayerAtNodes(density, DoubleLayerForm::Subtracted, rows);
+      },
+      std::move(densityScale), std::move(rowScale)));
   const GmresResult result = solveWithGmres(A, b, x, solverParameters_);
-  core::require<core::NumericalError>(
-    result.converged, "GMRES for the viscosity-ratio equation stopped after ", result.iterations,
-    " iterations at relative residual ", result.residual, " > 'Solver/Tolerance' = ",
-    solverParameters_.tolerance, ". Raise 'Solver/Maximum iterations' or 'Solver/Restart', or relax "
-    "'Solver/Tolerance'.");
+  core::require<core::NumericalError>(result.converged, "GMRES for the viscosity-ratio equation stopped after ",
+                                      result.iterations, " iterations at relative residual ", result.residual,
+                                      " > 'Solver/Tolerance' = ", solverParameters_.tolerance,
+                                      ". Raise 'Solver/Maximum iterations' or 'Solver/Restart', or relax "
+                                      "'Solver/Tolerance'.");
   solution.iterations = result.iterations;
   solution.residual = result.residual;
   const auto xData = x->getData(0);
@@ -218,12 +217,12 @@ VelocitySolution KernelBoundaryIntegralSolver<Kernel>::solveNodeVelocities(const
 template <class Kernel>
 void KernelBoundaryIntegralSolver<Kernel>::requireInFluid(const std::vector<double>& points) const
 {
-  core::require<core::InputError>(points.size() % 3 == 0, "Flow points come as (x, y, z) triples; got ",
-                                  points.size(), " numbers.");
+  core::require<core::InputError>(points.size() % 3 == 0, "Flow points come as (x, y, z) triples; got ", points.size(),
+                                  " numbers.");
   for (std::size_t p = 0; p < points.size(); p += 3) {
-    core::require<core::InputError>(KernelTraits<Kernel>::inFluid(&points[p]), "The flow point (",
-                                    points[p], ", ", points[p + 1], ", ", points[p + 2],
-                                    ") lies outside the fluid domain of the ", Kernel::name, " kernel.");
+    core::require<core::InputError>(KernelTraits<Kernel>::inFluid(&points[p]), "The flow point (", points[p], ", ",
+                                    points[p + 1], ", ", points[p + 2], ") lies outside the fluid domain of the ",
+                                    Kernel::name, " kernel.");
   }
 }
 
@@ -235,10 +234,9 @@ std::vector<double> KernelBoundaryIntegralSolver<Kernel>::ownedPointsShare(const
 }
 
 template <class Kernel>
-std::vector<double> KernelBoundaryIntegralSolver<Kernel>::flowVelocity(const std::vector<double>& points,
-                                                                       const LoadDensity& load,
-                                                                       const double* nodeVelocities,
-                                                                       const FlowConditions& flow)
+std::vector<double>
+KernelBoundaryIntegralSolver<Kernel>::flowVelocity(const std::vector<double>& points, const LoadDensity& load,
+                                                   const double* nodeVelocities, const FlowConditions& flow)
 {
   Teuchos::TimeMonitor guard(*flowTimer_);
   requireInFluid(points);
@@ -268,8 +266,8 @@ std::vector<double> KernelBoundaryIntegralSolver<Kernel>::flowVelocity(const std
       }
     }
     for (int j = 0; j < 3; ++j) {
-      velocity[3 * p + j] = scale * (background[j] - single[3 * p + j] / (8.0 * M_PI * flow.capillaryNumber)
-                                     + dbl[3 * p + j] / (8.0 * M_PI));
+      velocity[3 * p + j] = scale * (background[j] - single[3 * p + j] / (8.0 * M_PI * flow.capillaryNumber) +
+                                     dbl[3 * p + j] / (8.0 * M_PI));
     }
   }
   return distribution_.gatherShares(velocity, static_cast<int>(points.size() / 3), 3);

@@ -17,8 +17,8 @@
 namespace capsula::operators {
 
 using SolverFactory = std::function<std::unique_ptr<BoundaryIntegralSolver>(
-  const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
-  const DiscretisationParameters& discretisation, const SolverParameters& solver)>;
+    const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
+    const DiscretisationParameters& discretisation, const SolverParameters& solver)>;
 
 class KernelRegistry {
 public:
@@ -35,8 +35,7 @@ public:
   /// kernels (and the closest one) if there is none by that name.
   std::unique_ptr<BoundaryIntegralSolver> create(const std::string& name,
                                                  const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
-                                                 CellSurfaces surfaces,
-                                                 const DiscretisationParameters& discretisation,
+                                                 CellSurfaces surfaces, const DiscretisationParameters& discretisation,
                                                  const SolverParameters& solver) const;
 
 private:

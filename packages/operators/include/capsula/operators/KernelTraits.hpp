@@ -33,26 +33,24 @@ template <class Kernel, class = void>
 struct HasSingleLayerTerm : std::false_type {};
 template <class Kernel>
 struct HasSingleLayerTerm<Kernel, std::void_t<decltype(Kernel::addSingleLayerTerm(
-                                    std::declval<const double*>(), std::declval<const double*>(),
-                                    std::declval<const double*>(), std::declval<double*>()))>>
-  : std::true_type {};
+                                      std::declval<const double*>(), std::declval<const double*>(),
+                                      std::declval<const double*>(), std::declval<double*>()))>> : std::true_type {};
 
 template <class Kernel, class = void>
 struct HasDoubleLayerTerm : std::false_type {};
 template <class Kernel>
-struct HasDoubleLayerTerm<Kernel, std::void_t<decltype(Kernel::addDoubleLayerTerm(
-                                    std::declval<const double*>(), std::declval<const double*>(),
-                                    std::declval<const double*>(), std::declval<const double*>(),
-                                    std::declval<double*>()))>>
-  : std::true_type {};
+struct HasDoubleLayerTerm<Kernel,
+                          std::void_t<decltype(Kernel::addDoubleLayerTerm(
+                              std::declval<const double*>(), std::declval<const double*>(),
+                              std::declval<const double*>(), std::declval<const double*>(), std::declval<double*>()))>>
+    : std::true_type {};
 
 template <class Kernel, class = void>
 struct HasDoubleLayerMatrix : std::false_type {};
 template <class Kernel>
 struct HasDoubleLayerMatrix<Kernel, std::void_t<decltype(Kernel::addDoubleLayerMatrix(
-                                      std::declval<const double*>(), std::declval<const double*>(),
-                                      std::declval<const double*>(), std::declval<double*>()))>>
-  : std::true_type {};
+                                        std::declval<const double*>(), std::declval<const double*>(),
+                                        std::declval<const double*>(), std::declval<double*>()))>> : std::true_type {};
 
 } // namespace detail
 
@@ -73,8 +71,7 @@ inline void addSingleLayerTerm(const double x[3], const double x0[3], const doub
 
 /// u_j += T_ijk(x, x0) v_i a_k, with a = n dS the weighted normal at x.
 template <class Kernel>
-inline void addDoubleLayerTerm(const double x[3], const double x0[3], const double v[3], const double a[3],
-                               double u[3])
+inline void addDoubleLayerTerm(const double x[3], const double x0[3], const double v[3], const double a[3], double u[3])
 {
   if constexpr (detail::HasDoubleLayerTerm<Kernel>::value) {
     Kernel::addDoubleLayerTerm(x, x0, v, a, u);
@@ -113,7 +110,7 @@ template <class Kernel>
 struct KernelTraits {
   static constexpr int maxImages = 0;
   /// Writes the image points of pole x0 to `images` and returns how many.
-  static int images(const double* /*x0*/, double (*/*images*/)[3]) { return 0; }
+  static int images(const double* /*x0*/, double (* /*images*/)[3]) { return 0; }
   /// Whether x0 lies in the fluid domain of the kernel (closure included).
   static bool inFluid(const double* /*x0*/) { return true; }
   /// Whether the kernel vanishes identically for the pole x0 (no near-singular treatment).

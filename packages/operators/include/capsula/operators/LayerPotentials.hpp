@@ -215,9 +215,9 @@ std::vector<NodeBlock> nodeBlocks(const CellRanges& cells, int firstTarget, int 
 
 template <class Kernel>
 LayerPotentials<Kernel>::LayerPotentials(const DiscretisationParameters& parameters)
-  : parameters_(parameters),
-    quadrature_(parameters.quadraturePoints),
-    gauss_(quadrature::gaussLegendre(parameters.singularQuadraturePoints, 0.0, 1.0))
+    : parameters_(parameters),
+      quadrature_(parameters.quadraturePoints),
+      gauss_(quadrature::gaussLegendre(parameters.singularQuadraturePoints, 0.0, 1.0))
 {
   validate(parameters_);
   for (int vertex = 0; vertex < 3; ++vertex) {
@@ -228,16 +228,14 @@ LayerPotentials<Kernel>::LayerPotentials(const DiscretisationParameters& paramet
 template <class Kernel>
 void LayerPotentials<Kernel>::setTopology(const CellSurfaces& surfaces, int firstTargetNode, int numTargetNodes)
 {
-  core::require<core::InputError>(firstTargetNode >= 0 && numTargetNodes >= 0
-                                    && firstTargetNode + numTargetNodes <= surfaces.numNodes(),
-                                  "The target nodes [", firstTargetNode, ", ",
-                                  firstTargetNode + numTargetNodes, ") are not nodes of the ",
-                                  surfaces.numNodes(), "-node scene.");
+  core::require<core::InputError>(firstTargetNode >= 0 && numTargetNodes >= 0 &&
+                                      firstTargetNode + numTargetNodes <= surfaces.numNodes(),
+                                  "The target nodes [", firstTargetNode, ", ", firstTargetNode + numTargetNodes,
+                                  ") are not nodes of the ", surfaces.numNodes(), "-node scene.");
   cells_.clear();
   for (int c = 0; c < surfaces.numCells(); ++c) {
     cells_.push_back({surfaces.nodeOffset(c), surfaces.nodeOffset(c) + surfaces.cell(c).numNodes(),
-                      surfaces.elementOffset(c),
-                      surfaces.elementOffset(c) + surfaces.cell(c).numElements()});
+                      surfaces.elementOffset(c), surfaces.elementOffset(c) + surfaces.cell(c).numElements()});
   }
   firstTarget_ = firstTargetNode;
   numTargets_ = numTargetNodes;
@@ -276,9 +274,8 @@ void LayerPotentials<Kernel>::setTopology(const CellSurfaces& surfaces, int firs
 template <class Kernel>
 void LayerPotentials<Kernel>::update(const CellSurfaces& surfaces)
 {
-  core::require(!cells_.empty() && surfaces.numCells() == static_cast<int>(cells_.size())
-                  && surfaces.numNodes() == cells_.back().endNode
-                  && surfaces.numElements() == cells_.back().endElement,
+  core::require(!cells_.empty() && surfaces.numCells() == static_cast<int>(cells_.size()) &&
+                    surfaces.numNodes() == cells_.back().endNode && surfaces.numElements() == cells_.back().endElement,
                 "LayerPotentials::update: call setTopology first, with the same surfaces.");
   quadrature_.update(surfaces);
   elementMaps_.clear();
@@ -289,9 +286,8 @@ void LayerPotentials<Kernel>::update(const CellSurfaces& surfaces)
   const double* positions = quadrature_.nodePositions().data();
   for (int g = 0; g < surfaces.numNodes(); ++g) {
     core::require<core::InputError>(KernelTraits<Kernel>::inFluid(positions + 3 * g), "Node ", g,
-                                    " of the scene lies outside the fluid domain of the ",
-                                    Kernel::name, " kernel (at ", positions[3 * g], ", ",
-                                    positions[3 * g + 1], ", ", positions[3 * g + 2], ").");
+                                    " of the scene lies outside the fluid domain of the ", Kernel::name, " kernel (at ",
+                                    positions[3 * g], ", ", positions[3 * g + 1], ", ", positions[3 * g + 2], ").");
   }
   hasDoubleCorrections_ = false;
   corrections_.clear();
@@ -395,7 +391,7 @@ typename Integrand::Value LayerPotentials<Kernel>::nearCorrection(int m, const I
   const int numPoles = 1 + KernelTraits<Kernel>::images(integrand.x0, poles + 1);
   auto value = AdaptiveElementQuadrature<Integrand>(element, integrand, quadrature_.rule(),
                                                     parameters_.nearSingularTolerance, poles, numPoles)
-                 .integrate();
+                   .integrate();
   const auto regular = regularRule(m, integrand);
   for (int c = 0; c < Integrand::size; ++c) {
     value[c] -= regular[c];
@@ -405,8 +401,7 @@ typename Integrand::Value LayerPotentials<Kernel>::nearCorrection(int m, const I
 
 template <class Kernel>
 template <class Integrand>
-typename Integrand::Value LayerPotentials<Kernel>::singularCorrection(int m, int localNode,
-                                                                      const Integrand& integrand,
+typename Integrand::Value LayerPotentials<Kernel>::singularCorrection(int m, int localNode, const Integrand& integrand,
                                                                       ParametricRule& rule) const
 {
   const ElementMap& element = elementMaps_[m];
@@ -669,7 +664,7 @@ template <class Kernel>
 DoubleLayerSources LayerPotentials<Kernel>::doubleLayerSources() const
 {
   const QuadraturePoints& p = quadrature_.points();
-  return {p.x.data(),  p.y.data(),  p.z.data(),  p.nx.data(), p.ny.data(),
+  return {p.x.data(),  p.y.data(), p.z.data(), p.nx.data(), p.ny.data(),
           p.nz.data(), vx_.data(), vy_.data(), vz_.data()};
 }
 
@@ -724,8 +719,7 @@ void LayerPotentials<Kernel>::singleLayerAtNodes(const LoadDensity& load, double
 }
 
 template <class Kernel>
-void LayerPotentials<Kernel>::doubleLayerAtNodes(const double* density, DoubleLayerForm form,
-                                                 double* result)
+void LayerPotentials<Kernel>::doubleLayerAtNodes(const double* density, DoubleLayerForm form, double* result)
 {
   prepareDoubleLayerCorrections();
   buildDoubleLayerSources(density);
@@ -781,8 +775,7 @@ void LayerPotentials<Kernel>::doubleLayerAtNodes(const double* density, DoubleLa
 }
 
 template <class Kernel>
-void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, const LoadDensity& load,
-                                                  double* result)
+void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, const LoadDensity& load, double* result)
 {
   buildSingleLayerSources(load);
   const SingleLayerSources sources = singleLayerSources();
@@ -813,8 +806,7 @@ void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, c
 }
 
 template <class Kernel>
-void LayerPotentials<Kernel>::doubleLayerAtPoints(const double* points, int n, const double* density,
-                                                  double* result)
+void LayerPotentials<Kernel>::doubleLayerAtPoints(const double* points, int n, const double* density, double* result)
 {
   buildDoubleLayerSources(density);
   const DoubleLayerSources sources = doubleLayerSources();

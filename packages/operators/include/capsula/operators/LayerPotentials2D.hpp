@@ -72,7 +72,7 @@ namespace capsula::operators {
 template <class Kernel>
 struct KernelImages2D {
   static constexpr int count = 0;
-  static void images(const double* /*x0*/, double (*/*image*/)[2]) {}
+  static void images(const double* /*x0*/, double (* /*image*/)[2]) {}
   static bool inFluid(const double* /*x0*/) { return true; }
 };
 
@@ -236,10 +236,9 @@ private:
   static constexpr int gaussStride = 5;
 
   // Pieces of segment k for a pole x0 (images `image`); whole segment when far.
-  void pieces(int k, const double* x0, bool poleAtStart, bool poleAtEnd,
+  void pieces(int k, const double* x0, bool poleAtStart, bool poleAtEnd, std::vector<SegmentPiece2D>& out) const;
+  void bisect(int k, const double* x0, const double (*image)[2], int numImages, SegmentPiece2D piece, int level,
               std::vector<SegmentPiece2D>& out) const;
-  void bisect(int k, const double* x0, const double (*image)[2], int numImages, SegmentPiece2D piece,
-              int level, std::vector<SegmentPiece2D>& out) const;
   bool isNear(const double* x0, const double (*image)[2], int numImages, const SegmentPiece2D& piece) const;
   // |m - a| + |b - m|: the length that scales the reach (sqrt of squares: std::hypot's
   // overflow care is not needed for O(1) coordinates and cost 2% of the right-hand side).
@@ -261,12 +260,12 @@ private:
   ContourDiscretisation2D parameters_;
   quadrature::Rule1D gauss_;
   quadrature::Rule1D logRule_;
-  std::vector<int> mirror_;        // gauss_.points[mirror_[q]] = 1 - gauss_.points[q]
-  std::vector<double> logGauss_;   // ln gauss_.points[q]
+  std::vector<int> mirror_;      // gauss_.points[mirror_[q]] = 1 - gauss_.points[q]
+  std::vector<double> logGauss_; // ln gauss_.points[q]
   std::optional<contour::Contour> contour_;
   std::optional<ContourQuadrature2D> quadrature_;
-  std::vector<double> nodes_;      // 2 per node
-  std::vector<double> midpoints_;  // 2 per segment: the spline at t = 1/2
+  std::vector<double> nodes_;     // 2 per node
+  std::vector<double> midpoints_; // 2 per segment: the spline at t = 1/2
   int firstTarget_ = 0;
   int numTargets_ = 0;
 
@@ -293,7 +292,7 @@ private:
   mutable std::vector<CachedPiece> pieceCache_;
   static constexpr int treeLevels = 5;
   static constexpr std::size_t treeSize = std::size_t{2} << treeLevels; // slots 1 .. 2^(levels+1) - 1
-  mutable std::vector<int> pieceTree_;                                   // -1: not cached
+  mutable std::vector<int> pieceTree_;                                  // -1: not cached
   mutable std::unordered_map<std::uint64_t, int> pieceIndex_;
   mutable std::vector<double> pieceGauss_;
   mutable unsigned densityCall_ = 0;
@@ -353,8 +352,8 @@ void LayerPotentials2D<Kernel>::update(const contour::Contour& contour, int firs
                                   ") are not nodes of the ", n, "-node contour.");
   for (int i = 0; i < n; ++i) {
     const double x[2] = {contour.nodes()(0, i), contour.nodes()(1, i)};
-    core::require<core::InputError>(KernelImages2D<Kernel>::inFluid(x), "Node ", i, " of the contour at (",
-                                    x[0], ", ", x[1], ") lies outside the fluid of the ", Kernel::name,
+    core::require<core::InputError>(KernelImages2D<Kernel>::inFluid(x), "Node ", i, " of the contour at (", x[0], ", ",
+                                    x[1], ") lies outside the fluid of the ", Kernel::name,
                                     " kernel: the cell has touched the wall.");
   }
   contour_.emplace(contour);
@@ -437,8 +436,8 @@ void LayerPotentials2D<Kernel>::classifyPairs()
       segmentReach2_[static_cast<std::size_t>(k)] = piece.reach2;
     }
     // The images are the mirror images below the wall (KernelImages2D<Wall2D>).
-    markNearSegments2D(segmentEnds_.data(), segmentReach2_.data(), n, targetX_.data(), targetY_.data(),
-                       paddedTargets_, KernelImages2D<Kernel>::count == 1, regularMask_.data());
+    markNearSegments2D(segmentEnds_.data(), segmentReach2_.data(), n, targetX_.data(), targetY_.data(), paddedTargets_,
+                       KernelImages2D<Kernel>::count == 1, regularMask_.data());
   }
   // The two segments ending at the target take the log-singular rule.
   for (int t = 0; t < numTargets_; ++t) {
@@ -487,8 +486,8 @@ int LayerPotentials2D<Kernel>::cachedPiece(int k, int level, int index) const
   if (level <= treeLevels) {
     slot = &pieceTree_[static_cast<std::size_t>(k) * treeSize + (1u << level) + static_cast<unsigned>(index)];
   } else {
-    const std::uint64_t key = (static_cast<std::uint64_t>(k) << 32) |
-                              (static_cast<std::uint64_t>(level) << 24) | static_cast<std::uint64_t>(index);
+    const std::uint64_t key = (static_cast<std::uint64_t>(k) << 32) | (static_cast<std::uint64_t>(level) << 24) |
+                              static_cast<std::uint64_t>(index);
     slot = &pieceIndex_.try_emplace(key, -1).first->second;
   }
   if (*slot < 0) {
@@ -533,8 +532,7 @@ bool LayerPotentials2D<Kernel>::isNear(const double* x0, const double (*image)[2
 
 template <class Kernel>
 void LayerPotentials2D<Kernel>::bisect(int k, const double* x0, const double (*image)[2], int numImages,
-                                       SegmentPiece2D piece, int level,
-                                       std::vector<SegmentPiece2D>& out) const
+                                       SegmentPiece2D piece, int level, std::vector<SegmentPiece2D>& out) const
 {
   piece.slot = cachedPiece(k, piece.level, piece.index);
   if (level >= parameters_.nearSingularLevels || !isNear(x0, image, numImages, piece)) {
@@ -542,10 +540,10 @@ void LayerPotentials2D<Kernel>::bisect(int k, const double* x0, const double (*i
     return;
   }
   const double middle = 0.5 * (piece.ta + piece.tb);
-  bisect(k, x0, image, numImages,
-         {piece.ta, middle, piece.poleAtStart, false, piece.level + 1, 2 * piece.index}, level + 1, out);
-  bisect(k, x0, image, numImages,
-         {middle, piece.tb, false, piece.poleAtEnd, piece.level + 1, 2 * piece.index + 1}, level + 1, out);
+  bisect(k, x0, image, numImages, {piece.ta, middle, piece.poleAtStart, false, piece.level + 1, 2 * piece.index},
+         level + 1, out);
+  bisect(k, x0, image, numImages, {middle, piece.tb, false, piece.poleAtEnd, piece.level + 1, 2 * piece.index + 1},
+         level + 1, out);
 }
 
 template <class Kernel>
@@ -565,8 +563,7 @@ void LayerPotentials2D<Kernel>::pieces(int k, const double* x0, bool poleAtStart
 
 template <class Kernel>
 template <class Density>
-const double* LayerPotentials2D<Kernel>::pieceGauss(int k, const SegmentPiece2D& piece,
-                                                    const Density& density) const
+const double* LayerPotentials2D<Kernel>::pieceGauss(int k, const SegmentPiece2D& piece, const Density& density) const
 {
   const int perSegment = static_cast<int>(gauss_.points.size());
   CachedPiece& c = pieceCache_[static_cast<std::size_t>(piece.slot)];
@@ -600,8 +597,8 @@ namespace detail2d {
 
 /// Calls visit(point, t, dl) at the Gauss points of piece [ta, tb] of segment k.
 template <class Visit>
-inline void visitGaussPiece(const contour::Contour& contour, const quadrature::Rule1D& rule, int k,
-                            double ta, double tb, Visit&& visit)
+inline void visitGaussPiece(const contour::Contour& contour, const quadrature::Rule1D& rule, int k, double ta,
+                            double tb, Visit&& visit)
 {
   const std::vector<double>& s = contour.parameters();
   const double span = (s[static_cast<std::size_t>(k) + 1] - s[static_cast<std::size_t>(k)]) * (tb - ta);
@@ -824,7 +821,6 @@ void LayerPotentials2D<Kernel>::singleLayerAtNodesReference(const Density& densi
   subdivided_ = subdivided;
 }
 
-
 template <class Kernel>
 void LayerPotentials2D<Kernel>::buildDoubleLayerWeights()
 {
@@ -845,8 +841,8 @@ void LayerPotentials2D<Kernel>::buildDoubleLayerWeights()
     splineBasis(quad.parameterOf(p), span(quad.segmentOf(p)), &basis[4 * static_cast<std::size_t>(p)]);
   }
   RegularSums2DOf<Kernel>::addDoubleLayerCoefficients(pointX_.data(), pointY_.data(), ax.data(), ay.data(),
-                                                      basis.data(), perSegment, n, targetX_.data(),
-                                                      targetY_.data(), regularMask_.data(), doubleLayer_);
+                                                      basis.data(), perSegment, n, targetX_.data(), targetY_.data(),
+                                                      regularMask_.data(), doubleLayer_);
 
   // The pairs treated apart (mask 0): the segments ending at the target (the kernel is
   // bounded there, so they take the plain rule unless an image is near) and the bisected
@@ -860,14 +856,13 @@ void LayerPotentials2D<Kernel>::buildDoubleLayerWeights()
       pieces(k, x0, k == m, (k + 1) % n == m, split_);
       subdivided += split_.size() > 1 ? 1 : 0;
       for (const SegmentPiece2D& piece : split_) {
-        detail2d::visitGaussPiece(c, gauss_, k, piece.ta, piece.tb,
-                                  [&](const contour::ContourPoint& point, double tp, double dl) {
-                                    double W[4];
-                                    RegularSums2DOf<Kernel>::doubleLayerWeight(
-                                      point.position.x(), point.position.y(), point.normal.x() * dl,
-                                      point.normal.y() * dl, x0[0], x0[1], W);
-                                    doubleLayer_.addPoint(t, k, tp, span(k), W);
-                                  });
+        detail2d::visitGaussPiece(
+            c, gauss_, k, piece.ta, piece.tb, [&](const contour::ContourPoint& point, double tp, double dl) {
+              double W[4];
+              RegularSums2DOf<Kernel>::doubleLayerWeight(point.position.x(), point.position.y(), point.normal.x() * dl,
+                                                         point.normal.y() * dl, x0[0], x0[1], W);
+              doubleLayer_.addPoint(t, k, tp, span(k), W);
+            });
       }
     }
   }
@@ -876,22 +871,20 @@ void LayerPotentials2D<Kernel>::buildDoubleLayerWeights()
 }
 
 template <class Kernel>
-void LayerPotentials2D<Kernel>::doubleLayerAtNodes(const double* nodalDensity, DoubleLayerForm form,
-                                                   double* result)
+void LayerPotentials2D<Kernel>::doubleLayerAtNodes(const double* nodalDensity, DoubleLayerForm form, double* result)
 {
   if (!hasDoubleWeights_) {
     Teuchos::TimeMonitor guard(*doubleWeightsTimer_);
     buildDoubleLayerWeights();
   }
   Teuchos::TimeMonitor guard(*doubleApplyTimer_);
-  doubleLayer_.apply(*contour_, nodalDensity, form == DoubleLayerForm::Subtracted, firstTarget_, numTargets_,
-                     result);
+  doubleLayer_.apply(*contour_, nodalDensity, form == DoubleLayerForm::Subtracted, firstTarget_, numTargets_, result);
 }
 
 template <class Kernel>
 template <class Density>
-void LayerPotentials2D<Kernel>::singleLayerAtPoints(const double* points, int numberOfPoints,
-                                                    const Density& density, double* result) const
+void LayerPotentials2D<Kernel>::singleLayerAtPoints(const double* points, int numberOfPoints, const Density& density,
+                                                    double* result) const
 {
   const contour::Contour& c = *contour_;
   std::vector<SegmentPiece2D> split;

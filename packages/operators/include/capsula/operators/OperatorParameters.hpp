@@ -29,7 +29,7 @@ struct SolverParameters {
   /// On ||b - A u|| / ||b||. This struct default is the tight value the unit tests and the
   /// 2D contour use; the 3D deck declares kSurfaceSolverTolerance instead.
   double tolerance = 1e-10;
-  int restart = 50;         ///< Krylov vectors kept between restarts (Belos "Num Blocks")
+  int restart = 50; ///< Krylov vectors kept between restarts (Belos "Num Blocks")
   int maximumIterations = 300;
   /// Start each solve of a time integration from the last solutions (WarmStartHistory.hpp;
   /// scene::Scene keeps the history and its checkpoint carries it). The 3D deck's

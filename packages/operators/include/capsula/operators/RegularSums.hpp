@@ -14,8 +14,8 @@
 
 #include <algorithm>
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) \
-  && (__GNUC__ >= 11) && !defined(CAPSULA_NO_KERNEL_CLONES)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && (__GNUC__ >= 11) &&       \
+    !defined(CAPSULA_NO_KERNEL_CLONES)
 #define CAPSULA_KERNEL_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #else
 #define CAPSULA_KERNEL_CLONES
@@ -82,8 +82,7 @@ struct DoubleLayerSources {
 
 /// u_t,j += sum_{q in [begin, end)} G_ij(x_q, x_t) f_q,i for every target t of the block.
 template <class Kernel>
-CAPSULA_KERNEL_CLONES void addSingleLayerSums(TargetBlock& block, const SingleLayerSources& s, int begin,
-                                              int end)
+CAPSULA_KERNEL_CLONES void addSingleLayerSums(TargetBlock& block, const SingleLayerSources& s, int begin, int end)
 {
   const int n = block.paddedSize;
   for (int q = begin; q < end; ++q) {
@@ -103,8 +102,7 @@ CAPSULA_KERNEL_CLONES void addSingleLayerSums(TargetBlock& block, const SingleLa
 /// u_t,j += sum_q T_ijk(x_q, x_t) (v_q - s_t)_i a_q,k, with s_t the block's subtracted
 /// density if SubtractTargetDensity (the singularity subtraction of eq 3.44), else 0.
 template <class Kernel, bool SubtractTargetDensity>
-CAPSULA_KERNEL_CLONES void addDoubleLayerSums(TargetBlock& block, const DoubleLayerSources& s, int begin,
-                                              int end)
+CAPSULA_KERNEL_CLONES void addDoubleLayerSums(TargetBlock& block, const DoubleLayerSources& s, int begin, int end)
 {
   const int n = block.paddedSize;
   for (int q = begin; q < end; ++q) {
@@ -129,8 +127,7 @@ CAPSULA_KERNEL_CLONES void addDoubleLayerSums(TargetBlock& block, const DoubleLa
 }
 
 /// ux_t += sum_q (x_q - x_t) . a_q / |x_q - x_t|^3: the solid angle of the elements.
-void addSolidAngleSums(TargetBlock& block, const double* x, const double* y,
-                                             const double* z, const double* ax, const double* ay,
-                                             const double* az, int begin, int end);
+void addSolidAngleSums(TargetBlock& block, const double* x, const double* y, const double* z, const double* ax,
+                       const double* ay, const double* az, int begin, int end);
 
 } // namespace capsula::operators

@@ -22,8 +22,8 @@
 namespace capsula::operators {
 
 /// u_j += G^FS_ij(x, x0) f_i (eq A.8): G = -delta ln r + xh xh / r^2, xh = x - x0.
-inline void addFreeSpaceStokesletPair2D(double x, double y, double fx, double fy, double x0, double y0,
-                                        double& ux, double& uy)
+inline void addFreeSpaceStokesletPair2D(double x, double y, double fx, double fy, double x0, double y0, double& ux,
+                                        double& uy)
 {
   const double d0 = x - x0, d1 = y - y0;
   const double r2 = d0 * d0 + d1 * d1;
@@ -63,14 +63,12 @@ inline void addWallStokesletPair2D(double x, double y, double fx, double fy, dou
   const double twoHy = twoH * y;
   const double twoXfR4 = 2.0 * XfR2 * invR2;
   ux += logRoverR * fx + xf * d0 - XfR2 * d0 - twoHy * (fx * invR2 - twoXfR4 * d0) + twoH * fy * d0 * invR2;
-  uy += logRoverR * fy + xf * d1 - XfR2 * X1 + twoHy * (fy * invR2 - twoXfR4 * X1)
-        + twoH * (Xf - fy * X1) * invR2;
+  uy += logRoverR * fy + xf * d1 - XfR2 * X1 + twoHy * (fy * invR2 - twoXfR4 * X1) + twoH * (Xf - fy * X1) * invR2;
 }
 
 /// W_ij = T^FS_ijk(x, x0) a_k = -4 xh_i xh_j (xh . a) / r^4 (eq A.9), [2 i + j]: the double-layer
 /// weight of one point with a = n dl (SplineDoubleLayer2D.hpp).
-inline void freeSpaceDoubleLayerWeight2D(double x, double y, double a0, double a1, double x0, double y0,
-                                         double W[4])
+inline void freeSpaceDoubleLayerWeight2D(double x, double y, double a0, double a1, double x0, double y0, double W[4])
 {
   const double d0 = x - x0, d1 = y - y0;
   const double r2 = d0 * d0 + d1 * d1;
@@ -103,8 +101,8 @@ inline void wallDoubleLayerWeight2D(double x, double y, double a0, double a1, do
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
       const double s4 = j == 1 ? -4.0 : 4.0;
-      const double dipole = s4 * (-(a[i] * X[j] + (i == j ? Xa : 0.0) + a[j] * X[i]) * invR4
-                                  + 4.0 * X[i] * X[j] * Xa * invR4 * invR2);
+      const double dipole =
+          s4 * (-(a[i] * X[j] + (i == j ? Xa : 0.0) + a[j] * X[i]) * invR4 + 4.0 * X[i] * X[j] * Xa * invR4 * invR2);
       const double doublet = X1 * dipole + s4 * (a[i] * X[j] * X1 - (j == 1 ? X[i] * Xa : 0.0)) * invR4;
       W[2 * i + j] = free * xh[i] * xh[j] + image * X[i] * X[j] + 2.0 * h * h * dipole - 2.0 * h * doublet;
     }
@@ -128,8 +126,8 @@ void addFreeSpaceStokesletSums2D(const double* px, const double* py, const doubl
 /// pairs of the near-singular pieces, gathered so that they vectorise too).
 void wallStokesletPairs2D(const double* x, const double* y, const double* fx, const double* fy, const double* x0,
                           const double* y0, int count, double* ux, double* uy);
-void freeSpaceStokesletPairs2D(const double* x, const double* y, const double* fx, const double* fy,
-                               const double* x0, const double* y0, int count, double* ux, double* uy);
+void freeSpaceStokesletPairs2D(const double* x, const double* y, const double* fx, const double* fy, const double* x0,
+                               const double* y0, int count, double* ux, double* uy);
 
 /// The near-singular test of whole segments for every target at once: mask[k paddedTargets
 /// + t] = 0 where target t, or its mirror image (t_x, -t_y) when `withImage`, is nearer

@@ -34,8 +34,8 @@ public:
   /// `map` holds `unknownsPerNode` unknowns per node, whole nodes per rank. densityScale:
   /// one factor per node of the whole problem, or empty for none; rowScale: one factor per
   /// owned node.
-  SecondKindOperator(Teuchos::RCP<const Map> map, DoubleLayerRows doubleLayer,
-                     std::vector<double> densityScale, std::vector<double> rowScale, int unknownsPerNode = 3);
+  SecondKindOperator(Teuchos::RCP<const Map> map, DoubleLayerRows doubleLayer, std::vector<double> densityScale,
+                     std::vector<double> rowScale, int unknownsPerNode = 3);
 
   Teuchos::RCP<const Map> getDomainMap() const override { return map_; }
   Teuchos::RCP<const Map> getRangeMap() const override { return map_; }
@@ -43,8 +43,8 @@ public:
 
   /// Y = alpha A X + beta Y (beta = 0 ignores what Y held). Throws std::invalid_argument
   /// for a transpose: A is not symmetric and has no cheap transpose.
-  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
-             double alpha = 1.0, double beta = 0.0) const override;
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS, double alpha = 1.0,
+             double beta = 0.0) const override;
 
   /// Applications of A so far (each one double-layer evaluation).
   int applications() const { return applications_; }

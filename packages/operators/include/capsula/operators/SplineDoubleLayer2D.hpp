@@ -78,12 +78,10 @@ private:
 /// with mask[k paddedTargets + t] = 1, adds W = T(x_p, x_t) a_p times the basis to the
 /// coefficients of knots k and layer.rightKnot(k), and W to the sums.
 void addWallDoubleLayerCoefficients2D(const double* px, const double* py, const double* ax, const double* ay,
-                                      const double* basis, int pointsPerSegment, int numSegments,
-                                      const double* tx, const double* ty, const double* mask,
-                                      SplineDoubleLayer2D& layer);
-void addFreeSpaceDoubleLayerCoefficients2D(const double* px, const double* py, const double* ax,
-                                           const double* ay, const double* basis, int pointsPerSegment,
-                                           int numSegments, const double* tx, const double* ty,
-                                           const double* mask, SplineDoubleLayer2D& layer);
+                                      const double* basis, int pointsPerSegment, int numSegments, const double* tx,
+                                      const double* ty, const double* mask, SplineDoubleLayer2D& layer);
+void addFreeSpaceDoubleLayerCoefficients2D(const double* px, const double* py, const double* ax, const double* ay,
+                                           const double* basis, int pointsPerSegment, int numSegments, const double* tx,
+                                           const double* ty, const double* mask, SplineDoubleLayer2D& layer);
 
 } // namespace capsula::operators

@@ -35,8 +35,8 @@ public:
 
   /// Y = alpha W X + beta Y (beta = 0 ignores what Y held). Throws std::invalid_argument
   /// for a transpose: J~ has no cheap transpose.
-  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
-             double alpha = 1.0, double beta = 0.0) const override;
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS, double alpha = 1.0,
+             double beta = 0.0) const override;
 
   /// Applications of J~ so far.
   long long applications() const { return applications_; }

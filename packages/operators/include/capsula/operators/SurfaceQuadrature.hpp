@@ -25,9 +25,9 @@ struct QuadraturePoints {
 
 /// Per-element data (structure of arrays where the near-singular test reads it).
 struct ElementData {
-  std::vector<double> cx, cy, cz;           ///< centre of the bounding sphere (node mean)
-  std::vector<double> radius;               ///< bounding-sphere radius
-  std::vector<double> size;                 ///< longest vertex-to-vertex edge
+  std::vector<double> cx, cy, cz; ///< centre of the bounding sphere (node mean)
+  std::vector<double> radius;     ///< bounding-sphere radius
+  std::vector<double> size;       ///< longest vertex-to-vertex edge
   std::vector<double> area;
   std::vector<mesh::ShapeParameters> shape; ///< alpha, beta, gamma of the current nodes (eq 3.17)
   std::vector<std::array<int, 6>> nodes;    ///< global node numbers

@@ -19,16 +19,15 @@
 namespace capsula::operators {
 
 struct WallShearStress {
-  std::vector<double> dudy; ///< du/dy at each wall point
-  std::vector<double> dwdy; ///< dw/dy at each wall point
+  std::vector<double> dudy;      ///< du/dy at each wall point
+  std::vector<double> dwdy;      ///< dw/dy at each wall point
   std::vector<double> magnitude; ///< sqrt(dudy^2 + dwdy^2), eq 3.63
 };
 
 /// The wall shear stress at the wall points (x, z) (2 numbers each) for the current
 /// geometry, loads and node velocities of `solver`; `step` is h above. Collective.
 /// Throws core::InputError unless step > 0.
-WallShearStress wallShearStress(BoundaryIntegralSolver& solver, const std::vector<double>& wallPoints,
-                                double step, const LoadDensity& load, const double* nodeVelocities,
-                                const FlowConditions& flow);
+WallShearStress wallShearStress(BoundaryIntegralSolver& solver, const std::vector<double>& wallPoints, double step,
+                                const LoadDensity& load, const double* nodeVelocities, const FlowConditions& flow);
 
 } // namespace capsula::operators

@@ -12,9 +12,8 @@ namespace capsula::run {
 class IntegrationStateSection final : public io::CheckpointSection {
 public:
   IntegrationStateSection(timeint::IntegrationState& state, std::string prefix)
-    : state_(state), prefix_(std::move(prefix))
-  {
-  }
+      : state_(state), prefix_(std::move(prefix))
+  {}
 
   void save(io::Checkpoint& checkpoint) const override;
   void load(const io::Checkpoint& checkpoint, const std::string& source) override;

@@ -17,20 +17,20 @@ namespace capsula::run {
 struct CellSample {
   scene::CellShape shape;
   scene::MembraneStress stress;
-  mesh::Vec3 splineVelocity = mesh::Vec3::Zero();   ///< dx_c/dt from the cubic spline in time
-  mesh::Vec3 instantVelocity = mesh::Vec3::Zero();  ///< dx_c/dt from the surface velocity
+  mesh::Vec3 splineVelocity = mesh::Vec3::Zero();  ///< dx_c/dt from the cubic spline in time
+  mesh::Vec3 instantVelocity = mesh::Vec3::Zero(); ///< dx_c/dt from the surface velocity
   /// dx_c/dt from the boundary-integral velocity before any constraint: for a cell held at
   /// a fixed height, its y-component is the migration velocity the constraint removes
   /// (thesis Fig 5.14); for a free cell it equals instantVelocity.
   mesh::Vec3 unconstrainedVelocity = mesh::Vec3::Zero();
-  mesh::Vec3 rotation = mesh::Vec3::Zero();         ///< rigid-body fit Omega
-  double shapeChangeRate = 0.0;  ///< RMS over nodes of (u_i - dx_c/dt) . n_i
-  double volumeChange = 0.0;     ///< V / V(0) - 1
-  double areaChange = 0.0;       ///< S / S(0) - 1
-  double meanStressIncrease = 0.0;      ///< mean sigma_SS - its value at t = 0 (eq 3.58)
+  mesh::Vec3 rotation = mesh::Vec3::Zero(); ///< rigid-body fit Omega
+  double shapeChangeRate = 0.0;             ///< RMS over nodes of (u_i - dx_c/dt) . n_i
+  double volumeChange = 0.0;                ///< V / V(0) - 1
+  double areaChange = 0.0;                  ///< S / S(0) - 1
+  double meanStressIncrease = 0.0;          ///< mean sigma_SS - its value at t = 0 (eq 3.58)
   double maximumStressIncrease = 0.0;
   int gmresIterations = 0;
-  scene::CellStability stability;       ///< mesh quality, compression, wall gap (CellStability.hpp)
+  scene::CellStability stability; ///< mesh quality, compression, wall gap (CellStability.hpp)
 
   /// u_slip = k y_c - dx_c/dt (eq 3.55, k = 1), and u_migr = dy_c/dt, from the spline.
   double slipVelocity() const { return shape.centroid[1] - splineVelocity[0]; }
@@ -56,7 +56,7 @@ public:
 private:
   int numCells_;
   std::vector<double> times_;
-  std::vector<std::vector<double>> centroids_;   // per cell: x, y, z per output
+  std::vector<std::vector<double>> centroids_; // per cell: x, y, z per output
   std::vector<double> initialVolume_, initialArea_, initialMeanStress_, initialMaximumStress_;
 };
 

@@ -79,9 +79,9 @@ private:
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::string directory_;
   std::optional<std::string> restartDirectory_;
-  std::optional<io::OutputDirectory> output_;      // rank 0
-  std::map<std::string, io::MetricsCsv> tables_;   // rank 0
-  std::map<std::string, io::SnapshotSeries> series_;   // rank 0
+  std::optional<io::OutputDirectory> output_;        // rank 0
+  std::map<std::string, io::MetricsCsv> tables_;     // rank 0
+  std::map<std::string, io::SnapshotSeries> series_; // rank 0
 };
 
 } // namespace capsula::run

@@ -68,8 +68,8 @@ private:
   const timeint::IntegrationState& state_;
   std::ostream& log_;
   std::unique_ptr<scene::Scene> scene_;
-  std::int64_t regularisations_ = 0;   // node redistributions of a cell, over the whole run
-  std::int64_t adaptions_ = 0;         // mesh refinements of a cell, over the whole run
+  std::int64_t regularisations_ = 0; // node redistributions of a cell, over the whole run
+  std::int64_t adaptions_ = 0;       // mesh refinements of a cell, over the whole run
 };
 
 } // namespace capsula::run

@@ -19,7 +19,7 @@ struct WallShearStressOutput {
   bool enabled = false;
   double upstream = 0.0, downstream = 0.0, halfWidth = 0.0, spacing = 1.0;
   double threshold = 1.05;
-  bool isolatedRange = false;        ///< 'Isolated range' given: compare with it
+  bool isolatedRange = false; ///< 'Isolated range' given: compare with it
   double isolatedMinimum = 0.0, isolatedMaximum = 0.0;
 };
 
@@ -32,7 +32,7 @@ struct SceneOutputSettings {
   int progressSteps = 20;
   std::vector<mesh::Vec3> flowProbes;
   WallShearStressOutput wallShearStress;
-  double minimumAngle = 5.0;         ///< 'Output/Stability/Minimum angle', degrees (0: no bound)
+  double minimumAngle = 5.0; ///< 'Output/Stability/Minimum angle', degrees (0: no bound)
 };
 
 /// Declares the "Output" sublist.

@@ -74,8 +74,7 @@ public:
 
 private:
   struct WallSample;
-  std::optional<WallSample> sampleWallStress(const timeint::IntegrationState& state,
-                                             const scene::SceneFields& fields,
+  std::optional<WallSample> sampleWallStress(const timeint::IntegrationState& state, const scene::SceneFields& fields,
                                              const std::vector<CellSample>& samples);
   std::string recordSamples(double t, const std::vector<CellSample>& samples);
   io::Checkpoint checkpoint(const timeint::IntegrationState& state) const;
@@ -95,8 +94,8 @@ private:
   std::vector<CellSample> lastSamples_, steadySamples_;
   std::vector<PairSample> lastPairs_, steadyPairs_;
   double maxVolumeDrift_ = 0.0;
-  double smallestAngle_ = HUGE_VAL;          // extremes of the stability diagnostics over
-  double largestEdgeRatio_ = 1.0;            // the outputs of this process
+  double smallestAngle_ = HUGE_VAL; // extremes of the stability diagnostics over
+  double largestEdgeRatio_ = 1.0;   // the outputs of this process
   double mostCompressiveTension_ = HUGE_VAL;
   double smallestWallGap_ = HUGE_VAL;
   std::optional<ElevatedStressAreas> lastWallAreas_;

@@ -41,7 +41,7 @@
 // step-size collapse below 'Time integration/Minimum step', a cell reaching the wall, a
 // degraded mesh, a GMRES breakdown) is rethrown after summary.json records it; the last
 // checkpoint and outputs stay.
-#include "capsula/run/MetricsTable.hpp"   // metricsColumns(): the layout of metrics.csv
+#include "capsula/run/MetricsTable.hpp" // metricsColumns(): the layout of metrics.csv
 
 #include <capsula/operators/KernelRegistry.hpp>
 
@@ -57,24 +57,23 @@
 namespace capsula::run {
 
 struct SceneRunOptions {
-  std::string application = "cell3d";     ///< named in run.json and summary.json
-  std::string deckSource;                  ///< the deck file, for the record
+  std::string application = "cell3d";          ///< named in run.json and summary.json
+  std::string deckSource;                      ///< the deck file, for the record
   std::optional<std::string> outputDirectory;  ///< overrides 'Output/Directory'
   std::optional<std::string> restartDirectory; ///< continue from its checkpoint.h5
-  std::ostream* log = nullptr;             ///< progress (rank 0), or nothing
+  std::ostream* log = nullptr;                 ///< progress (rank 0), or nothing
 };
 
 struct SceneRunResult {
-  std::string status;            ///< "finished" (end time), "steady" or "too close" (two cells met)
-  double time = 0.0;             ///< where the run stopped
+  std::string status; ///< "finished" (end time), "steady" or "too close" (two cells met)
+  double time = 0.0;  ///< where the run stopped
   std::int64_t acceptedSteps = 0;
   std::string outputDirectory;
-  std::vector<std::string> terms;   ///< physics and output terms built
+  std::vector<std::string> terms; ///< physics and output terms built
 };
 
 /// Runs the scene `validatedDeck` describes. Collective over `comm`.
-SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck,
-                        const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
                         const SceneRunOptions& options, const operators::KernelRegistry& kernels);
 
 } // namespace capsula::run

@@ -37,10 +37,10 @@
 namespace capsula::run {
 
 struct OutputSettings2D {
-  std::string directory;       ///< empty: write nothing
-  double interval = 0.1;       ///< tau between metrics rows
-  int snapshotEvery = 10;      ///< outputs between contour snapshots (0: none)
-  int checkpointEvery = 10;    ///< outputs between checkpoints (0: only at the end)
+  std::string directory;    ///< empty: write nothing
+  double interval = 0.1;    ///< tau between metrics rows
+  int snapshotEvery = 10;   ///< outputs between contour snapshots (0: none)
+  int checkpointEvery = 10; ///< outputs between checkpoints (0: only at the end)
 };
 
 /// Declares Directory, Interval, Snapshot every and Checkpoint every in `output`.
@@ -62,7 +62,7 @@ struct TetherRunResult2D {
   double timeOfMaxTetherForceAfterTransient = 0.0;
   double maxContourLengthRatio = 0.0; ///< idem
   double maxCellLength = 0.0;         ///< idem
-  double maxAbsAreaDrift = 0.0; ///< over all outputs, both stages
+  double maxAbsAreaDrift = 0.0;       ///< over all outputs, both stages
 };
 
 class TetherOutputs2D final : public timeint::IntegrationObserver, public io::CheckpointSection {
@@ -114,11 +114,11 @@ private:
   std::ostream* log_;
   std::vector<const io::CheckpointSection*> checkpointSections_;
   TetherRunResult2D result_;
-  std::int64_t lastSnapshot_ = -1;   // output index of the last snapshot in this stage
+  std::int64_t lastSnapshot_ = -1; // output index of the last snapshot in this stage
   timeint::StepReport lastStep_;
   std::chrono::steady_clock::time_point stageWallStart_ = std::chrono::steady_clock::now();
-  double stageTauStart_ = 0.0;       // for the estimate of the time left: wall time and tau
-                                     // since the stage (or the restart) began
+  double stageTauStart_ = 0.0; // for the estimate of the time left: wall time and tau
+                               // since the stage (or the restart) began
 };
 
 } // namespace capsula::run

@@ -30,8 +30,8 @@ class TetherRun2D {
 public:
   /// Builds the model from a validated deck (Tether2DDeck.hpp). `log` receives progress
   /// lines (may be null); `deckSource` names the deck file in run.json.
-  TetherRun2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck,
-              std::ostream* log, std::string deckSource = "");
+  TetherRun2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const Teuchos::ParameterList& deck, std::ostream* log,
+              std::string deckSource = "");
 
   /// Runs to the end, writing into `outputDirectory` (empty: no files) on rank 0, or
   /// continues from `restartDirectory`/checkpoint.h5. Collective.

@@ -26,15 +26,14 @@ struct WallGrid {
   /// The grid covering [cx - upstream, cx + downstream] x [cz - halfWidth, cz + halfWidth]
   /// around the point (cx, cz) with the given spacing (the extents are rounded up to
   /// whole spacings, so the centre stays on a node).
-  static WallGrid around(double cx, double cz, double upstream, double downstream,
-                         double halfWidth, double spacing);
+  static WallGrid around(double cx, double cz, double upstream, double downstream, double halfWidth, double spacing);
 };
 
 struct ElevatedStressAreas {
-  double upstream = 0.0;    ///< wall area with x < xCell and stress >= threshold
-  double downstream = 0.0;  ///< wall area with x > xCell and stress >= threshold
-  double minimum = 0.0;     ///< smallest stress on the grid
-  double maximum = 0.0;     ///< largest stress on the grid
+  double upstream = 0.0;   ///< wall area with x < xCell and stress >= threshold
+  double downstream = 0.0; ///< wall area with x > xCell and stress >= threshold
+  double minimum = 0.0;    ///< smallest stress on the grid
+  double maximum = 0.0;    ///< largest stress on the grid
 };
 
 /// du/dy, dw/dy and sigma_SS = sqrt((du/dy)^2 + (dw/dy)^2) (eqs 3.60-3.63) at the grid
@@ -44,17 +43,15 @@ struct ElevatedStressAreas {
 /// the stencil of operators::wallShearStress without its point ON the wall, where the
 /// wall kernel vanishes identically and the adaptive near-singular quadrature (relative
 /// to a zero integral) would subdivide to its depth limit. Collective.
-operators::WallShearStress wallShearStressOnGrid(operators::BoundaryIntegralSolver& solver,
-                                                 const WallGrid& grid, double step,
-                                                 const operators::LoadDensity& load,
-                                                 const double* nodeVelocities,
-                                                 const operators::FlowConditions& flow);
+operators::WallShearStress wallShearStressOnGrid(operators::BoundaryIntegralSolver& solver, const WallGrid& grid,
+                                                 double step, const operators::LoadDensity& load,
+                                                 const double* nodeVelocities, const operators::FlowConditions& flow);
 
 /// Wall areas where the stress leaves the range of an isolated cell's map (thesis Figs 6.6,
 /// 6.12: where a pair of cells puts less stress on the wall than one cell ever does, or more).
 struct OutsideRangeAreas {
-  double below = 0.0;   ///< wall area with stress < lowest
-  double above = 0.0;   ///< wall area with stress > highest
+  double below = 0.0; ///< wall area with stress < lowest
+  double above = 0.0; ///< wall area with stress > highest
 };
 
 /// Areas where `stress` (one value per grid node) is below `lowest` or above `highest`,
@@ -65,7 +62,7 @@ OutsideRangeAreas areasOutsideRange(const WallGrid& grid, const std::vector<doub
 /// Areas where `stress` (one value per grid node) is >= threshold. Each node carries the
 /// area of its dual cell (h^2, halved on an edge, quartered at a corner: the trapezoidal
 /// rule), and nodes at x == xCell are shared half and half.
-ElevatedStressAreas elevatedStressAreas(const WallGrid& grid, const std::vector<double>& stress,
-                                        double xCell, double threshold);
+ElevatedStressAreas elevatedStressAreas(const WallGrid& grid, const std::vector<double>& stress, double xCell,
+                                        double threshold);
 
 } // namespace capsula::run

@@ -20,12 +20,11 @@ namespace capsula::scene {
 
 /// dx_c/dt of the cell whose nodes move with `nodeVelocities` (3 per node, the mesh's
 /// numbering); N_Q = 12 integrates the degree-6 integrand exactly for polynomial u.
-mesh::Vec3 centroidVelocity(const mesh::SurfaceMesh& cell, const double* nodeVelocities,
-                            int numQuadraturePoints = 12);
+mesh::Vec3 centroidVelocity(const mesh::SurfaceMesh& cell, const double* nodeVelocities, int numQuadraturePoints = 12);
 
 struct RigidMotion {
-  mesh::Vec3 translation = mesh::Vec3::Zero();   ///< U, velocity of the reference point
-  mesh::Vec3 rotation = mesh::Vec3::Zero();      ///< Omega
+  mesh::Vec3 translation = mesh::Vec3::Zero(); ///< U, velocity of the reference point
+  mesh::Vec3 rotation = mesh::Vec3::Zero();    ///< Omega
 };
 
 /// Least-squares rigid motion of the nodes about `referencePoint` (usually the centroid).

@@ -24,7 +24,7 @@ bool surfacesOverlap(const mesh::SurfaceMesh& a, const mesh::SurfaceMesh& b);
 /// are no more than `minimumGap` apart (SurfaceGap.hpp; 'Cells/Minimum gap' of the deck,
 /// the gap at which a run stops). Touching cells are rejected even with minimumGap = 0,
 /// where a gap of exactly 0 remains. paths[i] names cell i.
-void requireNoOverlap(const std::vector<const mesh::SurfaceMesh*>& cells,
-                      const std::vector<std::string>& paths, double minimumGap = 0.0);
+void requireNoOverlap(const std::vector<const mesh::SurfaceMesh*>& cells, const std::vector<std::string>& paths,
+                      double minimumGap = 0.0);
 
 } // namespace capsula::scene

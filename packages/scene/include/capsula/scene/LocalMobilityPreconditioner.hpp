@@ -46,17 +46,17 @@ public:
   Teuchos::RCP<const Map> getRangeMap() const override { return map_; }
   bool hasTransposeApply() const override { return false; }
   /// Y = alpha P^-1 X + beta Y. Throws std::invalid_argument for a transpose.
-  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
-             double alpha = 1.0, double beta = 0.0) const override;
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS, double alpha = 1.0,
+             double beta = 0.0) const override;
 
 private:
   using SparseMatrix = Eigen::SparseMatrix<double>;
   struct CellBlock {
     int firstNode = 0;
-    SparseMatrix stiffness;            // H
-    Eigen::VectorXd inverseMobility;   // B^-1, 3 entries per node
+    SparseMatrix stiffness;          // H
+    Eigen::VectorXd inverseMobility; // B^-1, 3 entries per node
     std::unique_ptr<Eigen::SimplicialLDLT<SparseMatrix>> ldlt;
-    std::unique_ptr<Eigen::SparseLU<SparseMatrix>> lu;   // where LDL^T fails
+    std::unique_ptr<Eigen::SparseLU<SparseMatrix>> lu; // where LDL^T fails
     bool patternAnalysed = false;
   };
 

@@ -40,21 +40,21 @@ namespace capsula::scene {
 /// Everything an output needs at one state (all arrays in the global numbering, on every
 /// rank).
 struct SceneFields {
-  std::vector<double> positions;          ///< 3 per node
-  std::vector<double> velocities;         ///< 3 per node, constraints applied (the motion)
-  std::vector<double> solverVelocities;   ///< 3 per node, the boundary-integral solution
-  std::vector<double> elementLoads;       ///< <Delta f>_m, 3 per element: the average over each element
-  std::vector<double> loadDensity;        ///< Delta f at the nodes of each element, 18 per element (operators::LoadDensity)
-  std::vector<double> principalTensions;  ///< major, minor per node (eq 3.30)
-  std::vector<double> stretches;          ///< major, minor principal stretch per node
-  int gmresIterations = 0;                ///< 0: explicit velocity (lambda = 1)
+  std::vector<double> positions;        ///< 3 per node
+  std::vector<double> velocities;       ///< 3 per node, constraints applied (the motion)
+  std::vector<double> solverVelocities; ///< 3 per node, the boundary-integral solution
+  std::vector<double> elementLoads;     ///< <Delta f>_m, 3 per element: the average over each element
+  std::vector<double> loadDensity; ///< Delta f at the nodes of each element, 18 per element (operators::LoadDensity)
+  std::vector<double> principalTensions; ///< major, minor per node (eq 3.30)
+  std::vector<double> stretches;         ///< major, minor principal stretch per node
+  int gmresIterations = 0;               ///< 0: explicit velocity (lambda = 1)
 };
 
 /// Refined meshes for a scene (Scene::adaptedCells): one per cell, with its reference shape.
 struct AdaptedCells {
   std::vector<mesh::SurfaceMesh> cells;
   std::vector<std::vector<double>> references;
-  std::vector<int> markedElements;   ///< per cell, the elements with Q_e >= threshold (0: kept)
+  std::vector<int> markedElements; ///< per cell, the elements with Q_e >= threshold (0: kept)
 };
 
 /// What one tangential redistribution of a cell's nodes did (Scene::regulariseMeshes).
@@ -64,8 +64,8 @@ struct MeshRegularisation {
   double minAngleAfter = 0.0;     ///< degrees
   double referenceMinAngle = 0.0; ///< degrees, of the reference elements afterwards
   int passes = 0;
-  double maxDisplacement = 0.0;   ///< the largest node move
-  double volumeOffset = 0.0;      ///< the normal offset that restored the volume
+  double maxDisplacement = 0.0; ///< the largest node move
+  double volumeOffset = 0.0;    ///< the normal offset that restored the volume
 };
 
 class Scene {
@@ -165,7 +165,7 @@ private:
 
   SceneDescription description_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
-  std::vector<mesh::SurfaceMesh> cells_;   // sized once: the membranes point into it
+  std::vector<mesh::SurfaceMesh> cells_; // sized once: the membranes point into it
   std::vector<std::unique_ptr<elasticity::MembraneMechanics>> membranes_;
   std::unique_ptr<operators::BoundaryIntegralSolver> solver_;
   std::optional<FixedHeightConstraint> fixedHeight_;
@@ -175,7 +175,7 @@ private:
   std::vector<double> loadDensity_;
   std::vector<std::string> terms_;
   std::string kernelKey_;
-  std::optional<operators::WarmStartHistory> warmStart_;   // with 'Solver/Warm start'
+  std::optional<operators::WarmStartHistory> warmStart_; // with 'Solver/Warm start'
   Teuchos::RCP<Teuchos::Time> membraneTimer_, velocityTimer_, constraintTimer_;
 };
 

@@ -13,13 +13,13 @@
 namespace capsula::scene {
 
 struct CellDescription {
-  std::string path;                  ///< "Cells/Cell 0", for messages
-  Teuchos::ParameterList surface;    ///< the cell's sublist (mesh::buildCellSurface reads it)
-  std::string membraneLaw;           ///< "NeoHookean" or "Skalak"
-  std::string membraneForces;        ///< "Virtual work" or "Contour integral"
-  double shearModulus = 1.0;         ///< relative to the G of the capillary number
-  double areaDilation = 0.0;         ///< C (Skalak)
-  double prestress = 0.0;            ///< alpha (eq 3.45)
+  std::string path;               ///< "Cells/Cell 0", for messages
+  Teuchos::ParameterList surface; ///< the cell's sublist (mesh::buildCellSurface reads it)
+  std::string membraneLaw;        ///< "NeoHookean" or "Skalak"
+  std::string membraneForces;     ///< "Virtual work" or "Contour integral"
+  double shearModulus = 1.0;      ///< relative to the G of the capillary number
+  double areaDilation = 0.0;      ///< C (Skalak)
+  double prestress = 0.0;         ///< alpha (eq 3.45)
   bool fixedHeight = false;
   int meshLevel = 0;
 };
@@ -29,9 +29,9 @@ struct SceneDescription {
   double viscosityRatio = 1.0;
   bool wall = true;
   std::vector<CellDescription> cells;
-  double minimumGap = 0.05;          ///< 'Cells/Minimum gap': closer surfaces stop the run
-  mesh::RedistributionSettings meshRegularisation;   ///< 'Mesh regularisation'
-  mesh::AdaptionSettings meshAdaption;               ///< 'Mesh adaption'
+  double minimumGap = 0.05;                        ///< 'Cells/Minimum gap': closer surfaces stop the run
+  mesh::RedistributionSettings meshRegularisation; ///< 'Mesh regularisation'
+  mesh::AdaptionSettings meshAdaption;             ///< 'Mesh adaption'
 
   int numCells() const { return static_cast<int>(cells.size()); }
   bool anyFixedHeight() const;

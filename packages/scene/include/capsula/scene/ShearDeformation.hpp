@@ -19,7 +19,7 @@ namespace capsula::scene {
 struct ShearDeformation {
   double D12 = 0.0, D13 = 0.0, D23 = 0.0;
   double inclinationDegrees = 0.0;
-  mesh::Vec3 semiAxes = mesh::Vec3::Zero();   ///< (l1, l2, l3) as defined above
+  mesh::Vec3 semiAxes = mesh::Vec3::Zero(); ///< (l1, l2, l3) as defined above
 };
 
 ShearDeformation shearDeformation(const mesh::EquivalentEllipsoid& ellipsoid);

@@ -16,11 +16,11 @@
 namespace capsula::scene {
 
 struct StiffSolverSettings {
-  int maximumIterations = 200;  ///< GMRES iterations of one stage solve before it counts as failed
-  int restart = 60;             ///< Krylov vectors kept (Belos "Num Blocks")
-  bool preconditioned = true;   ///< "Local mobility" (true) or "None"
-  double mobilityFactor = 2.5;  ///< beta of the local mobility beta / R_i (LocalMobilityPreconditioner.hpp)
-  int quadraturePoints = 3;     ///< N_Q of J~'s single layer (0: Discretisation/Quadrature points)
+  int maximumIterations = 200; ///< GMRES iterations of one stage solve before it counts as failed
+  int restart = 60;            ///< Krylov vectors kept (Belos "Num Blocks")
+  bool preconditioned = true;  ///< "Local mobility" (true) or "None"
+  double mobilityFactor = 2.5; ///< beta of the local mobility beta / R_i (LocalMobilityPreconditioner.hpp)
+  int quadraturePoints = 3;    ///< N_Q of J~'s single layer (0: Discretisation/Quadrature points)
 };
 
 /// Declares the keys of the "Stiff" sublist in `stiff`.

@@ -18,13 +18,12 @@ namespace capsula::scene {
 
 /// The closest point of the triangle (a, b, c) to p (a degenerate triangle is handled as
 /// its edges).
-mesh::Vec3 closestPointOnTriangle(const mesh::Vec3& p, const mesh::Vec3& a, const mesh::Vec3& b,
-                                  const mesh::Vec3& c);
+mesh::Vec3 closestPointOnTriangle(const mesh::Vec3& p, const mesh::Vec3& a, const mesh::Vec3& b, const mesh::Vec3& c);
 
 struct SurfaceGap {
-  double distance = 0.0;                     ///< >= 0
-  mesh::Vec3 onFirst = mesh::Vec3::Zero();   ///< the closest points: on the first surface
-  mesh::Vec3 onSecond = mesh::Vec3::Zero();  ///< and on the second
+  double distance = 0.0;                    ///< >= 0
+  mesh::Vec3 onFirst = mesh::Vec3::Zero();  ///< the closest points: on the first surface
+  mesh::Vec3 onSecond = mesh::Vec3::Zero(); ///< and on the second
 };
 
 /// The gap between surface `a` at positions `xa` and surface `b` at `xb` (3 doubles per

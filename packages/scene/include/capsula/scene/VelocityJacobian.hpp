@@ -64,12 +64,12 @@ private:
   Scene& scene_;
   StiffSolverSettings settings_;
   operators::SolverParameters gmres_;
-  std::unique_ptr<operators::BoundaryIntegralSolver> frozen_;   // the single layer at x_n
+  std::unique_ptr<operators::BoundaryIntegralSolver> frozen_;  // the single layer at x_n
   std::vector<elasticity::TangentStiffness> stiffness_;        // per cell, at x_n
-  std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_;  // per cell, at x_n
+  std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_; // per cell, at x_n
   std::vector<double> frozenPositions_;
-  std::vector<double> coefficient_;    // -c_d per node
-  std::vector<double> flowFactor_;     // 2 / (1 + lambda_d) per node
+  std::vector<double> coefficient_; // -c_d per node
+  std::vector<double> flowFactor_;  // 2 / (1 + lambda_d) per node
   Teuchos::RCP<const Tpetra::Map<>> map_;
   Teuchos::RCP<operators::StageOperator> stage_;
   Teuchos::RCP<LocalMobilityPreconditioner> preconditioner_;

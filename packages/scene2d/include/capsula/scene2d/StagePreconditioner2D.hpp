@@ -35,8 +35,8 @@ public:
   Teuchos::RCP<const Map> getRangeMap() const override { return map_; }
   bool hasTransposeApply() const override { return false; }
   /// Y = alpha P^-1 X + beta Y. Throws std::invalid_argument for a transpose.
-  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
-             double alpha = 1.0, double beta = 0.0) const override;
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS, double alpha = 1.0,
+             double beta = 0.0) const override;
 
 private:
   Teuchos::RCP<const Map> map_;

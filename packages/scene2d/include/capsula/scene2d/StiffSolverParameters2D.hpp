@@ -19,11 +19,11 @@ namespace capsula::scene2d {
 enum class StiffPreconditioner2D { PointSingleLayer, LocalMobility, None };
 
 struct StiffSolverSettings2D {
-  int maximumIterations = 200;  ///< GMRES iterations of one stage solve before it counts as failed
-  int restart = 60;             ///< Krylov vectors kept (Belos "Num Blocks")
+  int maximumIterations = 200; ///< GMRES iterations of one stage solve before it counts as failed
+  int restart = 60;            ///< Krylov vectors kept (Belos "Num Blocks")
   StiffPreconditioner2D preconditioner = StiffPreconditioner2D::PointSingleLayer;
-  double mobilityFactor = 1.0;  ///< beta of the local mobility c beta l_i (StagePreconditioner2D.hpp)
-  int gaussLegendrePoints = 3;  ///< N_GL of J~'s single layer (0: Discretisation/Gauss-Legendre points)
+  double mobilityFactor = 1.0; ///< beta of the local mobility c beta l_i (StagePreconditioner2D.hpp)
+  int gaussLegendrePoints = 3; ///< N_GL of J~'s single layer (0: Discretisation/Gauss-Legendre points)
 };
 
 /// Declares the keys of the "Stiff" sublist in `stiff`.

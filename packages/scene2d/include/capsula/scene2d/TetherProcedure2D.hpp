@@ -46,12 +46,12 @@ namespace capsula::scene2d {
 
 struct TetherSettings2D {
   bool enabled = true;
-  double anchorHeight = 0.005;           ///< anchor at (0, anchorHeight)
-  double preparationTolerance = 1.0e-3;  ///< on |d D12 / d tau|
-  double preparationWindow = 0.05;       ///< tau over which d D12 / d tau is measured
-  bool waitForNodeAtBottom = false;      ///< then tether when a node passes the lowest point
-  double minimumPreparationTime = 0.5;   ///< tau
-  double maximumPreparationTime = 20.0;  ///< tau
+  double anchorHeight = 0.005;          ///< anchor at (0, anchorHeight)
+  double preparationTolerance = 1.0e-3; ///< on |d D12 / d tau|
+  double preparationWindow = 0.05;      ///< tau over which d D12 / d tau is measured
+  bool waitForNodeAtBottom = false;     ///< then tether when a node passes the lowest point
+  double minimumPreparationTime = 0.5;  ///< tau
+  double maximumPreparationTime = 20.0; ///< tau
   /// tau after tethering that max.tether_force_after_transient leaves out (the fast
   /// relaxation next to the tether, ~0.01 tau, whose spike depends on the resolution).
   double forceTransient = 0.1;

@@ -33,8 +33,8 @@
 namespace capsula::scene2d {
 
 struct TetherGrading2D {
-  double tetherSpacing = 0.1;  ///< f: the spacing at the tether as a fraction of the far spacing H
-  double gradedLength = 1.0;   ///< w: the reference arc length over which it grows to H
+  double tetherSpacing = 0.1; ///< f: the spacing at the tether as a fraction of the far spacing H
+  double gradedLength = 1.0;  ///< w: the reference arc length over which it grows to H
 };
 
 /// Reference arc lengths sigma_0 = 0 < sigma_1 < ... < sigma_N = length of N markers
@@ -43,10 +43,10 @@ struct TetherGrading2D {
 std::vector<double> gradedArcLengths(int markers, double length, const TetherGrading2D& grading);
 
 struct TetherRegrid2D {
-  Eigen::Matrix2Xd referenceNodes; ///< node 0 is the tether's material point; counter-clockwise
-  Eigen::Matrix2Xd currentNodes;   ///< the same material points now (regridAtTether: node 0 at the anchor)
-  double tetherArcLength = 0.0;            ///< l of the lowest point on the free contour
-  double tetherReferenceArcLength = 0.0;   ///< its l0 on the reference contour
+  Eigen::Matrix2Xd referenceNodes;       ///< node 0 is the tether's material point; counter-clockwise
+  Eigen::Matrix2Xd currentNodes;         ///< the same material points now (regridAtTether: node 0 at the anchor)
+  double tetherArcLength = 0.0;          ///< l of the lowest point on the free contour
+  double tetherReferenceArcLength = 0.0; ///< its l0 on the reference contour
 };
 
 /// Samples the free cell `current` (periodic, same markers as the periodic `reference`) at

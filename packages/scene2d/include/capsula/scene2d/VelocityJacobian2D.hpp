@@ -78,13 +78,13 @@ private:
   CapsuleModel2D& model_;
   StiffSolverSettings2D settings_;
   operators::SolverParameters gmres_;
-  std::unique_ptr<operators::InterfaceVelocity2D> velocity_;   // S on the frozen contour
+  std::unique_ptr<operators::InterfaceVelocity2D> velocity_; // S on the frozen contour
   std::optional<contour::Contour> frozen_;
   std::vector<double> frozenState_;
   std::vector<int> fixed_;
   double shortestSegment_ = 0.0;
-  double coefficient_ = 0.0;     // c
-  double flowFactor_ = 0.0;      // 2 / (1 + lambda)
+  double coefficient_ = 0.0; // c
+  double flowFactor_ = 0.0;  // 2 / (1 + lambda)
   bool tetherEnabled_ = false;
   Teuchos::RCP<const Tpetra::Map<>> map_;
   Teuchos::RCP<operators::StageOperator> stage_;

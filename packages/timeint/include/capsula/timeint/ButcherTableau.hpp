@@ -15,12 +15,12 @@ namespace capsula::timeint {
 struct ButcherTableau {
   std::string name;
   int stages = 0;
-  std::vector<double> a;          ///< stages x stages, row-major, zero on and above the diagonal
-  std::vector<double> b;          ///< weights of the solution that advances
-  std::vector<double> bEmbedded;  ///< weights of the companion solution; empty: no error estimate
-  std::vector<double> c;          ///< stage times, c_i = sum_j a_ij
-  int order = 0;                  ///< order of the solution that advances
-  int embeddedOrder = 0;          ///< order of the companion solution (0: none)
+  std::vector<double> a;         ///< stages x stages, row-major, zero on and above the diagonal
+  std::vector<double> b;         ///< weights of the solution that advances
+  std::vector<double> bEmbedded; ///< weights of the companion solution; empty: no error estimate
+  std::vector<double> c;         ///< stage times, c_i = sum_j a_ij
+  int order = 0;                 ///< order of the solution that advances
+  int embeddedOrder = 0;         ///< order of the companion solution (0: none)
   /// "First same as last": the last stage is evaluated at (t + h, y_new), so it is the
   /// first stage of the next step (a_sj = b_j, c_s = 1, b_s = 0).
   bool firstSameAsLast = false;

@@ -35,8 +35,8 @@ private:
   void factorise(double shift);
 
   JacobianFunction jacobianFunction_;
-  std::vector<double> jacobian_;   // J~, row-major
-  std::vector<double> lu_;         // LU of I - shift J~ with partial pivoting
+  std::vector<double> jacobian_; // J~, row-major
+  std::vector<double> lu_;       // LU of I - shift J~ with partial pivoting
   std::vector<int> pivot_;
   double factorisedShift_ = 0.0;
   bool factorised_ = false;

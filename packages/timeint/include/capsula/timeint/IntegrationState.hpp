@@ -12,27 +12,27 @@ namespace capsula::timeint {
 
 struct IntegrationStatistics {
   std::int64_t acceptedSteps = 0;
-  std::int64_t rejectedSteps = 0;        ///< attempts rejected by the error control
-  std::int64_t rhsEvaluations = 0;       ///< calls of the right-hand side
-  double smallestStep = std::numeric_limits<double>::infinity();  ///< over accepted steps
-  double largestStep = 0.0;                                       ///< over accepted steps
-  double lastStep = 0.0;                 ///< size of the last accepted step
-  double lastErrorNorm = 0.0;            ///< error estimate of the last accepted step
+  std::int64_t rejectedSteps = 0;                                ///< attempts rejected by the error control
+  std::int64_t rhsEvaluations = 0;                               ///< calls of the right-hand side
+  double smallestStep = std::numeric_limits<double>::infinity(); ///< over accepted steps
+  double largestStep = 0.0;                                      ///< over accepted steps
+  double lastStep = 0.0;                                         ///< size of the last accepted step
+  double lastErrorNorm = 0.0;                                    ///< error estimate of the last accepted step
   // Linearly implicit (stiff) steps; all zero for an explicit method.
-  std::int64_t stiffSteps = 0;           ///< accepted steps taken by the stiff method
-  std::int64_t stiffRhsEvaluations = 0;  ///< right-hand sides evaluated in stiff steps
-  std::int64_t linearisations = 0;       ///< J~ frozen (LinearisedSystem::linearise)
-  std::int64_t linearSolves = 0;         ///< solves with W = I - h gamma J~
-  std::int64_t linearIterations = 0;     ///< their Krylov iterations, summed
+  std::int64_t stiffSteps = 0;              ///< accepted steps taken by the stiff method
+  std::int64_t stiffRhsEvaluations = 0;     ///< right-hand sides evaluated in stiff steps
+  std::int64_t linearisations = 0;          ///< J~ frozen (LinearisedSystem::linearise)
+  std::int64_t linearSolves = 0;            ///< solves with W = I - h gamma J~
+  std::int64_t linearIterations = 0;        ///< their Krylov iterations, summed
   std::int64_t largestLinearIterations = 0; ///< the most iterations one solve took
-  std::int64_t failedLinearSolves = 0;   ///< solves that did not converge (step rejected)
-  std::int64_t methodSwitches = 0;       ///< Method Auto: changes between explicit and stiff
+  std::int64_t failedLinearSolves = 0;      ///< solves that did not converge (step rejected)
+  std::int64_t methodSwitches = 0;          ///< Method Auto: changes between explicit and stiff
 };
 
 struct IntegrationState {
   double time = 0.0;
-  std::vector<double> y;                 ///< the state the right-hand side advances
-  double proposedStep = 0.0;             ///< size of the next attempt
+  std::vector<double> y;     ///< the state the right-hand side advances
+  double proposedStep = 0.0; ///< size of the next attempt
   /// PI controller memory: the previous accepted error norm (unused by other controllers).
   double previousErrorNorm = 0.0;
   /// f(time, y) when the method is "first same as last" and it is known; empty otherwise.
@@ -42,7 +42,7 @@ struct IntegrationState {
   /// outputOrigin + k * interval; nextOutput is the next k to observe.
   double outputOrigin = 0.0;
   std::int64_t nextOutput = 0;
-  bool steady = false;                   ///< steady state was detected
+  bool steady = false; ///< steady state was detected
   /// Stability limit (TimeIntegrationSettings::stabilityLimit): the power iteration's
   /// last vector (the direction of the dominant mode of df/dy; empty before the first
   /// estimate), the step it allows, and the accepted steps since it was estimated.

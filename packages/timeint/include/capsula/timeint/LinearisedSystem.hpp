@@ -16,8 +16,8 @@ namespace capsula::timeint {
 /// How one solve with W went.
 struct LinearSolveReport {
   bool converged = false;
-  int iterations = 0;          ///< Krylov iterations (0 for a direct solve)
-  double residualRms = 0.0;    ///< achieved ||r - W x||_2 / sqrt(n)
+  int iterations = 0;       ///< Krylov iterations (0 for a direct solve)
+  double residualRms = 0.0; ///< achieved ||r - W x||_2 / sqrt(n)
 };
 
 class LinearisedSystem {

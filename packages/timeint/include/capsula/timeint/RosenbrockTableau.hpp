@@ -26,20 +26,20 @@ namespace capsula::timeint {
 struct RosenbrockTableau {
   std::string name;
   int stages = 0;
-  double gamma = 0.0;                ///< diagonal of Gamma
+  double gamma = 0.0; ///< diagonal of Gamma
   // Standard form (row-major stages x stages, zero on and above the diagonal).
-  std::vector<double> alpha;         ///< alpha_ij
+  std::vector<double> alpha;            ///< alpha_ij
   std::vector<double> gammaOffDiagonal; ///< gamma_ij, i > j
-  std::vector<double> b;             ///< weights of the solution that advances
-  std::vector<double> bEmbedded;     ///< weights of the embedded solution
-  int order = 0;                     ///< as a W-method: for any J~
+  std::vector<double> b;                ///< weights of the solution that advances
+  std::vector<double> bEmbedded;        ///< weights of the embedded solution
+  int order = 0;                        ///< as a W-method: for any J~
   int embeddedOrder = 0;
   // Transformed form, what the integrator uses (computed by the constructors below).
-  std::vector<double> a;             ///< a_ij = (alpha Gamma^-1)_ij
-  std::vector<double> c;             ///< c_ij = (diag(1/gamma) - Gamma^-1)_ij
-  std::vector<double> m;             ///< m = b Gamma^-1
-  std::vector<double> mEmbedded;     ///< mEmbedded = bEmbedded Gamma^-1
-  std::vector<double> stageTime;     ///< alpha_i = sum_j alpha_ij
+  std::vector<double> a;         ///< a_ij = (alpha Gamma^-1)_ij
+  std::vector<double> c;         ///< c_ij = (diag(1/gamma) - Gamma^-1)_ij
+  std::vector<double> m;         ///< m = b Gamma^-1
+  std::vector<double> mEmbedded; ///< mEmbedded = bEmbedded Gamma^-1
+  std::vector<double> stageTime; ///< alpha_i = sum_j alpha_ij
 
   double aCoefficient(int i, int j) const { return a[static_cast<std::size_t>(i * stages + j)]; }
   double cCoefficient(int i, int j) const { return c[static_cast<std::size_t>(i * stages + j)]; }

@@ -24,8 +24,8 @@ SteadyStateCriterion steadyStateCriterionFromString(const std::string& word);
 
 /// The measure of the criterion for one accepted step from yOld to yNew of size h
 /// (0 for Off).
-inline double steadyStateMeasure(SteadyStateCriterion criterion, const double* yOld,
-                                 const double* yNew, std::size_t n, double h)
+inline double steadyStateMeasure(SteadyStateCriterion criterion, const double* yOld, const double* yNew, std::size_t n,
+                                 double h)
 {
   switch (criterion) {
   case SteadyStateCriterion::MaxChangeRate:

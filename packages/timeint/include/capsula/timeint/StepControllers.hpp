@@ -12,7 +12,7 @@ namespace capsula::timeint {
 
 struct StepDecision {
   bool accepted = false;
-  double nextStep = 0.0;   ///< proposed size of the next attempt (retry or next step)
+  double nextStep = 0.0; ///< proposed size of the next attempt (retry or next step)
 };
 
 /// The thesis controller (eq 3.50): with the error estimate err = |x5 - x4| and the
@@ -43,9 +43,9 @@ struct PiControllerParameters {
   double safety = 0.9;
   double alpha = 0.17;
   double beta = 0.04;
-  double minimumFactor = 0.2;    ///< the step never shrinks by more than this in one go
-  double maximumFactor = 10.0;   ///< nor grows by more than this
-  double errorFloor = 1.0e-4;    ///< previous error is floored here (and starts here)
+  double minimumFactor = 0.2;  ///< the step never shrinks by more than this in one go
+  double maximumFactor = 10.0; ///< nor grows by more than this
+  double errorFloor = 1.0e-4;  ///< previous error is floored here (and starts here)
 };
 
 /// A PI step-size controller (Gustafsson 1991; Hairer, Norsett & Wanner IV.2) for a
@@ -59,8 +59,7 @@ public:
   PiStepController(int errorOrder, PiControllerParameters parameters = {});
 
   const PiControllerParameters& parameters() const { return parameters_; }
-  StepDecision decide(double step, double errorNorm, double previousErrorNorm,
-                      bool afterRejection) const;
+  StepDecision decide(double step, double errorNorm, double previousErrorNorm, bool afterRejection) const;
   /// The value an accepted step leaves as "previous error" for the next one.
   double rememberedError(double errorNorm) const;
 

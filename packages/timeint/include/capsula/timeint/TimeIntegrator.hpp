@@ -81,21 +81,21 @@ bool needsLinearisedSystem(Method method);
 
 struct TimeIntegrationSettings {
   Method method = Method::RKF45;
-  bool adaptive = true;               ///< false: fixed steps of initialStep (RK4: always false)
-  bool localExtrapolation = false;    ///< RKF45: advance with the 5th-order solution
-  double tolerance = 1.0e-6;          ///< RKF45: eps of eq 3.50; DP45: absolute tolerance
-  double relativeTolerance = 0.0;     ///< DP45 only
-  double initialStep = 1.0e-3;        ///< first attempted step; the step of fixed-step runs
-  double minimumStep = 1.0e-12;       ///< a controller step below this is a failure
-  double maximumStep = 1.0;           ///< the controller never proposes more
+  bool adaptive = true;            ///< false: fixed steps of initialStep (RK4: always false)
+  bool localExtrapolation = false; ///< RKF45: advance with the 5th-order solution
+  double tolerance = 1.0e-6;       ///< RKF45: eps of eq 3.50; DP45: absolute tolerance
+  double relativeTolerance = 0.0;  ///< DP45 only
+  double initialStep = 1.0e-3;     ///< first attempted step; the step of fixed-step runs
+  double minimumStep = 1.0e-12;    ///< a controller step below this is a failure
+  double maximumStep = 1.0;        ///< the controller never proposes more
   /// Adaptive runs: cap the step at 0.8 r / rho, rho the spectral radius of df/dy
   /// estimated by power iteration, r the method's real stability boundary (see
   /// TimeIntegrator::step). Off: the error control alone chooses the step.
   bool stabilityLimit = false;
-  int stabilityInterval = 10;         ///< accepted steps between estimates of rho
-  double endTime = 1.0;               ///< where integrate() stops
+  int stabilityInterval = 10; ///< accepted steps between estimates of rho
+  double endTime = 1.0;       ///< where integrate() stops
   SteadyStateCriterion steadyCriterion = SteadyStateCriterion::Off;
-  double steadyTolerance = 0.0;       ///< steady when the measure falls below this
+  double steadyTolerance = 0.0; ///< steady when the measure falls below this
   PiControllerParameters piController;
   /// Stiff methods: each stage solve stops at an RMS residual of linearTolerance *
   /// tolerance (well below the local error the step is allowed).
@@ -109,14 +109,12 @@ struct TimeIntegrationSettings {
 
 /// dy/dt = f(t, y). `dydt` arrives sized like `y`; the function fills every entry and
 /// must be a pure function of (t, y) (a restarted run relies on it).
-using RightHandSide =
-  std::function<void(double t, const std::vector<double>& y, std::vector<double>& dydt)>;
+using RightHandSide = std::function<void(double t, const std::vector<double>& y, std::vector<double>& dydt)>;
 
 /// Called right after every right-hand-side evaluation with the stage's (t, y); may
 /// modify the stage derivative in place (a tethered node's velocity set to zero, the mean
 /// vertical velocity of a fixed-height cell subtracted, ...).
-using StageConstraint =
-  std::function<void(double t, const std::vector<double>& y, std::vector<double>& dydt)>;
+using StageConstraint = std::function<void(double t, const std::vector<double>& y, std::vector<double>& dydt)>;
 
 enum class OutputReason { Start, Interval, End, SteadyState };
 
@@ -132,26 +130,25 @@ using Observer = std::function<void(const IntegrationState& state, OutputReason 
 struct OutputSchedule {
   OutputSchedule() = default;
   OutputSchedule(double outputInterval, bool observeTheStart = true)
-    : interval(outputInterval), observeStart(observeTheStart)
-  {
-  }
+      : interval(outputInterval), observeStart(observeTheStart)
+  {}
 
   double interval = 0.0;
   bool observeStart = true;
-  std::function<double(std::int64_t index)> times;   ///< empty: origin + k * interval
-  std::optional<double> endTime;                      ///< empty: TimeIntegrationSettings::endTime
+  std::function<double(std::int64_t index)> times; ///< empty: origin + k * interval
+  std::optional<double> endTime;                   ///< empty: TimeIntegrationSettings::endTime
 };
 
 /// What one accepted step did.
 struct StepReport {
   double stepSize = 0.0;
-  double errorNorm = 0.0;        ///< 0 for fixed steps
+  double errorNorm = 0.0; ///< 0 for fixed steps
   int rejectedAttempts = 0;
-  bool shortened = false;        ///< cut short to land on the stop time
-  double steadyMeasure = 0.0;    ///< 0 when steady-state detection is off
+  bool shortened = false;     ///< cut short to land on the stop time
+  double steadyMeasure = 0.0; ///< 0 when steady-state detection is off
   bool steady = false;
-  bool stiff = false;            ///< taken by a linearly implicit method
-  int linearIterations = 0;      ///< Krylov iterations of the accepted attempt's solves
+  bool stiff = false;       ///< taken by a linearly implicit method
+  int linearIterations = 0; ///< Krylov iterations of the accepted attempt's solves
   /// An explicit step under the stability limit that the limit bound.
   bool heldByStabilityLimit = false;
   /// Method Auto: why the method changed after this step ("" if it did not).
@@ -225,8 +222,7 @@ public:
   StopReason integrate(IntegrationState& state, const OutputSchedule& schedule,
                        std::initializer_list<IntegrationObserver*> observers);
   /// The same with observers that only watch the outputs.
-  StopReason integrate(IntegrationState& state, const OutputSchedule& schedule,
-                       const std::vector<Observer>& observers);
+  StopReason integrate(IntegrationState& state, const OutputSchedule& schedule, const std::vector<Observer>& observers);
 
   /// The time of output `index` under `schedule` for a run started at `origin`.
   double outputTime(double origin, std::int64_t index, const OutputSchedule& schedule) const;
@@ -234,8 +230,8 @@ public:
   double endTime(const OutputSchedule& schedule) const;
 
 private:
-  void evaluate(double t, const std::vector<double>& y, std::vector<double>& dydt,
-                IntegrationState& state, double step, int stage);
+  void evaluate(double t, const std::vector<double>& y, std::vector<double>& dydt, IntegrationState& state, double step,
+                int stage);
   StepReport attemptUntilAccepted(IntegrationState& state, double tStop);
   // LinearlyImplicitStep.cpp: one accepted Rosenbrock-W step; with trialStep > 0 a single
   // attempt of that size, which on failure leaves the state as it was and reports a step
@@ -263,14 +259,14 @@ private:
   PiStepController piController_;
   PiStepController rosenbrockController_;
   std::shared_ptr<LinearisedSystem> system_;
-  std::vector<double> errorWeights_;        // b - bEmbedded
+  std::vector<double> errorWeights_; // b - bEmbedded
   // Work arrays, sized on first use.
   std::vector<std::vector<double>> slopes_; // k_1..k_s
   std::vector<double> stageState_, newState_, errorVector_;
-  std::vector<double> probe_, probeSlope_;  // stability limit: y + eps v and f there
+  std::vector<double> probe_, probeSlope_;      // stability limit: y + eps v and f there
   std::vector<std::vector<double>> increments_; // Rosenbrock stage increments u_1..u_s
-  std::vector<double> stageRhs_;             // the right-hand side of a stage solve
-  double stabilityBoundary_ = 0.0;           // r of the tableau that advances
+  std::vector<double> stageRhs_;                // the right-hand side of a stage solve
+  double stabilityBoundary_ = 0.0;              // r of the tableau that advances
 };
 
 } // namespace capsula::timeint

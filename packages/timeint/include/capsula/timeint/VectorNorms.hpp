@@ -51,8 +51,8 @@ inline double euclideanDifference(const double* a, const double* b, std::size_t 
 /// The mixed absolute/relative error norm of Hairer, Norsett & Wanner (II.4.11):
 ///   sqrt( 1/n sum_i (e_i / sc_i)^2 ),  sc_i = atol + rtol max(|y0_i|, |y1_i|).
 /// A step is acceptable when this is <= 1. Zero for n = 0.
-inline double scaledRmsNorm(const double* e, const double* y0, const double* y1, std::size_t n,
-                            double atol, double rtol)
+inline double scaledRmsNorm(const double* e, const double* y0, const double* y1, std::size_t n, double atol,
+                            double rtol)
 {
   if (n == 0) {
     return 0.0;
