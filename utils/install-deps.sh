@@ -11,7 +11,7 @@ fi
 
 packages=(
   # build tools
-  build-essential cmake ninja-build git pkg-config
+  build-essential cmake ninja-build git pkg-config clang-format
   # Trilinos 13.2 is split in Debian; its CMake config needs all of these
   libtrilinos-teuchos-dev libtrilinos-kokkos-dev libtrilinos-kokkos-kernels-dev
   libtrilinos-epetra-dev libtrilinos-epetraext-dev libtrilinos-tpetra-dev
