@@ -1,4 +1,5 @@
 #include "capsula/core/Deck.hpp"
+#include "capsula/core/XmlText.hpp"
 
 #include "capsula/core/DeckValidators.hpp"
 #include "capsula/core/Error.hpp"
@@ -296,30 +297,6 @@ void applyOverride(Teuchos::ParameterList& deck, const Teuchos::ParameterList& v
 
 namespace {
 
-std::string xmlEscape(const std::string& s)
-{
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-    case '&':
-      out += "&amp;";
-      break;
-    case '<':
-      out += "&lt;";
-      break;
-    case '>':
-      out += "&gt;";
-      break;
-    case '"':
-      out += "&quot;";
-      break;
-    default:
-      out += c;
-    }
-  }
-  return out;
-}
-
 // The shortest decimal text that reads back as exactly the same double.
 std::string shortestReal(double v)
 {
@@ -345,7 +322,7 @@ std::string commentSafe(std::string s)
 void writeList(std::ostream& out, const Teuchos::ParameterList& list, const std::string& name, bool withDocs, int depth)
 {
   const std::string indent(static_cast<std::size_t>(2 * depth), ' ');
-  out << indent << "<ParameterList name=\"" << xmlEscape(name) << "\">\n";
+  out << indent << "<ParameterList name=\"" << xmlEscaped(name) << "\">\n";
   for (auto it = list.begin(); it != list.end(); ++it) {
     const std::string& key = list.name(it);
     const Teuchos::ParameterEntry& entry = list.entry(it);
@@ -378,8 +355,8 @@ void writeList(std::ostream& out, const Teuchos::ParameterList& list, const std:
       } else {
         value = converter->getValueAttributeValue(Teuchos::rcpFromRef(entry));
       }
-      out << inner << "<Parameter name=\"" << xmlEscape(key) << "\" type=\"" << converter->getTypeAttributeValue()
-          << "\" value=\"" << xmlEscape(value) << "\"/>\n";
+      out << inner << "<Parameter name=\"" << xmlEscaped(key) << "\" type=\"" << converter->getTypeAttributeValue()
+          << "\" value=\"" << xmlEscaped(value) << "\"/>\n";
     }
   }
   out << indent << "</ParameterList>\n";

@@ -1,5 +1,6 @@
 #include "capsula/io/Xdmf.hpp"
 
+#include "capsula/core/XmlText.hpp"
 #include "capsula/io/NumberFormat.hpp"
 
 #include <sstream>
@@ -7,30 +8,6 @@
 namespace capsula::io {
 
 namespace {
-
-std::string escaped(const std::string& text)
-{
-  std::string out;
-  for (const char ch : text) {
-    switch (ch) {
-    case '&':
-      out += "&amp;";
-      break;
-    case '<':
-      out += "&lt;";
-      break;
-    case '>':
-      out += "&gt;";
-      break;
-    case '"':
-      out += "&quot;";
-      break;
-    default:
-      out += ch;
-    }
-  }
-  return out;
-}
 
 std::string dimensions(std::size_t rows, std::size_t columns)
 {
@@ -41,7 +18,8 @@ void dataItem(std::ostream& out, const std::string& indent, const std::string& d
               const std::string& fileName, const std::string& dataset)
 {
   out << indent << "<DataItem Dimensions=\"" << dims << "\" NumberType=\"" << (integer ? "Int" : "Float")
-      << "\" Precision=\"8\" Format=\"HDF\">" << escaped(fileName) << ":" << escaped(dataset) << "</DataItem>\n";
+      << "\" Precision=\"8\" Format=\"HDF\">" << core::xmlEscaped(fileName) << ":" << core::xmlEscaped(dataset)
+      << "</DataItem>\n";
 }
 
 std::string attributeType(int components)
@@ -67,8 +45,8 @@ void attributes(std::ostream& out, const std::string& fileName, const SnapshotLa
 {
   const std::size_t count = onNodes ? block.nodes : block.cells;
   for (const auto& f : fields) {
-    out << "          <Attribute Name=\"" << escaped(f.name) << "\" AttributeType=\"" << attributeType(f.components)
-        << "\" Center=\"" << (onNodes ? "Node" : "Cell") << "\">\n";
+    out << "          <Attribute Name=\"" << core::xmlEscaped(f.name) << "\" AttributeType=\""
+        << attributeType(f.components) << "\" Center=\"" << (onNodes ? "Node" : "Cell") << "\">\n";
     dataItem(out, "            ", dimensions(count, static_cast<std::size_t>(f.components)), false, fileName,
              snapshot.group + "/" + block.name + (onNodes ? "/node_fields/" : "/cell_fields/") + f.name);
     out << "          </Attribute>\n";
@@ -134,7 +112,7 @@ std::string xdmfTimeSeries(const std::string& fileName, const std::vector<Snapsh
     out << "      <Grid Name=\"step " << snapshot.step << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
         << "        <Time Value=\"" << shortestDecimal(snapshot.time) << "\"/>\n";
     for (const auto& block : snapshot.blocks) {
-      out << "        <Grid Name=\"" << escaped(block.name) << "\" GridType=\"Uniform\">\n";
+      out << "        <Grid Name=\"" << core::xmlEscaped(block.name) << "\" GridType=\"Uniform\">\n";
       topology(out, fileName, snapshot, block);
       out << "          <Geometry GeometryType=\"" << (block.dimension == 2 ? "XY" : "XYZ") << "\">\n";
       dataItem(out, "            ", dimensions(block.nodes, static_cast<std::size_t>(block.dimension)), false, fileName,

@@ -85,13 +85,7 @@ std::string TimeIntegrator::solveStages(IntegrationState& state, double h, doubl
     }
   }
   combine(state.y, R.m.data(), increments_, s, newState_);
-  const std::size_t bad = firstNonFinite(newState_.data(), n);
-  if (bad != n) {
-    throw core::NumericalError(
-        core::message("Time integration failed: the new state is not finite at t = ", shown(tNew), " (entry ", bad,
-                      " of ", n, "; ", R.name, " step from t = ", shown(state.time), " with dt = ", shown(h),
-                      "). The state at t = ", shown(state.time), " is the last accepted one."));
-  }
+  detail::requireFiniteNewState(newState_, tNew, R.name, state.time, h);
   if (domainCheck_) {
     domainCheck_(newState_);
   }

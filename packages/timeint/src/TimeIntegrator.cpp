@@ -312,13 +312,7 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
         evaluate(ti, stageState_, slopes_[static_cast<std::size_t>(i)], state, h, i);
       }
       combineStages(state.y.data(), h, tableau_.b.data(), slopes_, stages, newState_.data(), n);
-      const std::size_t bad = firstNonFinite(newState_.data(), n);
-      if (bad != n) {
-        throw core::NumericalError(
-            core::message("Time integration failed: the new state is not finite at t = ", shown(tNew), " (entry ", bad,
-                          " of ", n, "; ", tableau_.name, " step from t = ", shown(state.time), " with dt = ", shown(h),
-                          "). The state at t = ", shown(state.time), " is the last accepted one."));
-      }
+      detail::requireFiniteNewState(newState_, tNew, tableau_.name, state.time, h);
       if (domainCheck_) {
         domainCheck_(newState_);
       }
