@@ -9,6 +9,7 @@
 //            level 2, lambda = 5 with its GMRES solve), one rank; and the geometry update.
 // Wall times on a shared machine: compare runs made at the same load (utils/bench/bench_targets.py
 // records the load; docs/accuracy-cost.md).
+#include <capsula/core/MpiSessionDirectory.hpp>
 #include <capsula/mesh/Shapes.hpp>
 #include <capsula/operators/BuiltInKernels.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
@@ -161,6 +162,7 @@ BENCHMARK(geometryUpdate)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
 int main(int argc, char* argv[])
 {
   // Tpetra (and MPI) around the whole run: the operators use a Teuchos communicator.
+  const capsula::core::MpiSessionDirectory sessionDirectory; // outlives MPI
   Tpetra::ScopeGuard scope(&argc, &argv);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) {

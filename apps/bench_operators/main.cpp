@@ -11,6 +11,7 @@
 //              sums, and for lambda != 1 the GMRES solve, with its iterations);
 //   direct sum the bare vectorised regular sum of the Stokeslet over every quadrature point
 //              for the owned nodes (no corrections): the floor the evaluation is compared to.
+#include <capsula/core/MpiSessionDirectory.hpp>
 #include <capsula/mesh/Shapes.hpp>
 #include <capsula/operators/BuiltInKernels.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
@@ -167,6 +168,7 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int level, double la
 
 int main(int argc, char* argv[])
 {
+  const capsula::core::MpiSessionDirectory sessionDirectory; // outlives MPI
   Tpetra::ScopeGuard scope(&argc, &argv);
   const auto comm = Tpetra::getDefaultComm();
   int level = 3, quadraturePoints = 7, repeat = 3;

@@ -1,6 +1,7 @@
 #include "capsula/core/Application.hpp"
 
 #include "capsula/core/Error.hpp"
+#include "capsula/core/MpiSessionDirectory.hpp"
 #include "capsula/core/RunInfo.hpp"
 #include "capsula/core/Timers.hpp"
 
@@ -45,6 +46,7 @@ int runApplication(int argc, char** argv, const AppDescription& app, const Valid
       return 0;
     }
   }
+  const MpiSessionDirectory sessionDirectory; // outlives MPI (declared before the scope guard)
   Tpetra::ScopeGuard tpetraScope(&argc, &argv);
   const auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
