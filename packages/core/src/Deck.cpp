@@ -1,16 +1,18 @@
 #include "capsula/core/Deck.hpp"
 #include "capsula/core/XmlText.hpp"
 
+#include "DeckText.hpp"
+
 #include "capsula/core/DeckValidators.hpp"
 #include "capsula/core/Error.hpp"
 
 #include <Teuchos_ParameterEntryXMLConverterDB.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -138,38 +140,14 @@ std::string trim(const std::string& s)
   return s.substr(first, last - first + 1);
 }
 
-bool parseReal(const std::string& text, double& value)
-{
-  const std::string t = trim(text);
-  if (t.empty()) {
-    return false;
-  }
-  errno = 0;
-  char* end = nullptr;
-  value = std::strtod(t.c_str(), &end);
-  return errno == 0 && end == t.c_str() + t.size();
-}
-
-bool parseInt(const std::string& text, int& value)
-{
-  const std::string t = trim(text);
-  if (t.empty()) {
-    return false;
-  }
-  errno = 0;
-  char* end = nullptr;
-  const long v = std::strtol(t.c_str(), &end, 10);
-  if (errno != 0 || end != t.c_str() + t.size() || v < INT32_MIN || v > INT32_MAX) {
-    return false;
-  }
-  value = static_cast<int>(v);
-  return true;
-}
-
 } // namespace
 
 Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path)
 {
+  std::error_code notADirectory;
+  if (std::filesystem::is_directory(path, notADirectory)) {
+    throw IoError("Cannot read deck '" + path + "': it is a directory; give the deck's .xml file.");
+  }
   std::ifstream in(path);
   if (!in) {
     throw IoError("Cannot read deck '" + path + "': the file does not exist or is not readable.");
@@ -181,8 +159,10 @@ Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path)
 
 Teuchos::RCP<Teuchos::ParameterList> readDeckFromString(const std::string& xml, const std::string& sourceName)
 {
+  detail::checkDeckText(xml, sourceName);
+  Teuchos::RCP<Teuchos::ParameterList> deck;
   try {
-    return Teuchos::getParametersFromXmlString(xml);
+    deck = Teuchos::getParametersFromXmlString(xml);
   } catch (const std::exception& e) {
     std::string what = e.what();
     // Teuchos prefixes its messages with a source location; keep the last line.
@@ -192,6 +172,7 @@ Teuchos::RCP<Teuchos::ParameterList> readDeckFromString(const std::string& xml, 
     }
     throw InputError("Deck '" + sourceName + "' is not a valid Teuchos XML parameter list: " + trim(what));
   }
+  return deck;
 }
 
 void validateDeck(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid, const std::string& deckName)
@@ -252,13 +233,13 @@ void applyOverride(Teuchos::ParameterList& deck, const Teuchos::ParameterList& v
   };
   if (target->isType<double>()) {
     double v = 0.0;
-    if (!parseReal(text, v)) {
-      throw bad("a real number");
+    if (!detail::parseFiniteReal(text, v)) {
+      throw bad("a finite real number");
     }
     list->set(name, v);
   } else if (target->isType<int>()) {
     int v = 0;
-    if (!parseInt(text, v)) {
+    if (!detail::parseInteger(text, v)) {
       throw bad("an integer");
     }
     list->set(name, v);
@@ -283,8 +264,8 @@ void applyOverride(Teuchos::ParameterList& deck, const Teuchos::ParameterList& v
     std::string item;
     while (std::getline(in, item, ',')) {
       double v = 0.0;
-      if (!parseReal(item, v)) {
-        throw bad("a list of real numbers such as {0, 2.5, 0}");
+      if (!detail::parseFiniteReal(item, v)) {
+        throw bad("a list of finite real numbers such as {0, 2.5, 0}");
       }
       values.push_back(v);
     }

@@ -29,8 +29,8 @@ Teuchos::RCP<const Teuchos::ParameterList> validList()
 
 std::string errorOf(const std::string& xml)
 {
-  auto deck = core::readDeckFromString(xml, "deck.xml");
   try {
+    auto deck = core::readDeckFromString(xml, "deck.xml");
     core::validateDeck(*deck, *validList(), "deck.xml");
   } catch (const InputError& e) {
     return e.what();
@@ -183,7 +183,9 @@ TEST(Deck, BadOverridesAreNamed)
     }
     return "no error";
   };
-  EXPECT_TRUE(contains(messageOf("Flow/Capillary number=abc"), "'abc' is not a real number"));
+  EXPECT_TRUE(contains(messageOf("Flow/Capillary number=abc"), "'abc' is not a finite real number"));
+  EXPECT_TRUE(contains(messageOf("Flow/Capillary number=nan"), "'nan' is not a finite real number"));
+  EXPECT_TRUE(contains(messageOf("Cells/Cell 0/Mesh level=99999999999"), "is not an integer"));
   EXPECT_TRUE(contains(messageOf("Cells/Cell 0/Mesh level=2.5"), "is not an integer"));
   EXPECT_TRUE(contains(messageOf("Flow/Capilary number=1"), "Did you mean 'Flow/Capillary number'?"));
   EXPECT_TRUE(contains(messageOf("Flow"), "expected \"List/Sub/Key=value\""));
@@ -194,6 +196,93 @@ TEST(Deck, BadOverridesAreNamed)
     FAIL() << "negative viscosity ratio accepted";
   } catch (const InputError& e) {
     EXPECT_TRUE(contains(e.what(), "'Flow/Viscosity ratio' = -2 is invalid")) << e.what();
+  }
+}
+
+// Teuchos alone reads "abc" as 0, "2.5" as the int 2, "0.3abc" as 0.3 and overflows
+// 99999999999: each of these must stop the run, naming the key, the file and the line.
+TEST(Deck, DeckFileValuesAreReadAsStrictlyAsOverrides)
+{
+  const auto withCell = [](const std::string& parameter) {
+    return "<ParameterList name=\"Capsula\">\n<ParameterList name=\"Cells\">\n<ParameterList name=\"Cell 0\">\n" +
+           parameter + "\n</ParameterList></ParameterList></ParameterList>";
+  };
+  const auto withFlow = [](const std::string& value) {
+    return "<ParameterList name=\"Capsula\"><ParameterList name=\"Flow\">\n<Parameter name=\"Capillary number\" "
+           "type=\"double\" value=\"" +
+           value + "\"/></ParameterList></ParameterList>";
+  };
+  const struct {
+    std::string xml;
+    std::string expected;
+  } cases[] = {
+      {withFlow("abc"), "Deck 'deck.xml', line 2: 'Flow/Capillary number' = \"abc\" is not a finite real number"},
+      {withFlow("0.3abc"), "'Flow/Capillary number' = \"0.3abc\" is not a finite real number"},
+      {withFlow("inf"), "'Flow/Capillary number' = \"inf\" is not a finite real number"},
+      {withFlow("1e-400"), "'Flow/Capillary number' = \"1e-400\" is not a finite real number"}, // underflows
+      {withFlow(""), "'Flow/Capillary number' = \"\" is not a finite real number"},
+      {withCell(R"xml(<Parameter name="Mesh level" type="int" value="abc"/>)xml"),
+       "Deck 'deck.xml', line 4: 'Cells/Cell 0/Mesh level' = \"abc\" is not an integer"},
+      {withCell(R"xml(<Parameter name="Mesh level" type="int" value="2.5"/>)xml"),
+       "'Cells/Cell 0/Mesh level' = \"2.5\""},
+      {withCell(R"xml(<Parameter name="Mesh level" type="int" value="99999999999"/>)xml"),
+       "= \"99999999999\" is not an integer"},
+      {withCell(R"xml(<Parameter name="Center" type="Array(double)" value="{a, 1.6, 0}"/>)xml"),
+       "'Cells/Cell 0/Center' = \"{a, 1.6, 0}\" has element 1 = \"a\", which is not a finite real number"},
+      {withCell(R"xml(<Parameter name="Center" type="Array(double)" value="{0, nan, 0}"/>)xml"),
+       "has element 2 = \"nan\""},
+      {withCell(R"xml(<Parameter name="Center" type="Array(double)" value="0, 1, 0"/>)xml"),
+       "is not an array written as {a, b, c}"},
+      {withCell(R"xml(<Parameter name="Fixed height" type="bool" value="maybe"/>)xml"),
+       "'Cells/Cell 0/Fixed height' = \"maybe\" is not a boolean (true or false)"},
+  };
+  for (const auto& c : cases) {
+    const auto msg = errorOf(c.xml);
+    EXPECT_TRUE(contains(msg, c.expected)) << "expected: " << c.expected << "\ngot: " << msg;
+  }
+}
+
+TEST(Deck, KeyGivenTwiceNamesBothLines)
+{
+  const auto msg = errorOf("<ParameterList name=\"Capsula\">\n<ParameterList name=\"Flow\">\n"
+                           "<Parameter name=\"Capillary number\" type=\"double\" value=\"0.3\"/>\n"
+                           "<Parameter name=\"Viscosity ratio\" type=\"double\" value=\"1\"/>\n"
+                           "<Parameter name=\"Capillary number\" type=\"double\" value=\"0.5\"/>\n"
+                           "</ParameterList></ParameterList>");
+  EXPECT_TRUE(contains(msg, "Deck 'deck.xml': 'Flow/Capillary number' is given twice (lines 3 and 5)")) << msg;
+  const auto list = errorOf("<ParameterList name=\"Capsula\">\n<ParameterList name=\"Flow\"/>\n"
+                            "<ParameterList name=\"Flow\"/>\n</ParameterList>");
+  EXPECT_TRUE(contains(list, "'Flow' is given twice (lines 2 and 3)")) << list;
+}
+
+// The same name in different lists, comments, '>' inside a string value and a valid value
+// with surrounding blanks are all fine.
+TEST(Deck, StrictReadingAcceptsWhatIsValid)
+{
+  auto deck = core::readDeckFromString(R"xml(<?xml version="1.0"?>
+<!-- a comment with <Parameter name="Title" type="int" value="x"/> inside -->
+<ParameterList name="Capsula">
+  <Parameter name="Title" type="string" value="a > b"/>
+  <ParameterList name="Cells">
+    <ParameterList name="Cell 0"><Parameter name="Mesh level" type="int" value=" 3 "/>
+      <Parameter name="Center" type="Array(double)" value="{0, 1.5e0, -2}"/></ParameterList>
+    <ParameterList name="Cell 1"><Parameter name="Mesh level" type="int" value="-0"/></ParameterList>
+  </ParameterList>
+  <ParameterList name="Flow"><Parameter name='Capillary number' type='double' value='1e-300'/></ParameterList>
+</ParameterList>)xml",
+                                       "deck.xml");
+  EXPECT_EQ(deck->get<std::string>("Title"), "a > b");
+  EXPECT_EQ(deck->sublist("Cells").sublist("Cell 0").get<int>("Mesh level"), 3);
+  EXPECT_EQ(deck->sublist("Flow").get<double>("Capillary number"), 1e-300);
+}
+
+TEST(Deck, DirectoryGivenAsDeckIsNamed)
+{
+  try {
+    core::readDeck("/tmp");
+    FAIL() << "a directory was read as a deck";
+  } catch (const capsula::core::IoError& e) {
+    EXPECT_TRUE(contains(e.what(), "Cannot read deck '/tmp': it is a directory")) << e.what();
   }
 }
 

@@ -1,6 +1,11 @@
 #pragma once
 // Input decks: Teuchos XML parameter lists, read, checked and written.
 //
+// Reading a deck file checks its text (DeckText.hpp): every value must be exactly what
+// its type attribute says (the whole text read, reals finite, integers without fraction or
+// overflow, arrays element by element), and no key may appear twice in one list; the
+// message names the key, the file and the line.
+//
 // A deck is checked against the "valid parameter list" that the components
 // declare (ParameterDeclaration.hpp). Checking rejects, with a message that
 // names the deck file and the full key path ("Flow/Capillary number"):
@@ -28,8 +33,8 @@ using ValidParameterBuilder =
 /// it is not a Teuchos XML parameter list (the message names the file).
 Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path);
 
-/// Parses a deck from an XML string (tests, restart records). `sourceName`
-/// names it in messages.
+/// Parses a deck from an XML string (tests, restart records), with the checks of its
+/// text described above. `sourceName` names it in messages.
 Teuchos::RCP<Teuchos::ParameterList> readDeckFromString(const std::string& xml, const std::string& sourceName);
 
 /// Checks `deck` against `valid` as described above and fills in defaults.
