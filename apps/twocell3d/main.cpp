@@ -20,5 +20,5 @@ int main(int argc, char** argv)
        "twocell3d input/twocell3d/demo.xml --output out/demo --restart out/demo --set \"Time integration/End time=4\"",
        "twocell3d --print-defaults > my_deck.xml"},
       true};
-  return capsula::run::runSceneApplication(argc, argv, app);
+  return capsula::run::runSceneApplication(argc, argv, app, /*cellsWhenNoneGiven=*/2);
 }

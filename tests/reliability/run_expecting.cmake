@@ -4,7 +4,8 @@
 #
 #   cmake -DEXIT_CODE=<n> -DMATCHES=<regex> [-DWORKING_DIRECTORY=<dir>] -P run_expecting.cmake -- <command> [args...]
 #
-# stdout and stderr are matched together, as a user reads them in a terminal.
+# stdout and stderr are matched together, as a user reads them in a terminal. MATCHES may
+# not hold ';' (CMake splits arguments there): write '.' for it.
 set(_command)
 set(_after_separator FALSE)
 math(EXPR _last "${CMAKE_ARGC} - 1")
@@ -15,7 +16,8 @@ foreach(_i RANGE 0 ${_last})
     set(_after_separator TRUE)
   endif()
 endforeach()
-if(NOT _command)
+list(LENGTH _command _words)
+if(_words EQUAL 0)
   message(FATAL_ERROR "run_expecting.cmake: no command after --")
 endif()
 if(NOT DEFINED EXIT_CODE OR NOT DEFINED MATCHES)

@@ -12,7 +12,7 @@ namespace capsula::mesh {
 
 namespace core = capsula::core;
 
-void declareCellSurfaceParameters(Teuchos::ParameterList& cell)
+void declareCellSurfaceParameters(Teuchos::ParameterList& cell, const std::array<double, 3>& center)
 {
   core::declareChoice(cell, "Shape", "Sphere", {"Sphere", "Spheroid", "Ellipsoid", "Biconcave"},
                       "Initial shape. Sphere uses Radius; Spheroid and Ellipsoid use Semi-axes "
@@ -24,7 +24,7 @@ void declareCellSurfaceParameters(Teuchos::ParameterList& cell)
                     core::greaterThan(0.0));
   core::declareRealArray(cell, "Semi-axes", {1.0, 1.0, 1.0}, 3,
                          "Semi-axes (a, b, c) along body x, y, z for Spheroid and Ellipsoid.", core::greaterThan(0.0));
-  core::declareRealArray(cell, "Center", {0.0, 0.0, 0.0}, 3, "Centre of the cell in the lab frame.");
+  core::declareRealArray(cell, "Center", {center[0], center[1], center[2]}, 3, "Centre of the cell in the lab frame.");
   core::declareRealArray(cell, "Orientation axis", {0.0, 0.0, 1.0}, 3,
                          "Axis of the rotation from body to lab frame (any nonzero length).");
   core::declareReal(cell, "Orientation angle", 0.0,

@@ -9,7 +9,7 @@
 
 namespace capsula::run {
 
-int runSceneApplication(int argc, char** argv, const core::AppDescription& app)
+int runSceneApplication(int argc, char** argv, const core::AppDescription& app, int cellsWhenNoneGiven)
 {
   const std::string name = app.name;
   const auto run = [name](core::RunContext& context) {
@@ -23,7 +23,11 @@ int runSceneApplication(int argc, char** argv, const core::AppDescription& app)
     runScene(*context.deck, context.comm, options, kernels);
   };
   return core::runApplication(
-      argc, argv, app, [name](const Teuchos::ParameterList& deck) { return validSceneRunParameters(deck, name); }, run);
+      argc, argv, app,
+      [name, cellsWhenNoneGiven](const Teuchos::ParameterList& deck) {
+        return validSceneRunParameters(deck, name, cellsWhenNoneGiven);
+      },
+      run);
 }
 
 } // namespace capsula::run

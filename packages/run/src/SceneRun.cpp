@@ -168,6 +168,14 @@ void SceneRunner::restore()
   }
   requireSameRun(deck_, checkpoint.deckXml, path);
   io::loadSections(checkpoint, path, {&stateSection_, &outputs_, &live_});
+  const double end = integrator_.settings().endTime;
+  core::require<core::InputError>(!state_.steady, "--restart ", *options_.restartDirectory,
+                                  ": the run reached a steady state at t = ", state_.time,
+                                  " ('Time integration/Steady tolerance'); a restart has nothing to do.");
+  core::require<core::InputError>(
+      state_.time < end, "--restart ", *options_.restartDirectory, ": the checkpoint is at t = ", state_.time,
+      ", at or past 'Time integration/End time' = ", end,
+      "; nothing to do. Give a later end, e.g. --set \"Time integration/End time=", 2.0 * state_.time, "\".");
   restarted_ = true;
 }
 

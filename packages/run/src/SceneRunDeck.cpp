@@ -11,10 +11,10 @@
 namespace capsula::run {
 
 Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos::ParameterList& deck,
-                                                                   const std::string& appName)
+                                                                   const std::string& appName, int cellsWhenNoneGiven)
 {
   auto valid = Teuchos::rcp(new Teuchos::ParameterList(appName));
-  scene::declareSceneParameters(*valid, deck);
+  scene::declareSceneParameters(*valid, deck, cellsWhenNoneGiven);
   timeint::declareTimeIntegrationParameters(
       core::declareSublist(*valid, "Time integration", "Time stepping (Section 3.10; docs/stiff-integration.md)."),
       /*stabilityLimitDefault=*/true);

@@ -133,6 +133,12 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     const io::Checkpoint checkpoint = io::readCheckpoint(path);
     io::loadSections(checkpoint, path, {&stateSection, &stages, &model_, &outputs});
     state.steady = false; // a restart goes on from where the stopped run was
+    // Same margin as the end-of-run test of TetherOutputs2D.
+    core::require<core::InputError>(
+        stages.preparing() || stages.tau(state.time) < endTau * (1.0 - 1e-12), "--restart ", *restartDirectory,
+        ": the checkpoint is at tau = ", stages.tau(state.time), ", at or past 'Time integration/End time' = ", endTau,
+        "; nothing to do. Give a later end, e.g. --set \"Time integration/End time=", 2.0 * stages.tau(state.time),
+        "\".");
     outputs.beginStage(checkpoint.time);
     if (log_ != nullptr) {
       *log_ << "Restarting from " << path << " at tau = " << checkpoint.time << " (step " << checkpoint.step << ")\n";

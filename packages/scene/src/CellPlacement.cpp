@@ -58,7 +58,9 @@ bool anyNodeInside(const mesh::SurfaceMesh& nodesOf, const mesh::SurfaceMesh& su
 
 } // namespace
 
-void requireAboveWall(const mesh::SurfaceMesh& cell, const std::string& path)
+namespace {
+
+int lowestNode(const mesh::SurfaceMesh& cell)
 {
   int lowest = 0;
   for (int i = 1; i < cell.numNodes(); ++i) {
@@ -66,11 +68,31 @@ void requireAboveWall(const mesh::SurfaceMesh& cell, const std::string& path)
       lowest = i;
     }
   }
+  return lowest;
+}
+
+} // namespace
+
+void requireAboveWall(const mesh::SurfaceMesh& cell, const std::string& path)
+{
+  const int lowest = lowestNode(cell);
   const double y = cell.position(lowest)[1];
   core::require<core::InputError>(y > 0.0, "'", path, "' crosses the wall: node ", lowest, " lies at y = ", y,
                                   " but the fluid is y > 0 when 'Wall/Enabled' is true. Raise '", path,
                                   "/Center' (its y component is the height of the centre) by more than ", -y,
                                   ", or disable the wall.");
+}
+
+void requireWallGap(const mesh::SurfaceMesh& cell, const std::string& path, double minimumGap)
+{
+  const int lowest = lowestNode(cell);
+  const double y = cell.position(lowest)[1] + 0.0; // + 0.0: a node at -0 is reported at 0
+  core::require<core::InputError>(
+      y > minimumGap, "'", path, "' ",
+      y > 0.0 ? "starts too close to the wall" : (y == 0.0 ? "touches the wall" : "crosses the wall"), ": node ",
+      lowest, " lies at y = ", y, ", not more than 'Wall/Minimum gap' = ", minimumGap, " (the fluid is y > 0). Raise '",
+      path, "/Center' (its y component is the height of the centre) by more than ", minimumGap - y,
+      ", lower 'Wall/Minimum gap' or disable the wall.");
 }
 
 double windingNumber(const mesh::SurfaceMesh& surface, const Vec3& point)

@@ -47,13 +47,16 @@ std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMes
 
 namespace {
 
-// The cells' surfaces as the deck describes them (the state at t = 0).
+// The cells' surfaces as the deck describes them (the state at t = 0), clear of the wall.
 std::vector<mesh::SurfaceMesh> initialSurfaces(const SceneDescription& description)
 {
   std::vector<mesh::SurfaceMesh> cells;
   cells.reserve(description.cells.size());
   for (const auto& cell : description.cells) {
     cells.push_back(mesh::buildCellSurface(cell.surface, cell.path));
+    if (description.wall) {
+      requireWallGap(cells.back(), cell.path, description.minimumWallGap);
+    }
   }
   return cells;
 }

@@ -40,6 +40,7 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
   scene.capillaryNumber = flow.get<double>("Capillary number");
   scene.viscosityRatio = flow.get<double>("Viscosity ratio");
   scene.wall = deck.sublist("Wall").get<bool>("Enabled");
+  scene.minimumWallGap = deck.sublist("Wall").get<double>("Minimum gap");
 
   const auto& cells = deck.sublist("Cells");
   scene.minimumGap = cells.get<double>("Minimum gap");

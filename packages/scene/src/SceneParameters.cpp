@@ -6,6 +6,8 @@
 #include <capsula/mesh/RedistributionParameters.hpp>
 
 #include <cctype>
+#include <string>
+#include <vector>
 
 namespace capsula::scene {
 
@@ -48,9 +50,14 @@ std::string cellSublistName(int index)
   return "Cell " + std::to_string(index);
 }
 
-void declareCellParameters(Teuchos::ParameterList& cell)
+std::array<double, 3> defaultCellCenter(int index, int count)
 {
-  mesh::declareCellSurfaceParameters(cell);
+  return {2.5 * index - 1.25 * (count - 1), 1.6, 0.0};
+}
+
+void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double, 3>& center)
+{
+  mesh::declareCellSurfaceParameters(cell, center);
   core::declareChoice(cell, "Membrane law", "Skalak", {"NeoHookean", "Skalak"},
                       "Strain energy of the membrane: NeoHookean (eq 3.31) or Skalak (eq 3.32).");
   core::declareChoice(cell, "Membrane forces", "Virtual work", {"Virtual work", "Contour integral"},
@@ -76,7 +83,7 @@ void declareCellParameters(Teuchos::ParameterList& cell)
                     "5.1): the cell's mean vertical velocity is removed from all its nodes.");
 }
 
-void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck)
+void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck, int cellsWhenNoneGiven)
 {
   auto& flow = core::declareSublist(valid, "Flow", "The undisturbed simple shear u = (k y, 0, 0).");
   core::declareReal(flow, "Capillary number", 0.3,
@@ -93,22 +100,36 @@ void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::Parame
   core::declareBool(wall, "Enabled", true,
                     "true: the flow is bounded by the wall y = 0 (Blake's kernel, App. B); false: "
                     "unbounded shear (free-space kernel).");
+  core::declareReal(wall, "Minimum gap", 0.025,
+                    "Safety distance between a cell and the wall at the start, in cell radii: a "
+                    "new run whose lowest node is no higher is rejected (a restart is not checked "
+                    "again). The cell's image below the wall lies twice as far, so the default "
+                    "keeps it as far as 'Cells/Minimum gap' keeps two cells. 0 refuses only a cell "
+                    "on or through the wall.",
+                    core::atLeast(0.0));
 
   auto& cells = core::declareSublist(valid, "Cells", "One sublist per cell: Cell 0, Cell 1, ...");
   declareMinimumGap(cells);
-  bool anyCell = false;
+  std::vector<std::string> given;
   if (deck.isSublist("Cells")) {
-    const auto& given = deck.sublist("Cells");
-    for (auto it = given.begin(); it != given.end(); ++it) {
-      const std::string& name = given.name(it);
-      if (given.isSublist(name) && isCellSublistName(name)) {
-        declareCellParameters(core::declareSublist(cells, name, "A cell."));
-        anyCell = true;
+    const auto& list = deck.sublist("Cells");
+    for (auto it = list.begin(); it != list.end(); ++it) {
+      if (list.isSublist(list.name(it)) && isCellSublistName(list.name(it))) {
+        given.push_back(list.name(it));
       }
     }
   }
-  if (!anyCell) {
-    declareCellParameters(core::declareSublist(cells, cellSublistName(0), "A cell."));
+  if (given.empty()) {
+    for (int k = 0; k < cellsWhenNoneGiven; ++k) {
+      given.push_back(cellSublistName(k));
+    }
+  }
+  const int count = static_cast<int>(given.size());
+  for (const auto& name : given) {
+    // An index too long for an int is refused later (describeScene wants Cell 0 .. Cell n-1).
+    const std::string digits = name.substr(std::string("Cell ").size());
+    const int index = digits.size() > 6 ? count : std::stoi(digits);
+    declareCellParameters(core::declareSublist(cells, name, "A cell."), defaultCellCenter(index, count));
   }
 }
 

@@ -102,7 +102,8 @@ TimeIntegrationSettings checked(TimeIntegrationSettings s)
                       ".");
   require<InputError>(finitePositive(s.maximumStep), "Time integration/Maximum step must be > 0, got ", s.maximumStep,
                       ".");
-  require<InputError>(std::isfinite(s.endTime), "Time integration/End time must be finite, got ", s.endTime, ".");
+  require<InputError>(finitePositive(s.endTime), "Time integration/End time must be > 0 (runs start at t = 0), got ",
+                      s.endTime, ".");
   require<InputError>(std::isfinite(s.steadyTolerance) && s.steadyTolerance >= 0.0,
                       "Time integration/Steady tolerance must be >= 0 (0 = off), got ", s.steadyTolerance, ".");
   require<InputError>(!s.localExtrapolation || s.method == Method::RKF45,

@@ -158,8 +158,10 @@ TEST_F(SceneRunTest, RestartReproducesTheUninterruptedRun)
   EXPECT_EQ(read("split/metrics.csv"), read("whole/metrics.csv"));
   // The restarted run appended to the same snapshot file: the same series, bit for bit.
   expectSameSnapshots("split", "whole");
-  // Restarting into another directory carries the table and the snapshots over.
-  run(*deck, "moved", "split");
+  // Restarting into another directory carries the table and the snapshots over. (The
+  // finished run in "split" has nothing left to do: a restart from it is refused.)
+  run(*half, "half");
+  run(*deck, "moved", "half");
   EXPECT_EQ(read("moved/metrics.csv"), read("whole/metrics.csv"));
   expectSameSnapshots("moved", "whole");
 }

@@ -43,6 +43,29 @@ TEST(CellPlacement, RejectsACellThatCrossesTheWall)
   EXPECT_THROW(scene::requireAboveWall(sphereAt(0, 1.0, 0), "Cells/Cell 1"), capsula::core::InputError);
 }
 
+// 'Wall/Minimum gap' at the start: a lowest node at y = gap is refused, one just above is
+// accepted; the rise asked for is positive even for a cell touching the wall (it read
+// "by more than -0").
+TEST(CellPlacement, WallGapAtTheStart)
+{
+  const auto messageFor = [](double height, double gap) -> std::string {
+    try {
+      scene::requireWallGap(sphereAt(0, height, 0), "Cells/Cell 0", gap);
+    } catch (const capsula::core::InputError& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  // The level-2 icosphere has a node at the bottom pole, y = height - 1 exactly.
+  EXPECT_EQ(messageFor(1.0 + 0.025 + 1e-9, 0.025), "accepted");
+  EXPECT_NE(messageFor(1.02, 0.025).find("starts too close to the wall: node"), std::string::npos);
+  EXPECT_NE(messageFor(1.02, 0.025).find("by more than 0.005,"), std::string::npos) << messageFor(1.02, 0.025);
+  EXPECT_NE(messageFor(1.0, 0.025).find("touches the wall"), std::string::npos) << messageFor(1.0, 0.025);
+  EXPECT_NE(messageFor(1.0, 0.025).find("by more than 0.025,"), std::string::npos) << messageFor(1.0, 0.025);
+  EXPECT_NE(messageFor(0.9, 0.0).find("crosses the wall"), std::string::npos) << messageFor(0.9, 0.0);
+  EXPECT_EQ(messageFor(1.001, 0.0), "accepted");
+}
+
 TEST(CellPlacement, DetectsOverlappingCells)
 {
   const auto a = sphereAt(0, 3, 0);

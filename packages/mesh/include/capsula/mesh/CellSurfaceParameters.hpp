@@ -6,11 +6,13 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <array>
+
 namespace capsula::mesh {
 
-/// Declares Shape, Radius, Semi-axes, Center, Orientation axis, Orientation
-/// angle and Mesh level in `cell`.
-void declareCellSurfaceParameters(Teuchos::ParameterList& cell);
+/// Declares Shape, Radius, Semi-axes, Center (default `center`), Orientation axis,
+/// Orientation angle and Mesh level in `cell`.
+void declareCellSurfaceParameters(Teuchos::ParameterList& cell, const std::array<double, 3>& center = {0.0, 0.0, 0.0});
 
 /// Builds the surface a validated cell sublist describes. Throws InputError for
 /// combinations a validator cannot see (a spheroid with unequal equatorial

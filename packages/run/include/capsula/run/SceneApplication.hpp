@@ -8,6 +8,7 @@
 namespace capsula::run {
 
 /// The exit status of the whole program (0 on success, see core::runApplication).
-int runSceneApplication(int argc, char** argv, const core::AppDescription& app);
+/// `cellsWhenNoneGiven`: the cells of a deck that has none, as --print-defaults shows them.
+int runSceneApplication(int argc, char** argv, const core::AppDescription& app, int cellsWhenNoneGiven = 1);
 
 } // namespace capsula::run

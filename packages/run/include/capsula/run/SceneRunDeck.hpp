@@ -14,8 +14,8 @@
 namespace capsula::run {
 
 /// The complete valid parameter list for `deck` (one "Cells/Cell k" sublist for every one
-/// the deck has), named `appName`.
-Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos::ParameterList& deck,
-                                                                   const std::string& appName);
+/// the deck has, `cellsWhenNoneGiven` for a deck without cells), named `appName`.
+Teuchos::RCP<const Teuchos::ParameterList>
+validSceneRunParameters(const Teuchos::ParameterList& deck, const std::string& appName, int cellsWhenNoneGiven = 1);
 
 } // namespace capsula::run

@@ -1,6 +1,7 @@
 #pragma once
-// Checks of where the cells start: above the wall, and not inside one another. Both are
-// input errors (the deck's Center or size must change), raised before any work is done.
+// Checks of where the cells are: above the wall (at the start, by a margin), and not inside
+// one another. All are input errors (the deck's Center or size must change), raised before
+// any work is done.
 #include <capsula/mesh/SurfaceMesh.hpp>
 
 #include <string>
@@ -11,6 +12,11 @@ namespace capsula::scene {
 /// Throws core::InputError naming `path` unless every node lies in the fluid, y > 0 (the
 /// wall is the plane y = 0).
 void requireAboveWall(const mesh::SurfaceMesh& cell, const std::string& path);
+
+/// Throws core::InputError naming `path` unless every node lies higher than `minimumGap`
+/// above the wall ('Wall/Minimum gap'): the check of the cells' starting places, which a run
+/// may later leave (only crossing the wall stops it then).
+void requireWallGap(const mesh::SurfaceMesh& cell, const std::string& path, double minimumGap);
 
 /// Winding number of the closed surface about `point`: 1 inside, 0 outside (the surface
 /// is taken as the four flat triangles of each 6-node element; for a point farther from

@@ -30,6 +30,7 @@ struct SceneDescription {
   bool wall = true;
   std::vector<CellDescription> cells;
   double minimumGap = 0.05;                        ///< 'Cells/Minimum gap': closer surfaces stop the run
+  double minimumWallGap = 0.025;                   ///< 'Wall/Minimum gap': a new run must start farther up
   mesh::RedistributionSettings meshRegularisation; ///< 'Mesh regularisation'
   mesh::AdaptionSettings meshAdaption;             ///< 'Mesh adaption'
 

@@ -20,20 +20,28 @@
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
+#include <array>
 #include <string>
 
 namespace capsula::scene {
 
-/// Declares the keys of one cell in `cell` (the "Cells/Cell k" sublist).
-void declareCellParameters(Teuchos::ParameterList& cell);
+/// Declares the keys of one cell in `cell` (the "Cells/Cell k" sublist), its Center
+/// defaulting to `center`.
+void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double, 3>& center = {0.0, 0.0, 0.0});
+
+/// The default Center of cell `index` of `count`: at the demo's height 1.6 above the wall,
+/// in line along the flow 2.5 radii apart (a gap of 0.5) and centred on x = 0, so that a
+/// deck that leaves out the centres (the one --print-defaults prints) runs.
+std::array<double, 3> defaultCellCenter(int index, int count);
 
 /// Declares 'Minimum gap' in the "Cells" sublist (read by describeScene; used by the
 /// Scene at the start and by the run after every step).
 void declareMinimumGap(Teuchos::ParameterList& cells);
 
 /// Declares the sublists Flow, Wall and Cells (with a "Cell k" sublist for every one
-/// `deck` has) in `valid`.
-void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck);
+/// `deck` has, or `cellsWhenNoneGiven` of them when it has none) in `valid`.
+void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck,
+                            int cellsWhenNoneGiven = 1);
 
 /// Declares the sublists Mesh regularisation and Mesh adaption in `valid`.
 void declareMeshEvolutionParameters(Teuchos::ParameterList& valid);
