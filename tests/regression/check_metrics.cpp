@@ -5,6 +5,9 @@
 //       CELL "-": the table of several cells (one row per time, columns NAME_c), last row.
 //   check_metrics same FILE_A FILE_B RELATIVE_TOLERANCE
 //       Same columns and rows; every number within RELATIVE_TOLERANCE * max(1, |a|, |b|).
+//   check_metrics agree FILE_A FILE_B RELATIVE_TOLERANCE COLUMN...
+//       At every time both tables hold (two runs with different output intervals), each
+//       COLUMN within RELATIVE_TOLERANCE * max(|a|, |b|). Prints the largest difference.
 //   check_metrics within FILE COLUMN=LOW:HIGH...
 //       Every row must have LOW <= COLUMN <= HIGH, so also be finite (NaN fails); for the
 //       bounds a run must keep all along (tests/regression/stability.cmake). Prints the
@@ -97,6 +100,40 @@ int same(char** argv)
   return pass ? 0 : 1;
 }
 
+int agree(int argc, char** argv)
+{
+  const io::CsvTable a = io::readCsvTable(argv[2]);
+  const io::CsvTable b = io::readCsvTable(argv[3]);
+  const double tolerance = std::atof(argv[4]);
+  const std::size_t timeA = columnIndex(a, "time", argv[2]), timeB = columnIndex(b, "time", argv[3]);
+  bool ok = true;
+  for (int k = 5; k < argc; ++k) {
+    const std::size_t ca = columnIndex(a, argv[k], argv[2]), cb = columnIndex(b, argv[k], argv[3]);
+    double worst = 0.0, worstTime = 0.0;
+    int common = 0;
+    for (const auto& ra : a.rows) {
+      for (const auto& rb : b.rows) {
+        if (ra[timeA] != rb[timeB]) {
+          continue;
+        }
+        ++common;
+        const double x = ra[ca], y = rb[cb];
+        const double difference = x == y ? 0.0 : std::abs(x - y) / std::max(std::abs(x), std::abs(y));
+        if (!(difference <= worst)) { // NaN counts as the worst
+          worst = difference;
+          worstTime = ra[timeA];
+        }
+      }
+    }
+    const bool pass = common > 1 && worst <= tolerance;
+    ok = ok && pass;
+    std::cout << (pass ? "ok    " : "FAIL  ") << argv[k] << " at " << common
+              << " common times: largest relative difference " << worst << " at t = " << worstTime << " (allowed "
+              << tolerance << ")\n";
+  }
+  return ok ? 0 : 1;
+}
+
 int within(int argc, char** argv)
 {
   const std::string file = argv[2];
@@ -148,11 +185,15 @@ int main(int argc, char** argv)
     if (mode == "same" && argc == 5) {
       return same(argv);
     }
+    if (mode == "agree" && argc >= 6) {
+      return agree(argc, argv);
+    }
     if (mode == "within" && argc >= 4) {
       return within(argc, argv);
     }
     std::cerr << "usage: check_metrics expect FILE CELL COLUMN=VALUE:TOLERANCE...\n"
                  "       check_metrics same FILE_A FILE_B RELATIVE_TOLERANCE\n"
+                 "       check_metrics agree FILE_A FILE_B RELATIVE_TOLERANCE COLUMN...\n"
                  "       check_metrics within FILE COLUMN=LOW:HIGH...\n";
     return 2;
   } catch (const std::exception& e) {

@@ -97,7 +97,7 @@ def goldman(runs, figdir):
             continue
         # Linear extrapolation to Ca = 0 from Ca = 0.01 and 0.005 (as the script's table).
         heights.append(h)
-        slips.append(2.0 * b["u_slip_instant"][-1] - a["u_slip_instant"][-1])
+        slips.append(2.0 * b["u_slip"][-1] - a["u_slip"][-1])
         omegas.append(2.0 * b["omega_z"][-1] - a["omega_z"][-1])
     if not heights:
         return "no goldman-h<h>-Ca<ca> runs"

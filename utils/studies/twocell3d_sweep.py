@@ -21,7 +21,7 @@ the deck. Columns:
   deck, status, time, values, cell, h0, dx0, dy0, dz0, gap0   (the start: centre of cell 0
       height, centre differences cell 0 - cell 1, and the gap between the undeformed spheres
       |x0 - x1| - r0 - r1, which is the thesis's Delta x0/a or Delta z0/a)
-  x_c, y_c, z_c, u_slip, u_migr, u_slip_instant, u_migr_instant, D12, inclination_deg,
+  x_c, y_c, z_c, u_slip, u_migr, u_slip_spline, u_migr_spline, D12, inclination_deg,
   reduced_volume, mean_shear_stress, max_shear_stress, volume_change   (the cell)
   distance, dx, dy, dz, du, dv, dw, dslip, gap   (the pair (0, 1); empty for one cell)
   wall_stress_min, wall_stress_max, wall_area_below_isolated, wall_area_above_isolated
@@ -43,8 +43,8 @@ CELL_KEYS = [
     ("z_c", lambda v: v["centroid"][2]),
     ("u_slip", lambda v: v["u_slip"]),
     ("u_migr", lambda v: v["u_migr"]),
-    ("u_slip_instant", lambda v: v["u_slip (instantaneous)"]),
-    ("u_migr_instant", lambda v: v["u_migr (instantaneous)"]),
+    ("u_slip_spline", lambda v: v["u_slip (spline of outputs)"]),
+    ("u_migr_spline", lambda v: v["u_migr (spline of outputs)"]),
     ("D12", lambda v: v["D12"]),
     ("inclination_deg", lambda v: v["inclination (degrees)"]),
     ("reduced_volume", lambda v: v["reduced volume"]),

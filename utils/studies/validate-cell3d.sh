@@ -128,8 +128,8 @@ for case in "${cases[@]}"; do
     echo "| h/a | u_slip Ca=0.01 | u_slip Ca=0.005 | u_slip Ca->0 | far field 5/16 (a/h)^2 | Omega Ca->0 | far field -(1 - 5/16 (a/h)^3)/2 |"
     echo "|---|---|---|---|---|---|---|"
     for h in $goldman_heights; do
-      s1=$(column goldman-h$h-Ca0.01 u_slip_instant last)
-      s2=$(column goldman-h$h-Ca0.005 u_slip_instant last)
+      s1=$(column goldman-h$h-Ca0.01 u_slip last)
+      s2=$(column goldman-h$h-Ca0.005 u_slip last)
       w1=$(column goldman-h$h-Ca0.01 omega_z last)
       w2=$(column goldman-h$h-Ca0.005 omega_z last)
       "$python" - "$h" "$s1" "$s2" "$w1" "$w2" <<'PY'

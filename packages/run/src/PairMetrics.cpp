@@ -49,7 +49,7 @@ std::vector<PairSample> pairSamples(const scene::Scene& scene, const std::vector
       pair.second = j;
       pair.separation = a.shape.centroid - b.shape.centroid;
       pair.distance = pair.separation.norm();
-      pair.relativeVelocity = a.splineVelocity - b.splineVelocity;
+      pair.relativeVelocity = a.instantVelocity - b.instantVelocity;
       pair.relativeSlip = a.slipVelocity() - b.slipVelocity();
       pair.gap = gapBetween(scene, positions, i, j);
       // The cells hold the positions of this output (Scene::evaluate set them).

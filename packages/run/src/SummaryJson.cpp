@@ -13,8 +13,8 @@ io::JsonValue sampleJson(const CellSample& s, bool wall)
   v["centroid"] = io::JsonValue::array({s.shape.centroid[0], s.shape.centroid[1], s.shape.centroid[2]});
   v["u_slip"] = s.slipVelocity();
   v["u_migr"] = s.migrationVelocity();
-  v["u_slip (instantaneous)"] = s.shape.centroid[1] - s.instantVelocity[0];
-  v["u_migr (instantaneous)"] = s.instantVelocity[1];
+  v["u_slip (spline of outputs)"] = s.splineSlipVelocity();
+  v["u_migr (spline of outputs)"] = s.splineMigrationVelocity();
   v["u_lift (before the fixed-height constraint)"] = s.unconstrainedVelocity[1];
   v["rotation rate"] = io::JsonValue::array({s.rotation[0], s.rotation[1], s.rotation[2]});
   v["volume"] = s.shape.volume;

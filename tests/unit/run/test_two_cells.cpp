@@ -101,8 +101,8 @@ constexpr std::array<Mirrored, 12> kMirrored{{{"x_c", 1, 1},
                                               {"u_slip", 1, 1e-2},
                                               {"u_migr", 1, 1e-3},
                                               {"w_c", -1, 1e-3},
-                                              {"u_slip_instant", 1, 1e-2},
-                                              {"u_migr_instant", 1, 1e-3},
+                                              {"u_slip_spline", 1, 1e-2},
+                                              {"u_migr_spline", 1, 1e-3},
                                               {"D12", 1, 1e-2},
                                               {"inclination_deg", 1, 1},
                                               {"mean_shear_stress", 1, 1e-1},
@@ -222,7 +222,7 @@ TEST_F(TwoCellsTest, FarApartEachCellMatchesTheIsolatedCell)
   ASSERT_EQ(pair.rows.size(), single.rows.size());
   for (const char* cell : {"_0", "_1"}) {
     for (const char* name :
-         {"D12", "y_c", "u_slip", "u_slip_instant", "mean_shear_stress", "omega_z", "reduced_volume"}) {
+         {"D12", "y_c", "u_slip", "u_slip_spline", "mean_shear_stress", "omega_z", "reduced_volume"}) {
       const double isolated = value(single, last, name);
       EXPECT_LE(std::abs(value(pair, last, std::string(name) + cell) - isolated), 5e-3 * std::abs(isolated))
           << name << cell << " vs the isolated " << isolated;
