@@ -9,6 +9,7 @@
 #include <fstream>
 #include <system_error>
 
+#include <signal.h>
 #include <unistd.h>
 
 namespace capsula::core {
@@ -40,6 +41,34 @@ void ensureWritableDirectory(const std::string& directory)
 std::string temporaryPathFor(const std::string& path)
 {
   return path + ".tmp." + std::to_string(::getpid());
+}
+
+std::vector<std::string> removeStaleTemporaryFiles(const std::string& directory)
+{
+  std::vector<std::string> removed;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(directory, ec)) {
+    const std::string name = entry.path().filename().string();
+    const auto mark = name.rfind(".tmp.");
+    if (mark == std::string::npos || mark == 0 || mark + 5 == name.size() ||
+        name.find_first_not_of("0123456789", mark + 5) != std::string::npos) {
+      continue;
+    }
+    const std::string digits = name.substr(mark + 5);
+    if (digits.size() > 9) {
+      continue;
+    }
+    const auto pid = static_cast<pid_t>(std::stol(digits));
+    // kill(pid, 0) sends nothing: it fails with ESRCH only if no such process exists.
+    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) {
+      continue;
+    }
+    std::error_code removeError;
+    if (entry.is_regular_file(removeError) && fs::remove(entry.path(), removeError)) {
+      removed.push_back(name);
+    }
+  }
+  return removed;
 }
 
 void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& write)

@@ -5,6 +5,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace capsula::core {
 
@@ -20,7 +21,12 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
 /// own temporary file, such as HDF5). Throws IoError.
 void replaceFileAtomically(const std::string& temporaryPath, const std::string& path);
 
-/// A temporary name next to `path`, unique to this process.
+/// A temporary name next to `path`, unique to this process: `path`.tmp.<process id>.
 std::string temporaryPathFor(const std::string& path);
+
+/// Removes the temporary files (temporaryPathFor) in `directory` of processes that no
+/// longer run: what a writer killed mid-write (SIGKILL, a crash) leaves. Those of a live
+/// process on this machine are kept. Returns the names removed.
+std::vector<std::string> removeStaleTemporaryFiles(const std::string& directory);
 
 } // namespace capsula::core
