@@ -3,6 +3,7 @@
 #include "capsula/run/Collective.hpp"
 
 #include <capsula/core/Error.hpp>
+#include <capsula/core/Files.hpp>
 
 #include <filesystem>
 
@@ -29,6 +30,7 @@ void RunOutputs::onRoot(const std::function<void()>& action) const
 
 void RunOutputs::open(const Teuchos::ParameterList& validatedDeck, const io::RunMetadata& metadata)
 {
+  application_ = metadata.application;
   onRoot([&] {
     try {
       output_.emplace(directory_);
@@ -36,6 +38,7 @@ void RunOutputs::open(const Teuchos::ParameterList& validatedDeck, const io::Run
       throw core::InputError(core::message("The output directory '", directory_, "' cannot be used (", e.what(),
                                            "). Choose another with --output DIR or 'Output/Directory'."));
     }
+    staleFiles_ = core::removeStaleTemporaryFiles(directory_);
     output_->writeRunMetadata(validatedDeck, metadata);
   });
 }
@@ -90,7 +93,11 @@ void RunOutputs::writeSnapshot(const std::string& base, const std::function<io::
 
 void RunOutputs::writeCheckpoint(const std::function<io::Checkpoint()>& checkpoint)
 {
-  onRoot([&] { io::writeCheckpoint(path("checkpoint.h5"), checkpoint()); });
+  onRoot([&] {
+    io::Checkpoint content = checkpoint();
+    content.application = application_;
+    io::writeCheckpoint(path("checkpoint.h5"), content);
+  });
 }
 
 void RunOutputs::writeSummary(const std::function<io::JsonValue()>& summary)
