@@ -1,2 +1,78 @@
 # Interruptions (SIGTERM, SIGINT, a kill during an output) and errors after set-up under MPI:
 # the run stops cleanly, says why, and a restart continues it.
+#
+# interrupt_run.py sends the signal once the run has printed its output at t = 0.25, checks
+# the exit code, the one "interrupted by" line, summary.json ("interrupted" at the time the
+# line names) and that nothing outlives the launcher, then restarts and compares metrics.csv
+# and snapshots.xdmf byte for byte with the uninterrupted run of the same rank count (2
+# ranks reduce sums in another order than 1, so each rank count has its own reference).
+set(_interrupt_out ${CMAKE_CURRENT_BINARY_DIR}/interruptions)
+set(_interrupt_run /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/interrupt_run.py)
+set(_mpiexec ${MPIEXEC_EXECUTABLE} ${CAPSULA_MPIEXEC_FLAGS} 2 ${CAPSULA_MPIEXEC_PREFLAGS})
+# About 1.5 s on 1 rank: long enough that the signal lands mid-run.
+set(_short_cell3d $<TARGET_FILE:cell3d> ${_decks}/cell3d/demo.xml --set "Cells/Cell 0/Mesh level=1"
+                  --set "Time integration/End time=2" --set "Output/Interval=0.25")
+set(_after_first_output "^t = 0\\.25 ")
+set(_same_outputs --compare metrics.csv snapshots.xdmf)
+
+add_test(NAME reliability_interrupt_reference_1_rank
+  COMMAND ${_short_cell3d} --output ${_interrupt_out}/reference_1)
+add_test(NAME reliability_interrupt_reference_2_ranks
+  COMMAND ${_mpiexec} ${_short_cell3d} --output ${_interrupt_out}/reference_2)
+set_tests_properties(reliability_interrupt_reference_1_rank PROPERTIES
+  LABELS reliability FIXTURES_SETUP interrupt_reference_1 TIMEOUT 300)
+set_tests_properties(reliability_interrupt_reference_2_ranks PROPERTIES
+  LABELS reliability FIXTURES_SETUP interrupt_reference_2 PROCESSORS 2 TIMEOUT 300)
+
+# capsula_add_interrupt_test(NAME RANKS SIGNAL TO EXIT_CODE [driver options...])
+function(capsula_add_interrupt_test name ranks signal to exit_code)
+  set(_command ${_short_cell3d})
+  if(ranks GREATER 1)
+    set(_command ${_mpiexec} ${_short_cell3d})
+  endif()
+  add_test(NAME reliability_${name}
+    COMMAND ${_interrupt_run} --signal ${signal} --to ${to} --exit-code ${exit_code} --output ${_interrupt_out}/${name}
+            --after ${_after_first_output} --reference ${_interrupt_out}/reference_${ranks} ${_same_outputs} ${ARGN}
+            -- ${_command})
+  set_tests_properties(reliability_${name} PROPERTIES
+    LABELS reliability FIXTURES_REQUIRED interrupt_reference_${ranks} PROCESSORS ${ranks} TIMEOUT 300
+    PASS_REGULAR_EXPRESSION "interrupt_run: OK" FAIL_REGULAR_EXPRESSION "interrupt_run: FAIL")
+endfunction()
+
+# One process: exit code 128 + signal; the restart also removes the temporary files a writer
+# killed mid-output left (and keeps one of a live process).
+capsula_add_interrupt_test(sigterm_1_rank 1 TERM process 143 --stale)
+capsula_add_interrupt_test(sigint_1_rank 1 INT process 130)
+# Two ranks signalled as a batch system does (every rank), and a signal that reaches one rank
+# only: the ranks agree after every step, so both stop after the same one.
+capsula_add_interrupt_test(sigterm_2_ranks_all 2 TERM ranks 143)
+capsula_add_interrupt_test(sigint_2_ranks_one 2 INT rank1 130 --stale)
+# Ctrl-C on mpiexec: Open MPI sends the ranks SIGTERM a second later and SIGKILL a second after
+# that, and itself exits with 1. The ranks must stop, write and leave before that SIGKILL,
+# and write nothing after mpiexec returned. A longer run, so that the delayed SIGTERM lands
+# before its end; the restart is checked above.
+add_test(NAME reliability_sigint_2_ranks_mpiexec
+  COMMAND ${_interrupt_run} --signal INT --to launcher --exit-code 1 --output ${_interrupt_out}/sigint_mpiexec
+          --after ${_after_first_output} --no-restart
+          -- ${_mpiexec} ${_short_cell3d} --set "Time integration/End time=4")
+set_tests_properties(reliability_sigint_2_ranks_mpiexec PROPERTIES
+  LABELS reliability PROCESSORS 2 TIMEOUT 300
+  PASS_REGULAR_EXPRESSION "interrupt_run: OK" FAIL_REGULAR_EXPRESSION "interrupt_run: FAIL")
+
+# tether2d, stopped in its free preparation stage (about 0.1 s into a 0.8 s run): the
+# checkpoint holds the stage's state, and the continued run tethers the cell as the
+# uninterrupted one does.
+set(_short_tether2d $<TARGET_FILE:tether2d> ${_decks}/tether2d/demo.xml --set "Cell/Number of points=64"
+                    --set "Tether/Minimum preparation time=0.5" --set "Tether/Maximum preparation time=1"
+                    --set "Time integration/End time=4" --set "Output/Interval=0.1")
+add_test(NAME reliability_interrupt_reference_tether2d
+  COMMAND ${_short_tether2d} --output ${_interrupt_out}/reference_tether2d)
+set_tests_properties(reliability_interrupt_reference_tether2d PROPERTIES
+  LABELS reliability FIXTURES_SETUP interrupt_reference_tether2d TIMEOUT 300)
+add_test(NAME reliability_sigterm_tether2d_preparation
+  COMMAND ${_interrupt_run} --signal TERM --to process --exit-code 143 --output ${_interrupt_out}/sigterm_tether2d
+          --after "^preparation = 0:" --reference ${_interrupt_out}/reference_tether2d
+          --compare preparation.csv metrics.csv -- ${_short_tether2d})
+set_tests_properties(reliability_sigterm_tether2d_preparation PROPERTIES
+  LABELS reliability FIXTURES_REQUIRED interrupt_reference_tether2d TIMEOUT 300
+  PASS_REGULAR_EXPRESSION "interrupt_run: OK" FAIL_REGULAR_EXPRESSION "interrupt_run: FAIL")
