@@ -110,10 +110,29 @@ void RunOutputs::writeSummaryAfterFailure(const std::function<io::JsonValue()>& 
   if (!writing() || comm_->getRank() != 0 || !output_) {
     return;
   }
+  io::JsonValue json;
   try {
-    io::writeJsonFile(path("summary.json"), summary());
+    json = summary();
+    io::writeJsonFile(path("summary.json"), json);
+    return;
   } catch (...) {
     // The original error is the one to report.
+  }
+  // On a full disk no new file can be written, but the "running" summary.json already
+  // has its space: the failed one takes it if it fits.
+  try {
+    io::JsonValue brief = io::JsonValue::object(); // what fits when the whole does not
+    for (const auto& [key, value] : json.members()) {
+      if (key == "application" || key == "status" || key == "failure" || key == "time") {
+        brief[key] = value;
+      }
+    }
+    for (const std::string& text : {io::toJson(json), io::toJson(json, 0), io::toJson(brief)}) {
+      if (core::overwriteInPlace(path("summary.json"), text + "\n")) {
+        return;
+      }
+    }
+  } catch (...) {
   }
 }
 

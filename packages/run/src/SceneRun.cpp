@@ -286,6 +286,9 @@ SceneRunResult SceneRunner::execute()
   }
   summary_.printTerms(log());
   outputs_.open(restarted_ ? std::optional<double>(state_.time) : std::nullopt);
+  // From the start: the status is never missing, and the file holds the space a failure on
+  // a full disk rewrites it in (RunOutputs::writeSummaryAfterFailure).
+  files_.writeSummary([&] { return summary("running", "", state_.time); });
 
   timeint::OutputSchedule schedule;
   schedule.interval = settings_.interval;

@@ -141,6 +141,18 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     integrator.setLinearisedSystem(jacobian);
   }
 
+  // The checkpoint is read and checked before the output directory is touched: a wrong
+  // --restart must leave the directory it names as it was.
+  std::optional<io::Checkpoint> checkpoint;
+  const std::string checkpointPath = restartDirectory ? *restartDirectory + "/checkpoint.h5" : "";
+  if (restartDirectory) {
+    try {
+      checkpoint = io::readCheckpoint(checkpointPath);
+    } catch (const core::IoError& e) {
+      throw core::InputError(core::message("--restart ", *restartDirectory, ": ", e.what()));
+    }
+    requireSameApplication(*checkpoint, "tether2d", checkpointPath);
+  }
   RunOutputs files(comm_, outputDirectory, restartDirectory);
   files.open(deck_, {"tether2d", deckSource_, comm_->getSize()});
   for (const auto& name : files.removedStaleFiles()) {
@@ -158,20 +170,13 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   // the warm start the model then restores.
   outputs.setCheckpointSections({&stateSection, &stages, &model_, &outputs});
 
-  if (restartDirectory) {
-    const std::string path = *restartDirectory + "/checkpoint.h5";
-    io::Checkpoint checkpoint;
-    try {
-      checkpoint = io::readCheckpoint(path);
-    } catch (const core::IoError& e) {
-      throw core::InputError(core::message("--restart ", *restartDirectory, ": ", e.what()));
-    }
-    requireSameApplication(checkpoint, "tether2d", path);
-    io::loadSections(checkpoint, path, {&stateSection, &stages, &model_, &outputs});
+  if (checkpoint) {
+    io::loadSections(*checkpoint, checkpointPath, {&stateSection, &stages, &model_, &outputs});
     state.steady = false; // a restart goes on from where the stopped run was
-    outputs.beginStage(checkpoint.time);
+    outputs.beginStage(checkpoint->time);
     if (log_ != nullptr) {
-      *log_ << "Restarting from " << path << " at tau = " << checkpoint.time << " (step " << checkpoint.step << ")\n";
+      *log_ << "Restarting from " << checkpointPath << " at tau = " << checkpoint->time << " (step " << checkpoint->step
+            << ")\n";
     }
   } else {
     state = integrator.start(0.0, model_.initialState());
@@ -206,6 +211,9 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
       addResults(json, result);
     });
   };
+  // From the start: the status is never missing, and the file holds the space a failure on
+  // a full disk rewrites it in (RunOutputs::writeSummaryAfterFailure).
+  files.writeSummary([&] { return summaryJson("running", ""); });
   try {
     if (stages.preparing()) {
       integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs, &switches, &watch});

@@ -71,7 +71,9 @@ public:
   void writeSummary(const std::function<io::JsonValue()>& summary);
   /// summary.json after a failure, which the caller rethrows: rank 0 only, not collective
   /// (the ranks may have failed at different places), and a failure to write is ignored
-  /// (the original error is the one to report).
+  /// (the original error is the one to report). On a full disk the previous summary.json
+  /// is overwritten in place (core::overwriteInPlace), shortened to its first entries if
+  /// the whole does not fit.
   void writeSummaryAfterFailure(const std::function<io::JsonValue()>& summary) noexcept;
 
 private:
