@@ -169,16 +169,15 @@ int runApplication(int argc, char** argv, const AppDescription& app, const Valid
     code = reportFailure(agreement, app.name, code, text);
   }
   MPI_Comm_free(&agreement);
-  if (code > 128) {
-    // When mpiexec itself was signalled it tears the job down and no longer answers
-    // MPI_Finalize (it sends SIGKILL 1 s after its SIGTERM): everything is written, so
-    // leave with the code if the finalisation does not return at once.
+  if (code != 0) {
+    // Leave without finalising MPI: every rank has agreed and written what it had to, and
+    // the finalisation can hang or crash after a failure. When mpiexec itself was signalled
+    // it tears the job down and no longer answers MPI_Finalize; after a full disk HDF5
+    // closes at MPI_Finalize the files whose close failed and dies on them. (mpiexec
+    // reports a non-zero exit the same way with or without it.)
     std::cout << std::flush;
     std::cerr << std::flush;
-    std::thread([code] {
-      std::this_thread::sleep_for(std::chrono::milliseconds(500));
-      std::_Exit(code);
-    }).detach();
+    std::_Exit(code);
   }
   return code;
 }
