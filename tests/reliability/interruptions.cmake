@@ -76,3 +76,59 @@ add_test(NAME reliability_sigterm_tether2d_preparation
 set_tests_properties(reliability_sigterm_tether2d_preparation PROPERTIES
   LABELS reliability FIXTURES_REQUIRED interrupt_reference_tether2d TIMEOUT 300
   PASS_REGULAR_EXPRESSION "interrupt_run: OK" FAIL_REGULAR_EXPRESSION "interrupt_run: FAIL")
+
+# Errors after set-up under MPI and the messages that must name the cause: exit code 2 for
+# input, 1 for a failed run, the message once (rank 0), never MPI_Abort's notice.
+set(_no_abort "MPI_ABORT|on rank [0-9]")
+capsula_add_reliability_test(reliability_missing_deck_2_ranks EXIT_CODE 2 RANKS 2
+  MATCHES "The deck '[^']*no-such-deck.xml' does not exist"
+  NOT_MATCHES "${_no_abort}|does not exist.*does not exist"
+  COMMAND $<TARGET_FILE:cell3d> ${_decks}/cell3d/no-such-deck.xml)
+capsula_add_reliability_test(reliability_directory_as_deck EXIT_CODE 2
+  MATCHES "The deck '[^']*input/cell3d' is a directory, not a deck file"
+  COMMAND $<TARGET_FILE:cell3d> ${_decks}/cell3d)
+capsula_add_reliability_test(reliability_cell_touching_wall EXIT_CODE 2
+  MATCHES "'Cells/Cell 0' touches the wall: .* Raise the y component of 'Cells/Cell 0/Center'"
+  NOT_MATCHES "more than -?0[,.]"
+  COMMAND $<TARGET_FILE:cell3d> ${_decks}/cell3d/demo.xml --output ${_interrupt_out}/touching
+          --set "Cells/Cell 0/Mesh level=1" --set "Cells/Cell 0/Center={0, 1, 0}")
+# A failure every rank meets after the set-up (the first step's state is not finite).
+capsula_add_reliability_test(reliability_tiny_capillary_number_2_ranks EXIT_CODE 1 RANKS 2
+  MATCHES "'Flow/Capillary number' = 1e-300 is the cause"
+  NOT_MATCHES "${_no_abort}|is the cause.*is the cause|Reduce 'Time integration/Tolerance'"
+  COMMAND $<TARGET_FILE:cell3d> ${_decks}/cell3d/demo.xml --output ${_interrupt_out}/tiny_ca
+          --set "Cells/Cell 0/Mesh level=1" --set "Flow/Capillary number=1e-300")
+# tether2d given a cell3d checkpoint (the reference run above) names both apps.
+capsula_add_reliability_test(reliability_restart_from_another_app EXIT_CODE 2
+  MATCHES "it is a checkpoint of cell3d, not of tether2d"
+  COMMAND $<TARGET_FILE:tether2d> ${_decks}/tether2d/demo.xml --restart ${_interrupt_out}/reference_1
+          --output ${_interrupt_out}/another_app)
+set_tests_properties(reliability_restart_from_another_app PROPERTIES FIXTURES_REQUIRED interrupt_reference_1)
+
+# A full disk (full_disk.cpp, preloaded: the output directory may grow by 60 kB, enough for
+# the set-up and the first outputs) on 2 ranks: exit code 1, the message says the disk is
+# full and what to do, and summary.json records the failure although nothing new fits.
+add_library(capsula_full_disk MODULE full_disk.cpp)
+target_link_libraries(capsula_full_disk PRIVATE ${CMAKE_DL_LIBS})
+set(_full ${_interrupt_out}/full_disk)
+add_test(NAME reliability_full_disk_clean COMMAND ${CMAKE_COMMAND} -E rm -rf ${_full})
+set_tests_properties(reliability_full_disk_clean PROPERTIES LABELS reliability FIXTURES_SETUP full_disk_clean)
+capsula_add_reliability_test(reliability_full_disk_2_ranks EXIT_CODE 1 RANKS 2
+  MATCHES "The disk is full \\(No space left on device\\): free space there, or write elsewhere with --output DIR"
+  NOT_MATCHES "${_no_abort}|disk is full.*disk is full"
+  COMMAND /usr/bin/env LD_PRELOAD=$<TARGET_FILE:capsula_full_disk> CAPSULA_FULL_DISK_DIR=${_full}
+          CAPSULA_FULL_DISK_BYTES=60000 $<TARGET_FILE:cell3d> ${_decks}/cell3d/demo.xml --output ${_full}
+          --set "Cells/Cell 0/Mesh level=1" --set "Time integration/End time=2" --set "Output/Interval=0.25")
+set_tests_properties(reliability_full_disk_2_ranks PROPERTIES
+  FIXTURES_REQUIRED full_disk_clean FIXTURES_SETUP full_disk_run)
+add_test(NAME reliability_full_disk_summary
+  COMMAND /usr/bin/python3 -c "import json, sys; s = json.load(open(sys.argv[1])); print(s); sys.exit(not (s['status'] == 'failed' and 'disk is full' in s['failure']))"
+          ${_full}/summary.json)
+set_tests_properties(reliability_full_disk_summary PROPERTIES LABELS reliability FIXTURES_REQUIRED full_disk_run)
+
+# Restarts that drop snapshots written after the checkpoint give their space back.
+add_test(NAME reliability_restart_reclaims_snapshot_space
+  COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/snapshot_space.sh $<TARGET_FILE:check_snapshots>
+          ${_interrupt_out}/reference_1 ${_interrupt_out}/snapshot_space -- ${_short_cell3d})
+set_tests_properties(reliability_restart_reclaims_snapshot_space PROPERTIES
+  LABELS reliability FIXTURES_REQUIRED interrupt_reference_1 TIMEOUT 300)
