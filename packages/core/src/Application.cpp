@@ -65,7 +65,7 @@ Teuchos::RCP<Teuchos::ParameterList> loadDeck(const CommandLineOptions& options,
 /// every rank returns rank 0's code. If some never come, the failure is this rank's alone
 /// and the others wait for it in a collective: it reports with its rank and MPI_Abort ends
 /// them all.
-int reportFailure(MPI_Comm agreement, const std::string& app, int code, const std::string& text)
+int reportFailure(MPI_Comm agreement, const std::string& app, int code, const std::string& what)
 {
   int size = 1;
   int rank = 0;
@@ -90,11 +90,11 @@ int reportFailure(MPI_Comm agreement, const std::string& app, int code, const st
       MPI_Bcast(&code, 1, MPI_INT, 0, agreement);
     }
     if (rank == 0) {
-      std::cerr << text << "\n" << std::flush;
+      std::cerr << app << (code > 128 ? ": " : ": error: ") << what << "\n" << std::flush;
     }
     return code;
   }
-  std::cerr << app << ": error on rank " << rank << " (the other ranks did not fail with it): " << text << "\n"
+  std::cerr << app << ": error on rank " << rank << " (the other ranks did not fail with it): " << what << "\n"
             << std::flush;
   MPI_Abort(agreement, code);
   return code;
@@ -137,7 +137,7 @@ int runApplication(int argc, char** argv, const AppDescription& app, const Valid
   context.comm = comm;
   context.out = &out;
   int code = 0;
-  std::string text;
+  std::string what;
   try {
     context.options = parseCommandLine(argc, argv);
     if (context.options.help) {
@@ -157,16 +157,16 @@ int runApplication(int argc, char** argv, const AppDescription& app, const Valid
     }
   } catch (const Interrupted& e) {
     code = 128 + e.signal();
-    text = app.name + ": " + e.what();
+    what = e.what();
   } catch (const InputError& e) {
     code = 2;
-    text = app.name + ": error: " + e.what();
+    what = e.what();
   } catch (const std::exception& e) {
     code = 1;
-    text = app.name + ": error: " + e.what();
+    what = e.what();
   }
   if (code != 0) {
-    code = reportFailure(agreement, app.name, code, text);
+    code = reportFailure(agreement, app.name, code, what);
   }
   MPI_Comm_free(&agreement);
   if (code != 0) {
