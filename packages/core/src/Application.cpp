@@ -124,8 +124,12 @@ int runApplication(int argc, char** argv, const AppDescription& app, const Valid
       return 0;
     }
   }
+  // An app that continues from checkpoints stops cleanly on SIGTERM/SIGINT (its time loop
+  // asks for them, run::InterruptionWatch); the others keep the default: killed at once.
   // Before MPI and Kokkos start: a signal during the set-up stops the run after its first step.
-  installInterruptionHandlers();
+  if (app.supportsRestart) {
+    installInterruptionHandlers();
+  }
   Tpetra::ScopeGuard tpetraScope(&argc, &argv);
   const auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
