@@ -94,6 +94,18 @@ capsula_add_reliability_test(reliability_cell_touching_wall EXIT_CODE 2
   NOT_MATCHES "more than -?0[,.]"
   COMMAND $<TARGET_FILE:cell3d> ${_decks}/cell3d/demo.xml --output ${_interrupt_out}/touching
           --set "Cells/Cell 0/Mesh level=1" --set "Cells/Cell 0/Center={0, 1, 0}")
+# A failure one rank meets alone (here its deck is missing, given to it alone through
+# mpiexec's MPMD syntax) while the other waits in a collective: after waiting 10 s for the
+# other, the rank reports with its number and MPI_Abort ends the job with its code.
+add_test(NAME reliability_error_on_one_rank_aborts
+  COMMAND ${CMAKE_COMMAND} -DEXIT_CODE=2
+          "-DMATCHES=error on rank 1 \\(the other ranks did not fail with it\\): The deck 'no-such-deck.xml' does not exist"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/run_expecting.cmake --
+          ${MPIEXEC_EXECUTABLE} ${CAPSULA_MPIEXEC_PREFLAGS}
+          ${CAPSULA_MPIEXEC_FLAGS} 1 $<TARGET_FILE:cell3d> ${_decks}/cell3d/demo.xml --output ${_interrupt_out}/one_rank
+          --set "Cells/Cell 0/Mesh level=1" :
+          ${CAPSULA_MPIEXEC_FLAGS} 1 $<TARGET_FILE:cell3d> no-such-deck.xml --output ${_interrupt_out}/one_rank)
+set_tests_properties(reliability_error_on_one_rank_aborts PROPERTIES LABELS reliability PROCESSORS 2 TIMEOUT 300)
 # A failure every rank meets after the set-up (the first step's state is not finite).
 capsula_add_reliability_test(reliability_tiny_capillary_number_2_ranks EXIT_CODE 1 RANKS 2
   MATCHES "'Flow/Capillary number' = 1e-300 is the cause"
