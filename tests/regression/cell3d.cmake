@@ -116,7 +116,7 @@ function(cell3d_rejects name expected)
   set_tests_properties(app_cell3d_rejects_${name} PROPERTIES LABELS app PASS_REGULAR_EXPRESSION "${expected}")
 endfunction()
 set(_demo ${_decks}/demo.xml --output ${_out}/rejected)
-cell3d_rejects(cell_crossing_the_wall "'Cells/Cell 0' crosses the wall: node [0-9]+ lies at y = -0.1"
+cell3d_rejects(cell_crossing_the_wall "'Cells/Cell 0' crosses the wall: its lowest node \\([0-9]+\\) lies at y = -0.1"
   ${_demo} ${_level1} --set "Cells/Cell 0/Center={0, 0.9, 0}")
 cell3d_rejects(zero_capillary_number "'Flow/Capillary number' = 0 is invalid"
   ${_demo} --set "Flow/Capillary number=0")

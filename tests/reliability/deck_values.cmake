@@ -78,7 +78,9 @@ set_tests_properties(reliability_restart_source_cell3d PROPERTIES LABELS reliabi
 capsula_add_reliability_test(reliability_restart_with_nothing_to_do EXIT_CODE 2
   MATCHES "--restart [^:]*restart_source: the checkpoint is at t = 0\\.05, at or past 'Time integration/End time' = 0\\.05. nothing to do"
   COMMAND $<TARGET_FILE:cell3d> ${_cell3d_demo} ${_short} --output ${_out}/restart_source --restart ${_out}/restart_source)
-set_tests_properties(reliability_restart_with_nothing_to_do PROPERTIES FIXTURES_REQUIRED reliability_restart_cell3d)
+set_tests_properties(reliability_restart_with_nothing_to_do PROPERTIES
+  FIXTURES_REQUIRED "reliability_restart_cell3d;reliability_restart_record_cell3d"
+  FIXTURES_SETUP reliability_restart_record_cell3d.refused)
 capsula_add_reliability_test(reliability_restart_before_the_checkpoint EXIT_CODE 2
   MATCHES "the checkpoint is at t = 0\\.05, at or past 'Time integration/End time' = 0\\.02. nothing to do"
   COMMAND $<TARGET_FILE:cell3d> ${_cell3d_demo} ${_short} --set "Time integration/End time=0.02"
@@ -91,20 +93,39 @@ add_test(NAME reliability_restart_source_tether2d
   COMMAND $<TARGET_FILE:tether2d> ${_decks}/tether2d/demo.xml ${_tether_short} --output ${_out}/restart_source_tether2d)
 set_tests_properties(reliability_restart_source_tether2d PROPERTIES LABELS reliability
   FIXTURES_SETUP reliability_restart_tether2d)
+# A refused restart leaves the directory it names as it was: its record of the run
+# (run.json, summary.json, metrics.csv) is copied before and compared after.
+foreach(_app cell3d tether2d)
+  set(_dir ${_out}/restart_source)
+  if(_app STREQUAL tether2d)
+    set(_dir ${_out}/restart_source_tether2d)
+  endif()
+  add_test(NAME reliability_restart_record_before_${_app}
+    COMMAND bash -c "mkdir -p ${_out}/record_${_app} && cp ${_dir}/run.json ${_dir}/summary.json ${_dir}/metrics.csv ${_out}/record_${_app}/")
+  set_tests_properties(reliability_restart_record_before_${_app} PROPERTIES LABELS reliability
+    FIXTURES_REQUIRED reliability_restart_${_app} FIXTURES_SETUP reliability_restart_record_${_app})
+  add_test(NAME reliability_refused_restart_leaves_the_record_${_app}
+    COMMAND bash -c "for f in run.json summary.json metrics.csv; do cmp ${_out}/record_${_app}/$f ${_dir}/$f || exit 1; done")
+  set_tests_properties(reliability_refused_restart_leaves_the_record_${_app} PROPERTIES LABELS reliability
+    FIXTURES_REQUIRED reliability_restart_record_${_app}.refused)
+endforeach()
+
 capsula_add_reliability_test(reliability_restart_tether2d_with_nothing_to_do EXIT_CODE 2
   MATCHES "the checkpoint is at tau = 0\\.05, at or past 'Time integration/End time' = 0\\.05. nothing to do"
   COMMAND $<TARGET_FILE:tether2d> ${_decks}/tether2d/demo.xml ${_tether_short}
           --output ${_out}/restart_source_tether2d --restart ${_out}/restart_source_tether2d)
 set_tests_properties(reliability_restart_tether2d_with_nothing_to_do PROPERTIES
-  FIXTURES_REQUIRED reliability_restart_tether2d)
+  FIXTURES_REQUIRED "reliability_restart_tether2d;reliability_restart_record_tether2d"
+  FIXTURES_SETUP reliability_restart_record_tether2d.refused)
 
 # The wall's own safety gap at the start (as 'Cells/Minimum gap' is for two cells). A centre
 # at height 1 puts the lowest node on the wall: it was told to rise "by more than -0".
 capsula_add_reliability_test(reliability_cell_started_just_above_the_wall EXIT_CODE 2
-  MATCHES "'Cells/Cell 0' starts too close to the wall: node [0-9]+ lies at y = 1e-05, not more than 'Wall/Minimum gap' = 0\\.025"
+  MATCHES "'Cells/Cell 0' starts too close to the wall: its lowest node \\([0-9]+\\) lies at y = 1e-05, not more than 'Wall/Minimum gap' = 0\\.025"
   COMMAND $<TARGET_FILE:cell3d> ${_cell3d_demo} --set "Cells/Cell 0/Center={0, 1.00001, 0}" --output ${_out}/never)
 capsula_add_reliability_test(reliability_cell_centre_at_height_one_is_told_a_positive_rise EXIT_CODE 2
-  MATCHES "'Cells/Cell 0' touches the wall: node [0-9]+ lies at y = 0, .* by more than 0\\.025, lower 'Wall/Minimum gap'"
+  MATCHES "'Cells/Cell 0' touches the wall: its lowest node \\([0-9]+\\) lies at y = 0, .* by more than 0\\.025, lower 'Wall/Minimum gap'"
+  NOT_MATCHES "more than -|more than 0,"
   COMMAND $<TARGET_FILE:cell3d> ${_cell3d_demo} --set "Cells/Cell 0/Center={0, 1, 0}" --output ${_out}/never)
 capsula_add_reliability_test(reliability_wall_gap_can_be_lowered EXIT_CODE 0
   MATCHES "Done: finished at t = 0\\.001 after 1 steps"

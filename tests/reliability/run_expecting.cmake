@@ -2,10 +2,12 @@
 # PASS_REGULAR_EXPRESSION cannot do together (a matching message with the wrong exit code
 # would pass there).
 #
-#   cmake -DEXIT_CODE=<n> -DMATCHES=<regex> [-DWORKING_DIRECTORY=<dir>] -P run_expecting.cmake -- <command> [args...]
+#   cmake -DEXIT_CODE=<n> -DMATCHES=<regex> [-DNOT_MATCHES=<regex>] [-DWORKING_DIRECTORY=<dir>]
+#         -P run_expecting.cmake -- <command> [args...]
 #
-# stdout and stderr are matched together, as a user reads them in a terminal. MATCHES may
-# not hold ';' (CMake splits arguments there): write '.' for it.
+# stdout and stderr are matched together, as a user reads them in a terminal. NOT_MATCHES
+# must find nothing (a message printed twice, an MPI_Abort banner). Neither regex may hold
+# ';' (CMake splits arguments there): write '.' for it.
 set(_command)
 set(_after_separator FALSE)
 math(EXPR _last "${CMAKE_ARGC} - 1")
@@ -37,4 +39,10 @@ endif()
 string(REGEX MATCH "${MATCHES}" _matched "${_output}")
 if("${_matched}" STREQUAL "")
   message(FATAL_ERROR "the output does not match: ${MATCHES}")
+endif()
+if(NOT_MATCHES)
+  string(REGEX MATCH "${NOT_MATCHES}" _unwanted "${_output}")
+  if(NOT "${_unwanted}" STREQUAL "")
+    message(FATAL_ERROR "the output contains what it must not: ${_unwanted}")
+  endif()
 endif()

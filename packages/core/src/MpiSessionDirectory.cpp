@@ -40,9 +40,15 @@ MpiSessionDirectory::MpiSessionDirectory()
 
 MpiSessionDirectory::~MpiSessionDirectory()
 {
+  remove();
+}
+
+void MpiSessionDirectory::remove()
+{
   if (!path_.empty()) {
     std::error_code ignored; // a directory that cannot be removed costs nothing to the run
     std::filesystem::remove_all(path_, ignored);
+    path_.clear();
   }
 }
 

@@ -39,6 +39,9 @@ void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint)
     hdf5::writeAttribute(file.get(), "time", checkpoint.time);
     hdf5::writeAttribute(file.get(), "step", checkpoint.step);
     hdf5::writeAttribute(file.get(), "step size", checkpoint.stepSize);
+    if (!checkpoint.application.empty()) {
+      hdf5::writeAttribute(file.get(), "application", checkpoint.application);
+    }
     hdf5::writeString(file.get(), "deck", checkpoint.deckXml);
     hdf5::Handle arrays = hdf5::createGroup(file.get(), "arrays");
     for (const auto& [name, values] : checkpoint.arrays) {
@@ -78,6 +81,9 @@ Checkpoint readCheckpoint(const std::string& path)
     c.time = hdf5::readDoubleAttribute(file.get(), "time");
     c.step = hdf5::readIntegerAttribute(file.get(), "step");
     c.stepSize = hdf5::readDoubleAttribute(file.get(), "step size");
+    if (hdf5::hasAttribute(file.get(), "application")) {
+      c.application = hdf5::readStringAttribute(file.get(), "application");
+    }
     c.deckXml = hdf5::readString(file.get(), "deck");
     hdf5::Handle arrays = hdf5::openGroup(file.get(), "arrays");
     for (const auto& name : hdf5::memberNames(arrays.get())) {

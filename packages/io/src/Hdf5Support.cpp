@@ -3,6 +3,7 @@
 #include "Hdf5Support.hpp"
 
 #include "capsula/core/Error.hpp"
+#include "capsula/core/Files.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -52,10 +53,12 @@ std::string where(hid_t parent, const std::string& name)
   return "'" + path + name + "' in '" + fileNameOf(parent) + "'";
 }
 
+// errno is cleared by ErrorSilencer, which every call wrapped here starts with, so a
+// full disk seen now is this call's.
 void check(bool ok, const std::string& what)
 {
   if (!ok) {
-    throw IoError("HDF5: cannot " + what + ".");
+    throw IoError("HDF5: cannot " + what + "." + core::diskFullAdvice(errno));
   }
 }
 
@@ -246,6 +249,7 @@ ErrorSilencer::ErrorSilencer()
 {
   H5Eget_auto2(H5E_DEFAULT, &function_, &data_);
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  errno = 0;
 }
 
 ErrorSilencer::~ErrorSilencer()
@@ -287,6 +291,13 @@ void flush(hid_t object)
 {
   ErrorSilencer quiet;
   check(H5Fflush(object, H5F_SCOPE_GLOBAL) >= 0, "flush '" + fileNameOf(object) + "'");
+}
+
+void copyObject(hid_t fromParent, const std::string& name, hid_t toParent)
+{
+  ErrorSilencer quiet;
+  check(H5Ocopy(fromParent, name.c_str(), toParent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT) >= 0,
+        "copy " + where(fromParent, name) + " to '" + fileNameOf(toParent) + "'");
 }
 
 Handle createAnonymousGroup(hid_t object)
@@ -507,11 +518,12 @@ void syncToDisk(const std::string& path)
 {
   const int fd = ::open(path.c_str(), O_RDONLY);
   if (fd < 0 || ::fsync(fd) != 0) {
-    const std::string why = std::strerror(errno);
+    const int error = errno;
+    const std::string why = std::strerror(error);
     if (fd >= 0) {
       ::close(fd);
     }
-    throw IoError("Cannot flush '" + path + "' to disk: " + why + ".");
+    throw IoError("Cannot flush '" + path + "' to disk: " + why + "." + core::diskFullAdvice(error));
   }
   ::close(fd);
 }

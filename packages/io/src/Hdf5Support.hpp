@@ -60,6 +60,9 @@ Handle openGroup(hid_t parent, const std::string& name);
 /// appears whole or not at all.
 Handle createAnonymousGroup(hid_t object);
 void link(hid_t object, hid_t parent, const std::string& name);
+/// Copies the object `name` of `fromParent` (a group with all it holds) to `toParent`, in
+/// the same or another file.
+void copyObject(hid_t fromParent, const std::string& name, hid_t toParent);
 /// Removes the link `name` from `parent` (the object goes when nothing links to it).
 void unlink(hid_t parent, const std::string& name);
 bool exists(hid_t parent, const std::string& name);

@@ -403,31 +403,46 @@ Snapshot readSnapshot(const std::string& path, std::size_t index)
 
 void truncateSnapshots(const std::string& path, std::size_t count)
 {
-  hdf5::Handle file = openSnapshotFile(path, true);
-  hdf5::Handle snapshots = hdf5::openGroup(file.get(), snapshotRoot);
-  hdf5::Handle meshes = hdf5::openGroup(file.get(), meshRoot);
-  const std::size_t total = indexedMembers(snapshots.get(), snapshotRoot, path).size();
-  const std::size_t versions = indexedMembers(meshes.get(), meshRoot, path).size();
-  if (count >= total) {
-    return;
+  hdf5::undoInterruptedWrite(path);
+  const std::string temporary = core::temporaryPathFor(path);
+  {
+    hdf5::Handle file = openSnapshotFile(path, false);
+    hdf5::Handle snapshots = hdf5::openGroup(file.get(), snapshotRoot);
+    hdf5::Handle meshes = hdf5::openGroup(file.get(), meshRoot);
+    const std::size_t total = indexedMembers(snapshots.get(), snapshotRoot, path).size();
+    if (count >= total) {
+      return;
+    }
+    // Mesh versions are numbered in the order the snapshots first use them: keep those up
+    // to the last kept snapshot's.
+    std::size_t keptVersions = 0;
+    if (count > 0) {
+      hdf5::Handle last = hdf5::openGroup(snapshots.get(), snapshotGroupName(count - 1));
+      keptVersions = static_cast<std::size_t>(hdf5::readIntegerAttribute(last.get(), "mesh")) + 1;
+    }
+    try {
+      hdf5::Handle copy = hdf5::createFile(temporary, "snapshot");
+      hdf5::writeAttribute(copy.get(), "format", std::string(snapshotFormatName));
+      hdf5::writeAttribute(copy.get(), "version", snapshotFormatVersion);
+      hdf5::Handle copiedMeshes = hdf5::createGroup(copy.get(), meshRoot);
+      hdf5::Handle copiedSnapshots = hdf5::createGroup(copy.get(), snapshotRoot);
+      for (std::size_t m = 0; m < keptVersions; ++m) {
+        hdf5::copyObject(meshes.get(), snapshotGroupName(m), copiedMeshes.get());
+      }
+      for (std::size_t k = 0; k < count; ++k) {
+        hdf5::copyObject(snapshots.get(), snapshotGroupName(k), copiedSnapshots.get());
+      }
+      copiedMeshes.close();
+      copiedSnapshots.close();
+      copy.close();
+      hdf5::syncToDisk(temporary);
+    } catch (...) {
+      std::remove(temporary.c_str());
+      throw;
+    }
   }
-  // Mesh versions are numbered in the order the snapshots first use them: keep those up
-  // to the last kept snapshot's.
-  std::size_t keptVersions = 0;
-  if (count > 0) {
-    hdf5::Handle last = hdf5::openGroup(snapshots.get(), snapshotGroupName(count - 1));
-    keptVersions = static_cast<std::size_t>(hdf5::readIntegerAttribute(last.get(), "mesh")) + 1;
-  }
-  // Latest first, so that a failure part-way still leaves a gap-free prefix.
-  for (std::size_t k = total; k-- > count;) {
-    hdf5::unlink(snapshots.get(), snapshotGroupName(k));
-  }
-  for (std::size_t m = versions; m-- > keptVersions;) {
-    hdf5::unlink(meshes.get(), snapshotGroupName(m));
-  }
-  snapshots.close();
-  meshes.close();
-  closeDurably(file, path);
+  hdf5::discardUndoJournal(path); // none: undone above, and this reader wrote none
+  core::replaceFileAtomically(temporary, path);
 }
 
 } // namespace capsula::io

@@ -64,4 +64,14 @@ void requireSameRun(const Teuchos::ParameterList& current, const std::string& ch
                                   "restart (use the deck.xml written next to the checkpoint).");
 }
 
+void requireSameApplication(const io::Checkpoint& checkpoint, const std::string& application,
+                            const std::string& checkpointPath)
+{
+  core::require<core::InputError>(checkpoint.application.empty() || checkpoint.application == application,
+                                  "Cannot restart from '", checkpointPath, "': it is a checkpoint of ",
+                                  checkpoint.application, ", not of ", application, ". Continue it with ",
+                                  checkpoint.application, " --restart, or start ", application,
+                                  " without --restart (or with the directory of a ", application, " run).");
+}
+
 } // namespace capsula::run

@@ -3,6 +3,7 @@
 #include "capsula/run/Collective.hpp"
 
 #include <capsula/core/Error.hpp>
+#include <capsula/core/Files.hpp>
 
 #include <filesystem>
 
@@ -29,6 +30,7 @@ void RunOutputs::onRoot(const std::function<void()>& action) const
 
 void RunOutputs::open(const Teuchos::ParameterList& validatedDeck, const io::RunMetadata& metadata)
 {
+  application_ = metadata.application;
   onRoot([&] {
     try {
       output_.emplace(directory_);
@@ -36,6 +38,7 @@ void RunOutputs::open(const Teuchos::ParameterList& validatedDeck, const io::Run
       throw core::InputError(core::message("The output directory '", directory_, "' cannot be used (", e.what(),
                                            "). Choose another with --output DIR or 'Output/Directory'."));
     }
+    staleFiles_ = core::removeStaleTemporaryFiles(directory_);
     output_->writeRunMetadata(validatedDeck, metadata);
   });
 }
@@ -90,7 +93,11 @@ void RunOutputs::writeSnapshot(const std::string& base, const std::function<io::
 
 void RunOutputs::writeCheckpoint(const std::function<io::Checkpoint()>& checkpoint)
 {
-  onRoot([&] { io::writeCheckpoint(path("checkpoint.h5"), checkpoint()); });
+  onRoot([&] {
+    io::Checkpoint content = checkpoint();
+    content.application = application_;
+    io::writeCheckpoint(path("checkpoint.h5"), content);
+  });
 }
 
 void RunOutputs::writeSummary(const std::function<io::JsonValue()>& summary)
@@ -103,10 +110,29 @@ void RunOutputs::writeSummaryAfterFailure(const std::function<io::JsonValue()>& 
   if (!writing() || comm_->getRank() != 0 || !output_) {
     return;
   }
+  io::JsonValue json;
   try {
-    io::writeJsonFile(path("summary.json"), summary());
+    json = summary();
+    io::writeJsonFile(path("summary.json"), json);
+    return;
   } catch (...) {
     // The original error is the one to report.
+  }
+  // On a full disk no new file can be written, but the "running" summary.json already
+  // has its space: the failed one takes it if it fits.
+  try {
+    io::JsonValue brief = io::JsonValue::object(); // what fits when the whole does not
+    for (const auto& [key, value] : json.members()) {
+      if (key == "application" || key == "status" || key == "failure" || key == "time") {
+        brief[key] = value;
+      }
+    }
+    for (const std::string& text : {io::toJson(json), io::toJson(json, 0), io::toJson(brief)}) {
+      if (core::overwriteInPlace(path("summary.json"), text + "\n")) {
+        return;
+      }
+    }
+  } catch (...) {
   }
 }
 

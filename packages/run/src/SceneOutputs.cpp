@@ -221,6 +221,11 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
   return steady;
 }
 
+void SceneOutputs::writeCheckpoint(const timeint::IntegrationState& state)
+{
+  files_.writeCheckpoint([&] { return checkpoint(state); });
+}
+
 io::Checkpoint SceneOutputs::checkpoint(const timeint::IntegrationState& state) const
 {
   io::Checkpoint checkpoint;

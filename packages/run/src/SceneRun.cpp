@@ -2,6 +2,7 @@
 
 #include "capsula/run/Collective.hpp"
 #include "capsula/run/IntegrationStateSection.hpp"
+#include "capsula/run/InterruptionWatch.hpp"
 #include "capsula/run/PairMetrics.hpp"
 #include "capsula/run/RestartDeck.hpp"
 #include "capsula/run/RunOutputs.hpp"
@@ -12,6 +13,7 @@
 #include "capsula/run/WallClock.hpp"
 
 #include <capsula/core/Error.hpp>
+#include <capsula/core/Interruption.hpp>
 #include <capsula/core/Timers.hpp>
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/scene/SceneDescription.hpp>
@@ -77,7 +79,9 @@ private:
   bool cellsTooClose(const timeint::IntegrationState& state);
   void progress(const timeint::IntegrationState& state);
   io::JsonValue summary(const std::string& status, const std::string& note) const;
+  io::JsonValue summary(const std::string& status, const std::string& note, double time) const;
   void report(const std::string& status);
+  [[noreturn]] void stopInterrupted(int signal);
 
   const Teuchos::ParameterList& deck_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
@@ -94,6 +98,7 @@ private:
   SceneOutputs outputs_;
   IntegrationStateSection stateSection_;
   RunSummary summary_;
+  InterruptionWatch watch_;
   // The stiff methods' Jacobian, built for the scene it belongs to (again after an adaption).
   std::shared_ptr<scene::VelocityJacobian> jacobian_;
   const scene::Scene* jacobianScene_ = nullptr;
@@ -121,7 +126,8 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
       live_(description_, deck, comm, kernels, state_, *log_),
       outputs_(live_, description_, settings_, files_, integrator_.settings().steadyTolerance),
       stateSection_(state_, "timeint."),
-      summary_(options.application, deck, comm->getSize())
+      summary_(options.application, deck, comm->getSize()),
+      watch_(*comm)
 {
   // Loaded in this order: the scene's meshes take their positions from the state.
   if (options_.restartDirectory) {
@@ -166,6 +172,7 @@ void SceneRunner::restore()
   } catch (const core::IoError& e) {
     throw core::InputError(core::message("--restart ", *options_.restartDirectory, ": ", e.what()));
   }
+  requireSameApplication(checkpoint, options_.application, path);
   requireSameRun(deck_, checkpoint.deckXml, path);
   io::loadSections(checkpoint, path, {&stateSection_, &outputs_, &live_});
   const double end = integrator_.settings().endTime;
@@ -258,12 +265,17 @@ void SceneRunner::progress(const timeint::IntegrationState& state)
 // `note`: the failure message (status "failed") or why the run stopped early.
 io::JsonValue SceneRunner::summary(const std::string& status, const std::string& note) const
 {
-  return summary_.json(status, note, outputs_.lastTime(), state_.statistics, [this](io::JsonValue& json) {
+  return summary(status, note, outputs_.lastTime());
+}
+
+io::JsonValue SceneRunner::summary(const std::string& status, const std::string& note, double time) const
+{
+  return summary_.json(status, note, time, state_.statistics, [this](io::JsonValue& json) {
     json["time integration"]["method"] = timeint::toString(integrator_.settings().method);
     json["time integration"]["in use"] = integrator_.activeMethodName(state_);
-    for (const auto& [time, reason] : methodSwitches_) {
+    for (const auto& [switchTime, reason] : methodSwitches_) {
       io::JsonValue change = io::JsonValue::object();
-      change["time"] = time;
+      change["time"] = switchTime;
       change["reason"] = reason;
       json["time integration"]["switches"].append(change);
     }
@@ -277,8 +289,14 @@ SceneRunResult SceneRunner::execute()
   summary_.begin(state_.statistics, restarted_);
   files_.open(deck_, {options_.application, options_.deckSource, comm_->getSize()});
   log() << "Output directory: " << files_.directory() << "\n";
+  for (const auto& name : files_.removedStaleFiles()) {
+    log() << "Removed " << name << ", left by a writer that was killed\n";
+  }
   summary_.printTerms(log());
   outputs_.open(restarted_ ? std::optional<double>(state_.time) : std::nullopt);
+  // From the start: the status is never missing, and the file holds the space a failure on
+  // a full disk rewrites it in (RunOutputs::writeSummaryAfterFailure).
+  files_.writeSummary([&] { return summary("running", "", state_.time); });
 
   timeint::OutputSchedule schedule;
   schedule.interval = settings_.interval;
@@ -291,11 +309,14 @@ SceneRunResult SceneRunner::execute()
     }
     // The start is observed (never steady: the test needs t > 0); the ETA counts from after it.
     simulatedStart_ = state_.time;
-    integrator_.integrate(state_, schedule, {&live_, &outputs_, this});
+    integrator_.integrate(state_, schedule, {&live_, &outputs_, this, &watch_});
   } catch (const std::exception& e) {
     // Record the failure next to the last good outputs, then let the app report it.
     files_.writeSummaryAfterFailure([&] { return summary("failed", e.what()); });
     throw;
+  }
+  if (watch_.signal() != 0 && !tooClose_ && !outputs_.steady()) {
+    stopInterrupted(watch_.signal());
   }
   const std::string status = tooClose_ ? "too close" : outputs_.steady() ? "steady" : "finished";
   files_.writeSummary([&] { return summary(status, stopReason_); });
@@ -307,6 +328,22 @@ SceneRunResult SceneRunner::execute()
   result.outputDirectory = files_.directory();
   result.terms = summary_.terms();
   return result;
+}
+
+// A signal stopped the loop after the step every rank agreed on: the checkpoint and
+// summary.json at that step, then the line the app prints.
+void SceneRunner::stopInterrupted(int signal)
+{
+  std::ostringstream line;
+  line << std::setprecision(6) << "interrupted by " << core::signalName(signal) << " at t = " << state_.time
+       << " (step " << state_.statistics.acceptedSteps << ")";
+  if (files_.writing()) {
+    outputs_.writeCheckpoint(state_);
+    files_.writeSummary([&] { return summary("interrupted", line.str(), state_.time); });
+    line << "; the checkpoint and summary.json are in " << files_.directory() << ": continue with --restart "
+         << files_.directory();
+  }
+  throw core::Interrupted(signal, line.str());
 }
 
 // The key results of the last output, and how to look at the files.

@@ -169,7 +169,7 @@ void TetherOutputs2D::logLine(double tau, const CellMetrics2D& metrics) const
     *log_ << " (" << std::llround(100.0 * tau / endTau) << "% of tau = " << endTau << ", ETA "
           << wallClock(timeLeft(spent, stageTauStart_, tau, endTau)) << ")";
   }
-  *log_ << "\n";
+  *log_ << std::endl; // flushed: a log read while the run goes on (tail -f, a pipe) shows it
 }
 
 // The extremes of the tethered (or free) stage, after every accepted step.

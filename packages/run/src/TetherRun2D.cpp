@@ -1,12 +1,15 @@
 #include "capsula/run/TetherRun2D.hpp"
 
 #include "capsula/run/IntegrationStateSection.hpp"
+#include "capsula/run/RestartDeck.hpp"
+#include "capsula/run/InterruptionWatch.hpp"
 #include "capsula/run/RunOutputs.hpp"
 #include "capsula/run/RunSummary.hpp"
 #include "capsula/run/TetherStages2D.hpp"
 
 #include <capsula/core/Deck.hpp>
 #include <capsula/core/Error.hpp>
+#include <capsula/core/Interruption.hpp>
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/operators/ContourDiscretisation2D.hpp>
 #include <capsula/scene2d/NodesInFluid2D.hpp>
@@ -14,8 +17,12 @@
 #include <capsula/timeint/TimeIntegrationParameters.hpp>
 #include <capsula/timeint/TimeIntegrator.hpp>
 
+#include <cstdint>
+#include <functional>
+#include <iomanip>
 #include <memory>
 #include <ostream>
+#include <sstream>
 #include <vector>
 
 namespace capsula::run {
@@ -93,6 +100,24 @@ private:
   std::vector<io::JsonValue> switches_;
 };
 
+// A signal stopped the loop after the step every rank agreed on: the checkpoint and
+// summary.json there, then the line the app prints.
+[[noreturn]] void stopInterrupted(int signal, double tau, std::int64_t step, RunOutputs& files,
+                                  TetherOutputs2D& outputs,
+                                  const std::function<io::JsonValue(const std::string&)>& json)
+{
+  std::ostringstream line;
+  line << std::setprecision(6) << "interrupted by " << core::signalName(signal) << " at tau = " << tau << " (step "
+       << step << ")";
+  if (files.writing()) {
+    outputs.writeCheckpoint();
+    files.writeSummary([&] { return json(line.str()); });
+    line << "; the checkpoint and summary.json are in " << files.directory() << ": continue with --restart "
+         << files.directory();
+  }
+  throw core::Interrupted(signal, line.str());
+}
+
 } // namespace
 
 TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
@@ -116,8 +141,19 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
     integrator.setLinearisedSystem(jacobian);
   }
 
+  // The checkpoint is read and checked before the output directory is touched: a wrong
+  // --restart must leave the directory it names as it was.
+  std::optional<io::Checkpoint> checkpoint;
+  const std::string checkpointPath = restartDirectory ? *restartDirectory + "/checkpoint.h5" : "";
+  if (restartDirectory) {
+    try {
+      checkpoint = io::readCheckpoint(checkpointPath);
+    } catch (const core::IoError& e) {
+      throw core::InputError(core::message("--restart ", *restartDirectory, ": ", e.what()));
+    }
+    requireSameApplication(*checkpoint, "tether2d", checkpointPath);
+  }
   RunOutputs files(comm_, outputDirectory, restartDirectory);
-  files.open(deck_, {"tether2d", deckSource_, comm_->getSize()});
   RunSummary summary("tether2d", deck_, comm_->getSize());
   timeint::IntegrationState state;
   TetherStages2D stages(model_, tether_, integrator, state, log_);
@@ -128,10 +164,8 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   // the warm start the model then restores.
   outputs.setCheckpointSections({&stateSection, &stages, &model_, &outputs});
 
-  if (restartDirectory) {
-    const std::string path = *restartDirectory + "/checkpoint.h5";
-    const io::Checkpoint checkpoint = io::readCheckpoint(path);
-    io::loadSections(checkpoint, path, {&stateSection, &stages, &model_, &outputs});
+  if (checkpoint) {
+    io::loadSections(*checkpoint, checkpointPath, {&stateSection, &stages, &model_, &outputs});
     state.steady = false; // a restart goes on from where the stopped run was
     // Same margin as the end-of-run test of TetherOutputs2D.
     core::require<core::InputError>(
@@ -139,9 +173,20 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
         ": the checkpoint is at tau = ", stages.tau(state.time), ", at or past 'Time integration/End time' = ", endTau,
         "; nothing to do. Give a later end, e.g. --set \"Time integration/End time=", 2.0 * stages.tau(state.time),
         "\".");
-    outputs.beginStage(checkpoint.time);
+  }
+  // Opened once the checkpoint is known to continue: a refused restart leaves the
+  // directory as it was.
+  files.open(deck_, {"tether2d", deckSource_, comm_->getSize()});
+  for (const auto& name : files.removedStaleFiles()) {
     if (log_ != nullptr) {
-      *log_ << "Restarting from " << path << " at tau = " << checkpoint.time << " (step " << checkpoint.step << ")\n";
+      *log_ << "Removed " << name << ", left by a writer that was killed\n";
+    }
+  }
+  if (checkpoint) {
+    outputs.beginStage(checkpoint->time);
+    if (log_ != nullptr) {
+      *log_ << "Restarting from " << checkpointPath << " at tau = " << checkpoint->time << " (step " << checkpoint->step
+            << ")\n";
     }
   } else {
     state = integrator.start(0.0, model_.initialState());
@@ -164,8 +209,10 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
 
   TetherRunResult2D result;
   MethodSwitchLog2D switches(stages, log_);
+  InterruptionWatch watch(*comm_);
   const auto summaryJson = [&](const std::string& status, const std::string& note) {
-    return summary.json(status, note, result.finalTime, state.statistics, [&](io::JsonValue& json) {
+    const double time = status == "interrupted" ? stages.tau(state.time) : result.finalTime;
+    return summary.json(status, note, time, state.statistics, [&](io::JsonValue& json) {
       json["time integration"]["method"] = timeint::toString(integrator.settings().method);
       json["time integration"]["in use"] = integrator.activeMethodName(state);
       for (const io::JsonValue& change : switches.switches()) {
@@ -174,9 +221,16 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
       addResults(json, result);
     });
   };
+  // From the start: the status is never missing, and the file holds the space a failure on
+  // a full disk rewrites it in (RunOutputs::writeSummaryAfterFailure).
+  files.writeSummary([&] { return summaryJson("running", ""); });
   try {
     if (stages.preparing()) {
-      integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs, &switches});
+      integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs, &switches, &watch});
+      if (watch.signal() != 0) {
+        stopInterrupted(watch.signal(), stages.tau(state.time), state.statistics.acceptedSteps, files, outputs,
+                        [&](const std::string& note) { return summaryJson("interrupted", note); });
+      }
       // The preparation is over: its last state is an output, then the cell is tethered.
       if (stages.stoppedAtOutputTime()) {
         ++state.nextOutput;
@@ -185,8 +239,14 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
       stages.tether();
       outputs.beginStage();
     }
-    integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs, &switches});
+    integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs, &switches, &watch});
+    if (watch.signal() != 0 && !state.steady) {
+      stopInterrupted(watch.signal(), stages.tau(state.time), state.statistics.acceptedSteps, files, outputs,
+                      [&](const std::string& note) { return summaryJson("interrupted", note); });
+    }
     outputs.writeCheckpoint();
+  } catch (const core::Interrupted&) {
+    throw;
   } catch (const std::exception& e) {
     result = outputs.result();
     files.writeSummaryAfterFailure([&] { return summaryJson("failed", e.what()); });

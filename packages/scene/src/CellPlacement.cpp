@@ -77,10 +77,20 @@ void requireAboveWall(const mesh::SurfaceMesh& cell, const std::string& path)
 {
   const int lowest = lowestNode(cell);
   const double y = cell.position(lowest)[1];
-  core::require<core::InputError>(y > 0.0, "'", path, "' crosses the wall: node ", lowest, " lies at y = ", y,
-                                  " but the fluid is y > 0 when 'Wall/Enabled' is true. Raise '", path,
-                                  "/Center' (its y component is the height of the centre) by more than ", -y,
-                                  ", or disable the wall.");
+  if (y > 0.0) {
+    return;
+  }
+  // A cell resting exactly on the wall has its lowest node at y = 0 (or -0): it touches,
+  // and "raise it by more than 0" would not say by how much.
+  const std::string raise = y < 0.0
+                                ? core::message("by more than ", -y)
+                                : std::string("so that it clears the wall, e.g. by 0.1 (a thinner gap needs a finer "
+                                              "mesh: 'wall_gap_per_h' in metrics.csv)");
+  throw core::InputError(
+      core::message("'", path, "' ", y < 0.0 ? "crosses" : "touches", " the wall: its lowest node (", lowest,
+                    ") lies at y = ", y < 0.0 ? y : 0.0,
+                    " but the fluid is y > 0 when 'Wall/Enabled' is true. Raise the y component of '", path,
+                    "/Center' (the height of the centre) ", raise, ", or disable the wall."));
 }
 
 void requireWallGap(const mesh::SurfaceMesh& cell, const std::string& path, double minimumGap)
@@ -89,10 +99,10 @@ void requireWallGap(const mesh::SurfaceMesh& cell, const std::string& path, doub
   const double y = cell.position(lowest)[1] + 0.0; // + 0.0: a node at -0 is reported at 0
   core::require<core::InputError>(
       y > minimumGap, "'", path, "' ",
-      y > 0.0 ? "starts too close to the wall" : (y == 0.0 ? "touches the wall" : "crosses the wall"), ": node ",
-      lowest, " lies at y = ", y, ", not more than 'Wall/Minimum gap' = ", minimumGap, " (the fluid is y > 0). Raise '",
-      path, "/Center' (its y component is the height of the centre) by more than ", minimumGap - y,
-      ", lower 'Wall/Minimum gap' or disable the wall.");
+      y > 0.0 ? "starts too close to the wall" : (y == 0.0 ? "touches the wall" : "crosses the wall"),
+      ": its lowest node (", lowest, ") lies at y = ", y, ", not more than 'Wall/Minimum gap' = ", minimumGap,
+      " (the fluid is y > 0). Raise the y component of '", path, "/Center' (the height of the centre) by more than ",
+      minimumGap - y, ", lower 'Wall/Minimum gap' or disable the wall.");
 }
 
 double windingNumber(const mesh::SurfaceMesh& surface, const Vec3& point)

@@ -191,6 +191,25 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   loadDensity_.assign(18 * static_cast<std::size_t>(numElements()), 0.0);
 }
 
+// The likely cause of a non-finite state at time t, and what to change.
+std::string Scene::nonFiniteCause(double t) const
+{
+  // The membrane loads scale as 1/Ca: many orders below the smallest Ca the stiff methods
+  // are run at (5e-4, docs/stiff-integration.md) the first loads overflow, and no tolerance helps.
+  constexpr double kSmallCa = 1e-8;
+  if (description_.capillaryNumber < kSmallCa) {
+    return core::message("'Flow/Capillary number' = ", description_.capillaryNumber,
+                         " is the cause: the membrane loads scale as 1/Ca and overflow. Raise it; small Ca needs a "
+                         "stiff 'Time integration/Method' (ROS34PW2, run down to Ca = 5e-4 in "
+                         "docs/stiff-integration.md).");
+  }
+  if (t == 0.0) {
+    return "the first step already fails, which a tolerance does not cause: check the deck's moduli, Ca and the "
+           "initial shape.";
+  }
+  return "the run has become unstable. Reduce 'Time integration/Tolerance' or refine the mesh.";
+}
+
 void Scene::setPositions(double t, const std::vector<double>& positions)
 {
   core::require(positions.size() == 3 * static_cast<std::size_t>(numNodes()), "Scene: a state of ", positions.size(),
@@ -200,11 +219,11 @@ void Scene::setPositions(double t, const std::vector<double>& positions)
     mesh::SurfaceMesh& surface = cells_[static_cast<std::size_t>(c)];
     for (int i = 0; i < surface.numNodes(); ++i) {
       const double* p = x + 3 * i;
-      core::require<core::NumericalError>(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]),
-                                          "At t = ", t, " node ", i, " of '",
-                                          description_.cells[static_cast<std::size_t>(c)].path,
-                                          "' has a non-finite position: the run has become unstable. Reduce 'Time "
-                                          "integration/Tolerance' or refine the mesh.");
+      if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
+        throw core::NumericalError(core::message("At t = ", t, " node ", i, " of '",
+                                                 description_.cells[static_cast<std::size_t>(c)].path,
+                                                 "' has a non-finite position: ", nonFiniteCause(t)));
+      }
       core::require<core::NumericalError>(
           !description_.wall || p[1] > 0.0, "At t = ", t, " node ", i, " of '",
           description_.cells[static_cast<std::size_t>(c)].path, "' reached the wall (y = ", p[1],

@@ -80,6 +80,16 @@ TEST(MpiSessionDirectory, RemovedAfterUse)
     EXPECT_EQ(std::string(chosen == nullptr ? "" : chosen), path);
   }
   EXPECT_FALSE(path.empty() || fs::exists(path)) << path;
+  // A process that leaves without MPI_Finalize removes it itself, once.
+  unsetenv("OMPI_MCA_orte_tmpdir_base");
+  {
+    core::MpiSessionDirectory directory;
+    path = directory.path();
+    ASSERT_TRUE(fs::is_directory(path)) << path;
+    directory.remove();
+    EXPECT_FALSE(fs::exists(path)) << path;
+    EXPECT_TRUE(directory.path().empty());
+  }
   unsetenv("OMPI_MCA_orte_tmpdir_base");
   for (const auto& [name, value] : saved) {
     setenv(name.c_str(), value.c_str(), 1);

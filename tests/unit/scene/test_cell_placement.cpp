@@ -58,7 +58,7 @@ TEST(CellPlacement, WallGapAtTheStart)
   };
   // The level-2 icosphere has a node at the bottom pole, y = height - 1 exactly.
   EXPECT_EQ(messageFor(1.0 + 0.025 + 1e-9, 0.025), "accepted");
-  EXPECT_NE(messageFor(1.02, 0.025).find("starts too close to the wall: node"), std::string::npos);
+  EXPECT_NE(messageFor(1.02, 0.025).find("starts too close to the wall: its lowest node ("), std::string::npos);
   EXPECT_NE(messageFor(1.02, 0.025).find("by more than 0.005,"), std::string::npos) << messageFor(1.02, 0.025);
   EXPECT_NE(messageFor(1.0, 0.025).find("touches the wall"), std::string::npos) << messageFor(1.0, 0.025);
   EXPECT_NE(messageFor(1.0, 0.025).find("by more than 0.025,"), std::string::npos) << messageFor(1.0, 0.025);

@@ -27,7 +27,7 @@ struct AppDescription {
   std::string name;                  ///< e.g. "cell3d"
   std::string summary;               ///< one line
   std::vector<std::string> examples; ///< full command lines
-  bool supportsRestart = false;
+  bool supportsRestart = false;      ///< --restart; also: SIGTERM/SIGINT stop it cleanly
 };
 
 /// The --help text.

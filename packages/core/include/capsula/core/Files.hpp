@@ -5,6 +5,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace capsula::core {
 
@@ -20,7 +21,22 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
 /// own temporary file, such as HDF5). Throws IoError.
 void replaceFileAtomically(const std::string& temporaryPath, const std::string& path);
 
-/// A temporary name next to `path`, unique to this process.
+/// A temporary name next to `path`, unique to this process: `path`.tmp.<process id>.
 std::string temporaryPathFor(const std::string& path);
+
+/// For a failed write with errno `errorNumber`: if it says the disk (or the quota) is full,
+/// the sentence that says so and what to do; otherwise "".
+std::string diskFullAdvice(int errorNumber);
+
+/// Replaces the content of the existing file `path` in place with `text` if it fits in the
+/// space the file already has (no new blocks are needed, so this works on a full disk).
+/// Returns whether it did. For the one file that must say how a run ended when nothing
+/// new can be written.
+bool overwriteInPlace(const std::string& path, const std::string& text) noexcept;
+
+/// Removes the temporary files (temporaryPathFor) in `directory` of processes that no
+/// longer run: what a writer killed mid-write (SIGKILL, a crash) leaves. Those of a live
+/// process on this machine are kept. Returns the names removed.
+std::vector<std::string> removeStaleTemporaryFiles(const std::string& directory);
 
 } // namespace capsula::core

@@ -35,6 +35,10 @@ public:
   /// folder was not writable, in which case Open MPI's default is kept).
   const std::string& path() const { return path_; }
 
+  /// Removes the directory now, for a process that leaves without MPI_Finalize (and so
+  /// without running this object's destructor).
+  void remove();
+
 private:
   std::string path_;
 };

@@ -1,7 +1,8 @@
 #pragma once
 // Checkpoint/restart files (HDF5):
 //
-//   /                 attributes format = "Capsula checkpoint", version, time, step, step size
+//   /                 attributes format = "Capsula checkpoint", version, time, step, step size,
+//                     application (the app that wrote it; absent in older files)
 //   /deck             the validated deck as XML text (what the run was started with)
 //   /arrays/<name>    named float64 vectors (the state, ...)
 //   /reals            attributes: named float64 scalars
@@ -21,6 +22,7 @@ struct Checkpoint {
   double time = 0.0;
   std::int64_t step = 0;
   double stepSize = 0.0;
+  std::string application; ///< "cell3d", ...; "" if not recorded
   std::string deckXml;
   std::map<std::string, std::vector<double>> arrays;
   std::map<std::string, double> reals;

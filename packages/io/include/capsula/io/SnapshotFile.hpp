@@ -66,8 +66,10 @@ std::vector<SnapshotLayout> readSnapshotLayouts(const std::string& path);
 /// Snapshot `index` (0-based) with its connectivity from its mesh version.
 Snapshot readSnapshot(const std::string& path, std::size_t index);
 
-/// Keeps the first `count` snapshots and the mesh versions they use; removes the rest
-/// (the file does not shrink: HDF5 leaves the space unused until the file is repacked).
+/// Keeps the first `count` snapshots and the mesh versions they use; removes the rest. The
+/// kept ones are copied into a new file that then replaces `path` atomically: HDF5 never
+/// gives back the space of objects removed in place, so a file cut there would keep the
+/// size of every snapshot a restart ever dropped.
 void truncateSnapshots(const std::string& path, std::size_t count);
 
 /// "000012": the group name of snapshot or mesh version 12.

@@ -47,9 +47,12 @@ public:
   /// `file` in the output directory.
   std::string path(const std::string& file) const;
 
-  /// Creates the directory and writes deck.xml and run.json. Throws core::InputError if
-  /// the directory cannot be used.
+  /// Creates the directory, removes the temporary files a killed writer left there
+  /// (core::removeStaleTemporaryFiles) and writes deck.xml and run.json. Throws
+  /// core::InputError if the directory cannot be used.
   void open(const Teuchos::ParameterList& validatedDeck, const io::RunMetadata& metadata);
+  /// What open() removed (rank 0), for the log.
+  const std::vector<std::string>& removedStaleFiles() const { return staleFiles_; }
 
   /// Starts the table `file` with `columns`; with `resumeAfter` (a restart from a
   /// checkpoint at that time in the table's first column) continues the stopped run's.
@@ -62,13 +65,15 @@ public:
   void openSnapshots(const std::string& base, std::optional<double> resumeAfter = std::nullopt);
   void writeSnapshot(const std::string& base, const std::function<io::Snapshot()>& snapshot);
 
-  /// checkpoint.h5, replaced atomically.
+  /// checkpoint.h5, replaced atomically, stamped with the application open() was given.
   void writeCheckpoint(const std::function<io::Checkpoint()>& checkpoint);
   /// summary.json, replaced atomically.
   void writeSummary(const std::function<io::JsonValue()>& summary);
   /// summary.json after a failure, which the caller rethrows: rank 0 only, not collective
   /// (the ranks may have failed at different places), and a failure to write is ignored
-  /// (the original error is the one to report).
+  /// (the original error is the one to report). On a full disk the previous summary.json
+  /// is overwritten in place (core::overwriteInPlace), shortened to its first entries if
+  /// the whole does not fit.
   void writeSummaryAfterFailure(const std::function<io::JsonValue()>& summary) noexcept;
 
 private:
@@ -79,6 +84,8 @@ private:
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::string directory_;
   std::optional<std::string> restartDirectory_;
+  std::string application_;
+  std::vector<std::string> staleFiles_;              // rank 0
   std::optional<io::OutputDirectory> output_;        // rank 0
   std::map<std::string, io::MetricsCsv> tables_;     // rank 0
   std::map<std::string, io::SnapshotSeries> series_; // rank 0

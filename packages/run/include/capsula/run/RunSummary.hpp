@@ -1,7 +1,8 @@
 #pragma once
 // summary.json, one layout for every app (keys in this order):
 //
-//   application, status       "running", "finished", "steady", "too close", "failed"
+//   application, status       "running", "finished", "steady", "too close", "failed",
+//                              "interrupted" (SIGTERM or SIGINT: InterruptionWatch.hpp)
 //   failure | stop reason      why a failed run failed, why a run stopped early
 //   time                       where the run is (in the app's time: t, or tau for tether2d)
 //   version                    {capsula, git sha, trilinos}

@@ -61,6 +61,8 @@ public:
   /// observe(); Stop at steady state.
   timeint::ObserverVerdict atOutput(const timeint::IntegrationState& state, timeint::OutputReason reason) override;
   bool steady() const { return steady_; }
+  /// checkpoint.h5 at `state` now, between outputs too (a run stopped by a signal). Collective.
+  void writeCheckpoint(const timeint::IntegrationState& state);
 
   /// The time of the last output, its samples, and the first cell's D12 there.
   double lastTime() const { return lastTime_; }

@@ -162,6 +162,7 @@ public:
 
 private:
   void computeLoads(double t, elasticity::MembraneEvaluation what);
+  std::string nonFiniteCause(double t) const;
 
   SceneDescription description_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
