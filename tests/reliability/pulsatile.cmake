@@ -47,3 +47,9 @@ capsula_add_reliability_test(reliability_pulsatile_tether2d_output_interval_not_
   MATCHES "'Output/Interval' = 0\\.3 \\(times lambda = 2\\) does not divide the shear rate's period 1"
   COMMAND $<TARGET_FILE:tether2d> ${_decks}/tether2d/demo.xml --output ${CMAKE_CURRENT_BINARY_DIR}/out/never
           ${_pulsatile} --set "Flow/Viscosity ratio=2" --set "Flow/Shear rate/Period=1" --set "Output/Interval=0.3")
+
+# A steady-state stop under a pulsating flow (the tether2d demo stops at steady state).
+capsula_add_reliability_test(reliability_pulsatile_tether2d_steady_stop EXIT_CODE 2
+  MATCHES "'Time integration/Steady tolerance' = 1e-07 stops a run when its state stops changing, which it never does under a periodic shear rate"
+  COMMAND $<TARGET_FILE:tether2d> ${_decks}/tether2d/demo.xml --output ${CMAKE_CURRENT_BINARY_DIR}/out/never
+          ${_pulsatile})

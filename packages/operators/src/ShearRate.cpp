@@ -245,6 +245,15 @@ ShearRate readShearRate(const Teuchos::ParameterList& shearRate, const std::stri
   return ShearRate();
 }
 
+void requireNoSteadyStop(const ShearRate& rate, const std::string& ratePath, double steadyTolerance)
+{
+  core::require<core::InputError>(!rate.periodic() || steadyTolerance == 0.0,
+                                  "'Time integration/Steady tolerance' = ", steadyTolerance,
+                                  " stops a run when its state stops changing, which it never does under a periodic "
+                                  "shear rate ('",
+                                  ratePath, "/Form' is not Steady): set it to 0 and choose the end time.");
+}
+
 double limitStepToPeriod(double maximumStep, const ShearRate& rate)
 {
   return rate.periodic() ? std::min(maximumStep, rate.period() / kStepsPerPeriod) : maximumStep;

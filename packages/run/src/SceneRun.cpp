@@ -58,6 +58,7 @@ timeint::TimeIntegrationSettings integrationSettings(const Teuchos::ParameterLis
 {
   auto settings = timeint::timeIntegrationSettings(deck.sublist("Time integration"));
   settings.steadyCriterion = timeint::SteadyStateCriterion::Off;
+  operators::requireNoSteadyStop(description.shearRate, "Flow/Shear rate", settings.steadyTolerance);
   settings.maximumStep = operators::limitStepToPeriod(settings.maximumStep, description.shearRate);
   settings.initialStep = std::min(settings.initialStep, settings.maximumStep);
   return settings;

@@ -101,12 +101,13 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
                                    const std::optional<std::string>& restartDirectory)
 {
   timeint::TimeIntegrationSettings settings = timeint::timeIntegrationSettings(deck_.sublist("Time integration"));
-  // With a periodic shear rate: steps of at most a twentieth of its period, and outputs at a
-  // whole number per period (Output/Interval is in tau = k t / lambda).
+  // With a periodic shear rate: steps of at most a twentieth of its period, outputs at a
+  // whole number per period (Output/Interval is in tau = k t / lambda), no steady-state stop.
   settings.maximumStep = operators::limitStepToPeriod(settings.maximumStep, model_.flow().shearRate);
   settings.initialStep = std::min(settings.initialStep, settings.maximumStep);
   operators::requireOutputsCommensurate(model_.flow().shearRate, "Flow/Shear rate", output_.interval, "Output/Interval",
                                         model_.flow().conditions.viscosityRatio);
+  operators::requireNoSteadyStop(model_.flow().shearRate, "Flow/Shear rate", settings.steadyTolerance);
   const double endTau = settings.endTime; // the tethered (or free) stage's duration in tau
   timeint::TimeIntegrator integrator(settings, [this](double t, const std::vector<double>& y,
                                                       std::vector<double>& dydt) { model_.rightHandSide(t, y, dydt); });

@@ -191,6 +191,10 @@ TEST(ShearRate, OutputsMustSampleEveryPeriodAtTheSamePhases)
   EXPECT_NE(inputError([&] { requireOutputsCommensurate(rate, path, 0.2, key, 2.0); }).find("lambda"),
             std::string::npos);
   EXPECT_EQ(inputError([&] { requireOutputsCommensurate(ShearRate(), path, 0.3, key); }), ""); // steady
+  const std::string steady = inputError([&] { capsula::operators::requireNoSteadyStop(rate, path, 1e-7); });
+  EXPECT_NE(steady.find("'Time integration/Steady tolerance' = 1e-07 stops a run"), std::string::npos) << steady;
+  EXPECT_EQ(inputError([&] { capsula::operators::requireNoSteadyStop(rate, path, 0.0); }), "");
+  EXPECT_EQ(inputError([&] { capsula::operators::requireNoSteadyStop(ShearRate(), path, 1e-7); }), "");
   EXPECT_EQ(capsula::operators::limitStepToPeriod(1.0, rate), 1.0 / 20.0);
   EXPECT_EQ(capsula::operators::limitStepToPeriod(0.01, rate), 0.01);
   EXPECT_EQ(capsula::operators::limitStepToPeriod(1.0, ShearRate()), 1.0);

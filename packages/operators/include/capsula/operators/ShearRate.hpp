@@ -81,6 +81,11 @@ ShearRate readWaveformFile(const std::string& fileName, const std::string& key, 
 void requireOutputsCommensurate(const ShearRate& rate, const std::string& ratePath, double interval,
                                 const std::string& intervalKey, double timeScale = 1.0);
 
+/// Refuses (core::InputError naming the keys) a steady-state stop ('Time integration/Steady
+/// tolerance' > 0) under a periodic shear rate: the state never stops changing, and a stop
+/// at a moment of slow change would end the run at a random phase.
+void requireNoSteadyStop(const ShearRate& rate, const std::string& ratePath, double steadyTolerance);
+
 /// The largest time step for a run under `rate`: `maximumStep`, and with a periodic shear
 /// rate at most period / kStepsPerPeriod.
 constexpr double kStepsPerPeriod = 20.0;
