@@ -1,7 +1,8 @@
 // Runs under a time-dependent shear rate ('Flow/Shear rate', operators/ShearRate.hpp): cell3d
 // and tether2d with amplitude 0 are the steady runs bit for bit; a cell in unbounded shear
-// is carried with k(t) y_c; a cell3d restart in the middle of a period is the uninterrupted
-// run bit for bit (tether2d's: test_tether_run.cpp).
+// is carried with k(t) y_c; the wall shear stress map follows k at the output; a cell3d
+// restart in the middle of a period is the uninterrupted run bit for bit (tether2d's:
+// test_tether_run.cpp).
 #include "SceneRunFixture.hpp"
 #include "Tether2DRunTesting.hpp"
 
@@ -109,6 +110,36 @@ TEST_F(PulsatileRunTest, CentroidIsCarriedWithTheShearRateOfTheInstant)
   // u_slip = k(t) y_c - dx_c/dt at the output instant: 0 here; with k = 1 in place of
   // k(T/4) = 1.5 it would read 1 at T/4.
   EXPECT_LT(worstSlip, 1e-3);
+}
+
+TEST_F(PulsatileRunTest, WallShearStressFollowsTheShearRateOfTheOutput)
+{
+  // A sphere high above the wall (centre at 4 radii) disturbs the wall stress little: the
+  // map's extremes bracket the ambient k(t) at every output, 1, 1.5, 1, 0.5, 1 over the
+  // period 0.4 (a map computed with k = 1 would stay near 1 at T/4 and 3T/4).
+  const auto deck = smallDeck(1, 4.0, true, [](Teuchos::ParameterList& d) {
+    setPulsatile(d, 0.5, 0.4);
+    d.sublist("Time integration").set("End time", 0.4);
+    auto& wall = d.sublist("Output").sublist("Wall shear stress");
+    wall.set("Enabled", true);
+    wall.set("Spacing", 1.0);
+  });
+  run(*deck, "wall");
+  const auto table = capsula::io::readCsvTable((root_ / "wall" / "metrics.csv").string());
+  const auto t = pulsatileColumn(table, "time"), low = pulsatileColumn(table, "wall_stress_min"),
+             high = pulsatileColumn(table, "wall_stress_max");
+  ASSERT_EQ(t.size(), 5u);
+  double worst = 0.0;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    const double ambient = 1.0 + 0.5 * std::sin(2.0 * M_PI * t[k] / 0.4);
+    std::printf("  t = %.2f: k = %.3f, wall stress from %.4f to %.4f\n", t[k], ambient, low[k], high[k]);
+    EXPECT_LE(low[k], ambient + 1e-12); // at t = 0 the unstressed sphere leaves the wall at k
+    EXPECT_GE(high[k], ambient - 1e-12);
+    worst = std::max({worst, ambient - low[k], high[k] - ambient});
+  }
+  // The disturbance of the cell 4 radii up: measured at most 0.029 (at t = 0.4); k = 1 in
+  // place of k(t) would miss by 0.5 at T/4 and 3T/4.
+  EXPECT_LT(worst, 0.1);
 }
 
 TEST_F(PulsatileRunTest, RestartMidPeriodReproducesTheUninterruptedRun)
