@@ -60,6 +60,7 @@ std::vector<CellSample> OutputMetrics::record(double t, const scene::Scene& scen
     s.rotation = rigidMotionFit(cell, velocities, s.shape.centroid).rotation;
     s.shapeChangeRate = shapeChangeRate(velocities, scene.membrane(c).nodeNormals(), s.instantVelocity);
     s.gmresIterations = fields.gmresIterations;
+    s.shearRate = scene.description().shearRate.factor(t);
     s.stability = measureStability(cell, scene.membrane(c));
 
     auto& history = centroids_[static_cast<std::size_t>(c)];

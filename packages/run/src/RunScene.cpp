@@ -91,6 +91,9 @@ void RunScene::adaptMeshes(timeint::IntegrationState& state)
 
 void RunScene::save(io::Checkpoint& checkpoint) const
 {
+  if (auto waveform = description_.shearRate.waveformSamples(); !waveform.empty()) {
+    checkpoint.arrays["flow.shearRate.waveform"] = std::move(waveform);
+  }
   if (const auto* warm = scene_->gmresWarmStart(); warm && !warm->empty()) { // the next solve's start
     checkpoint.arrays["scene.gmresWarmStart.rhs"] = warm->rightHandSides();
     checkpoint.arrays["scene.gmresWarmStart.solutions"] = warm->solutions();
@@ -115,6 +118,12 @@ void RunScene::save(io::Checkpoint& checkpoint) const
 
 void RunScene::load(const io::Checkpoint& checkpoint, const std::string& source)
 {
+  const auto* waveform = io::optionalArray(checkpoint, "flow.shearRate.waveform");
+  core::require<core::InputError>(waveform ? *waveform == description_.shearRate.waveformSamples()
+                                           : description_.shearRate.waveformSamples().empty(),
+                                  "The checkpoint ", source,
+                                  " was written with another waveform than 'Flow/Shear rate/Waveform file' holds "
+                                  "now: restart with the run's waveform file.");
   scene_ = restoredScene(checkpoint, source);
   const auto* rhs = io::optionalArray(checkpoint, "scene.gmresWarmStart.rhs");
   const auto* solutions = io::optionalArray(checkpoint, "scene.gmresWarmStart.solutions");

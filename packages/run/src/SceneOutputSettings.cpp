@@ -28,7 +28,8 @@ void declareWallShearStressParameters(Teuchos::ParameterList& wall)
   core::declareReal(wall, "Spacing", 0.25, "Grid spacing on the wall, in cell radii.", core::greaterThan(0.0));
   core::declareReal(wall, "Threshold", 1.05,
                     "Elevated stress: at least this multiple of the ambient wall stress (1 in units "
-                    "of mu k); the thesis uses 5% above ambient.",
+                    "of mu k; |k(t)| of the output's instant under 'Flow/Shear rate'); the thesis "
+                    "uses 5% above ambient.",
                     core::greaterThan(0.0));
   core::declareRealArray(wall, "Isolated range", {}, 0,
                          "{smallest, largest} wall stress of an isolated cell at the same height "

@@ -9,6 +9,7 @@
 #include <capsula/core/Timers.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -115,8 +116,10 @@ std::optional<SceneOutputs::WallSample> SceneOutputs::sampleWallStress(const tim
   scene::Scene& scene = live_.scene();
   operators::WallShearStress stress =
       wallShearStressOnGrid(scene.solver(), grid, step, operators::LoadDensity(fields.loadDensity.data()),
-                            fields.solverVelocities.data(), scene.flow());
-  lastWallAreas_ = elevatedStressAreas(grid, stress.magnitude, centre[0], wallOutput.threshold);
+                            fields.solverVelocities.data(), scene.flowAt(state.time));
+  // The threshold is relative to the undisturbed wall stress of the instant, |k(t)|.
+  const double ambient = std::abs(description_.shearRate.factor(state.time));
+  lastWallAreas_ = elevatedStressAreas(grid, stress.magnitude, centre[0], wallOutput.threshold * ambient);
   if (wallOutput.isolatedRange) {
     lastOutsideIsolated_ =
         areasOutsideRange(grid, stress.magnitude, wallOutput.isolatedMinimum, wallOutput.isolatedMaximum);
@@ -168,7 +171,7 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
       points.insert(points.end(), {p[0], p[1], p[2]});
     }
     probeVelocities = scene.solver().flowVelocity(points, operators::LoadDensity(fields.loadDensity.data()),
-                                                  fields.solverVelocities.data(), scene.flow());
+                                                  fields.solverVelocities.data(), scene.flowAt(state.time));
   }
 
   double shapeRate = 0.0;

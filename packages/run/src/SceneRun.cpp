@@ -16,6 +16,7 @@
 #include <capsula/core/Interruption.hpp>
 #include <capsula/core/Timers.hpp>
 #include <capsula/io/Checkpoint.hpp>
+#include <capsula/operators/ShearRate.hpp>
 #include <capsula/scene/SceneDescription.hpp>
 #include <capsula/scene/VelocityJacobian.hpp>
 #include <capsula/timeint/TimeIntegrationParameters.hpp>
@@ -23,6 +24,7 @@
 
 #include <Teuchos_oblackholestream.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
@@ -52,10 +54,23 @@ std::string outputDirectory(const SceneRunOptions& options, const SceneOutputSet
 // The settings of the integrator: the deck's, but steady state is judged on the shape at
 // output times (SceneOutputs.hpp), not on the raw node positions, which keep moving as the
 // membrane tank-treads.
-timeint::TimeIntegrationSettings integrationSettings(const Teuchos::ParameterList& deck)
+// With a periodic shear rate, a step (the first one too) is at most a twentieth of its period.
+timeint::TimeIntegrationSettings integrationSettings(const Teuchos::ParameterList& deck,
+                                                     const scene::SceneDescription& description)
 {
   auto settings = timeint::timeIntegrationSettings(deck.sublist("Time integration"));
   settings.steadyCriterion = timeint::SteadyStateCriterion::Off;
+  operators::requireNoSteadyStop(description.shearRate, "Flow/Shear rate", settings.steadyTolerance);
+  settings.maximumStep = operators::limitStepToPeriod(settings.maximumStep, description.shearRate);
+  settings.initialStep = std::min(settings.initialStep, settings.maximumStep);
+  return settings;
+}
+
+// The output settings; with a periodic shear rate, the interval must divide its period.
+SceneOutputSettings outputSettings(const Teuchos::ParameterList& deck, const scene::SceneDescription& description)
+{
+  SceneOutputSettings settings = readSceneOutputSettings(deck, description);
+  operators::requireOutputsCommensurate(description.shearRate, "Flow/Shear rate", settings.interval, "Output/Interval");
   return settings;
 }
 
@@ -118,10 +133,12 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
       kernels_(kernels),
       log_(options.log && comm->getRank() == 0 ? options.log : &quiet_),
       description_(scene::describeScene(deck)),
-      settings_(readSceneOutputSettings(deck, description_)),
+      settings_(outputSettings(deck, description_)),
       // The scene is looked up at every call: a mesh adaption replaces it during the run.
-      integrator_(integrationSettings(deck), [this](double t, const std::vector<double>& y,
-                                                    std::vector<double>& dydt) { live_.scene().velocity(t, y, dydt); }),
+      integrator_(integrationSettings(deck, description_),
+                  [this](double t, const std::vector<double>& y, std::vector<double>& dydt) {
+                    live_.scene().velocity(t, y, dydt);
+                  }),
       files_(comm, outputDirectory(options, settings_), options.restartDirectory),
       live_(description_, deck, comm, kernels, state_, *log_),
       outputs_(live_, description_, settings_, files_, integrator_.settings().steadyTolerance),

@@ -126,7 +126,7 @@ void TetherOutputs2D::observe(double stepSize, double steadyMeasure, bool forceS
 {
   const contour::Contour current = model_.contour(state_.y);
   const elasticity::MembraneState2D membrane = model_.membrane(current);
-  const std::vector<double> velocities = model_.velocities(current, membrane).velocities;
+  const std::vector<double> velocities = model_.velocities(state_.time, current, membrane).velocities;
   const CellMetrics2D metrics = cellMetrics2D(model_, current, membrane, velocities);
   const double tau = stages_.tau(state_.time);
   const std::int64_t index = outputIndex();

@@ -12,11 +12,13 @@
 #include <capsula/core/Interruption.hpp>
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/operators/ContourDiscretisation2D.hpp>
+#include <capsula/operators/ShearRate.hpp>
 #include <capsula/scene2d/NodesInFluid2D.hpp>
 #include <capsula/scene2d/VelocityJacobian2D.hpp>
 #include <capsula/timeint/TimeIntegrationParameters.hpp>
 #include <capsula/timeint/TimeIntegrator.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <iomanip>
@@ -123,11 +125,17 @@ private:
 TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
                                    const std::optional<std::string>& restartDirectory)
 {
-  const timeint::TimeIntegrationSettings settings = timeint::timeIntegrationSettings(deck_.sublist("Time integration"));
+  timeint::TimeIntegrationSettings settings = timeint::timeIntegrationSettings(deck_.sublist("Time integration"));
+  // With a periodic shear rate: steps of at most a twentieth of its period, outputs at a
+  // whole number per period (Output/Interval is in tau = k t / lambda), no steady-state stop.
+  settings.maximumStep = operators::limitStepToPeriod(settings.maximumStep, model_.flow().shearRate);
+  settings.initialStep = std::min(settings.initialStep, settings.maximumStep);
+  operators::requireOutputsCommensurate(model_.flow().shearRate, "Flow/Shear rate", output_.interval, "Output/Interval",
+                                        model_.flow().conditions.viscosityRatio);
+  operators::requireNoSteadyStop(model_.flow().shearRate, "Flow/Shear rate", settings.steadyTolerance);
   const double endTau = settings.endTime; // the tethered (or free) stage's duration in tau
-  timeint::TimeIntegrator integrator(settings, [this](double, const std::vector<double>& y, std::vector<double>& dydt) {
-    model_.rightHandSide(y, dydt);
-  });
+  timeint::TimeIntegrator integrator(settings, [this](double t, const std::vector<double>& y,
+                                                      std::vector<double>& dydt) { model_.rightHandSide(t, y, dydt); });
   // With the wall, a stage state or a step with a node on or below it is a rejected
   // attempt (NodesInFluid2D.hpp), not a failure of the run.
   if (model_.flow().wall) {

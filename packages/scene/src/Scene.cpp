@@ -154,7 +154,12 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   flow_.background = operators::LinearFlow::simpleShear(1.0);
   {
     std::ostringstream line;
-    line << "flow: simple shear u = (y, 0, 0), Ca = " << description_.capillaryNumber;
+    if (description_.shearRate.periodic()) {
+      line << "flow: simple shear u = (k(t) y, 0, 0), Ca = " << description_.capillaryNumber << " at the mean k; k(t) "
+           << description_.shearRate.describe();
+    } else {
+      line << "flow: simple shear u = (y, 0, 0), Ca = " << description_.capillaryNumber;
+    }
     terms_.push_back(line.str());
   }
 
@@ -340,9 +345,17 @@ void Scene::velocity(double t, const std::vector<double>& positions, std::vector
   Teuchos::TimeMonitor guard(*velocityTimer_);
   // Warm start: GMRES begins at a combination of the last solutions (O(step) away).
   const operators::LoadDensity load(loadDensity_.data());
+  const operators::FlowConditions flow = flowAt(t);
   operators::VelocitySolution solution =
-      warmStart_ ? solver_->nodeVelocities(load, flow_, *warmStart_) : solver_->nodeVelocities(load, flow_);
+      warmStart_ ? solver_->nodeVelocities(load, flow, *warmStart_) : solver_->nodeVelocities(load, flow);
   velocities = std::move(solution.velocities);
+}
+
+operators::FlowConditions Scene::flowAt(double t) const
+{
+  operators::FlowConditions flow = flow_;
+  flow.background = operators::LinearFlow::simpleShear(description_.shearRate.factor(t));
+  return flow;
 }
 
 void Scene::restoreGmresWarmStart(const std::vector<double>& rightHandSides, const std::vector<double>& solutions)
@@ -367,7 +380,8 @@ SceneFields Scene::evaluate(double t, const std::vector<double>& positions)
   computeLoads(t, elasticity::MembraneEvaluation::Everything);
   {
     Teuchos::TimeMonitor guard(*velocityTimer_);
-    operators::VelocitySolution solution = solver_->nodeVelocities(operators::LoadDensity(loadDensity_.data()), flow_);
+    operators::VelocitySolution solution =
+        solver_->nodeVelocities(operators::LoadDensity(loadDensity_.data()), flowAt(t));
     fields.solverVelocities = std::move(solution.velocities);
     fields.gmresIterations = solution.iterations;
   }

@@ -39,6 +39,9 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
   const auto& flow = deck.sublist("Flow");
   scene.capillaryNumber = flow.get<double>("Capillary number");
   scene.viscosityRatio = flow.get<double>("Viscosity ratio");
+  if (flow.isSublist("Shear rate")) {
+    scene.shearRate = operators::readShearRate(flow.sublist("Shear rate"), "Flow/Shear rate");
+  }
   scene.wall = deck.sublist("Wall").get<bool>("Enabled");
   scene.minimumWallGap = deck.sublist("Wall").get<double>("Minimum gap");
 

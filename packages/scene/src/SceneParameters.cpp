@@ -4,6 +4,7 @@
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
 #include <capsula/mesh/RedistributionParameters.hpp>
+#include <capsula/operators/ShearRate.hpp>
 
 #include <cctype>
 #include <string>
@@ -85,7 +86,7 @@ void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double
 
 void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck, int cellsWhenNoneGiven)
 {
-  auto& flow = core::declareSublist(valid, "Flow", "The undisturbed simple shear u = (k y, 0, 0).");
+  auto& flow = core::declareSublist(valid, "Flow", "The undisturbed simple shear u = (k(t) y, 0, 0).");
   core::declareReal(flow, "Capillary number", 0.3,
                     "Ca = mu k a / G: shear rate k times external viscosity mu times cell radius a "
                     "over the membrane shear modulus G (eq 3.16).",
@@ -95,6 +96,8 @@ void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::Parame
                     "3.38 without the double layer); any other value adds the double layer and a "
                     "GMRES solve.",
                     core::greaterThan(0.0));
+  operators::declareShearRateParameters(core::declareSublist(
+      flow, "Shear rate", "The shear rate k(t) over its mean: steady, pulsatile or a tabulated waveform."));
 
   auto& wall = core::declareSublist(valid, "Wall", "The plane wall y = 0 below the flow.");
   core::declareBool(wall, "Enabled", true,

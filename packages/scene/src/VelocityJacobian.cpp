@@ -75,9 +75,10 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   }
 }
 
-void VelocityJacobian::linearise(double /*t*/, const std::vector<double>& y)
+void VelocityJacobian::linearise(double t, const std::vector<double>& y)
 {
   Teuchos::TimeMonitor guard(*lineariseTimer_);
+  flowGradient_ = scene_.flowAt(t).background.gradient;
   frozenPositions_ = y;
   frozen_->setPositions(y.data());
   stiffness_.clear();
@@ -126,7 +127,7 @@ void VelocityJacobian::apply(const double* x, double* y)
     mass_[static_cast<std::size_t>(c)]->solve(forces_.data() + first, loads_.data() + first, kMassSolveTolerance);
   }
   const std::vector<double> single = frozen_->singleLayerOfNodalLoad(loads_.data());
-  const mesh::Mat3& gradient = scene_.flow().background.gradient;
+  const mesh::Mat3& gradient = flowGradient_;
   for (std::size_t g = 0; g < n / 3; ++g) {
     for (int i = 0; i < 3; ++i) {
       const double flow = gradient(i, 0) * x[3 * g] + gradient(i, 1) * x[3 * g + 1] + gradient(i, 2) * x[3 * g + 2];

@@ -65,12 +65,18 @@ std::vector<std::string> CapsuleModel2D::terms() const
   if (discretisation_.nearSingularDistance > 0.0) {
     terms.emplace_back("near-singular subdivision");
   }
+  if (flow_.shearRate.periodic()) {
+    terms.emplace_back("flow: u = (k(t) y, 0), Ca at the mean k; k(t) " + flow_.shearRate.describe());
+  }
   return terms;
 }
 
 void CapsuleModel2D::save(io::Checkpoint& checkpoint) const
 {
   checkpoint.reals["run cell prestress"] = cell_.prestress;
+  if (auto waveform = flow_.shearRate.waveformSamples(); !waveform.empty()) {
+    checkpoint.arrays["run shear rate waveform"] = std::move(waveform);
+  }
   if (warmStart_ && !warmStart_->empty()) { // the next solve's start
     checkpoint.arrays["run gmres warm start rhs"] = warmStart_->rightHandSides();
     checkpoint.arrays["run gmres warm start solutions"] = warmStart_->solutions();
@@ -83,6 +89,12 @@ void CapsuleModel2D::load(const io::Checkpoint& checkpoint, const std::string& s
   core::require<core::InputError>(
       prestress == cell_.prestress, "The checkpoint ", source, " was written with Cell/Prestress = ", prestress,
       " but the deck has ", cell_.prestress, ": the membrane's reference would change; restart with the run's deck.");
+  const auto* waveform = io::optionalArray(checkpoint, "run shear rate waveform");
+  core::require<core::InputError>(waveform ? *waveform == flow_.shearRate.waveformSamples()
+                                           : flow_.shearRate.waveformSamples().empty(),
+                                  "The checkpoint ", source,
+                                  " was written with another waveform than 'Flow/Shear rate/Waveform file' holds "
+                                  "now: restart with the run's waveform file.");
   const auto* rhs = io::optionalArray(checkpoint, "run gmres warm start rhs");
   const auto* solutions = io::optionalArray(checkpoint, "run gmres warm start solutions");
   if (rhs && solutions) { // the next solve starts where it would have
@@ -149,20 +161,27 @@ elasticity::MembraneState2D CapsuleModel2D::membrane(const contour::Contour& con
   return membrane_->evaluate(contour);
 }
 
-operators::VelocitySolution2D CapsuleModel2D::velocities(const contour::Contour& contour,
+operators::FlowConditions2D CapsuleModel2D::flowAt(double t) const
+{
+  operators::FlowConditions2D conditions = flow_.conditions;
+  conditions.background = operators::LinearFlow2D::simpleShear(flow_.shearRate.factor(t));
+  return conditions;
+}
+
+operators::VelocitySolution2D CapsuleModel2D::velocities(double t, const contour::Contour& contour,
                                                          const elasticity::MembraneState2D& membrane)
 {
-  const operators::ContourLoad2D load = [&membrane](const contour::ContourPoint& point, int segment, double t) {
-    return membrane.loadAt(point, segment, t);
+  const operators::ContourLoad2D load = [&membrane](const contour::ContourPoint& point, int segment, double s) {
+    return membrane.loadAt(point, segment, s);
   };
   const std::vector<int> fixed = tethered() ? std::vector<int>{0} : std::vector<int>{};
   operators::VelocitySolution2D solution =
-      velocity_->nodeVelocities(contour, load, flow_.conditions, fixed, warmStart_ ? &*warmStart_ : nullptr);
+      velocity_->nodeVelocities(contour, load, flowAt(t), fixed, warmStart_ ? &*warmStart_ : nullptr);
   lastIterations_ = solution.iterations;
   return solution;
 }
 
-void CapsuleModel2D::rightHandSide(const std::vector<double>& state, std::vector<double>& derivative)
+void CapsuleModel2D::rightHandSide(double t, const std::vector<double>& state, std::vector<double>& derivative)
 {
   // The cost of one evaluation, broken down (the app prints the timers at the end;
   // the single layer's own parts are timed in operators/LayerPotentials2D.hpp).
@@ -182,7 +201,7 @@ void CapsuleModel2D::rightHandSide(const std::vector<double>& state, std::vector
     load.emplace(membrane(*current));
   }
   Teuchos::TimeMonitor guard(*velocity);
-  derivative = velocities(*current, *load).velocities;
+  derivative = velocities(t, *current, *load).velocities;
 }
 
 } // namespace capsula::scene2d

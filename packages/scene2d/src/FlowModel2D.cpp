@@ -16,6 +16,8 @@ void declareFlowParameters2D(Teuchos::ParameterList& flow)
                     "GMRES solves for it (Solver sublist). The thesis studied 1 to 10; time is "
                     "reported as k t / lambda.",
                     core::greaterThan(0.0));
+  operators::declareShearRateParameters(core::declareSublist(
+      flow, "Shear rate", "The shear rate k(t) over its mean: steady, pulsatile or a tabulated waveform."));
 }
 
 void declareWallParameters2D(Teuchos::ParameterList& wall)
@@ -31,6 +33,9 @@ FlowSettings2D readFlowSettings2D(const Teuchos::ParameterList& flow, const Teuc
   s.conditions.capillaryNumber = flow.get<double>("Capillary number");
   s.conditions.viscosityRatio = flow.get<double>("Viscosity ratio");
   s.conditions.background = operators::LinearFlow2D::simpleShear(1.0);
+  if (flow.isSublist("Shear rate")) {
+    s.shearRate = operators::readShearRate(flow.sublist("Shear rate"), "Flow/Shear rate");
+  }
   s.wall = wall.get<bool>("Enabled");
   return s;
 }

@@ -64,9 +64,10 @@ VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP
   gmres_.maximumIterations = settings_.maximumIterations;
 }
 
-void VelocityJacobian2D::linearise(double /*t*/, const std::vector<double>& y)
+void VelocityJacobian2D::linearise(double t, const std::vector<double>& y)
 {
   Teuchos::TimeMonitor guard(*lineariseTimer_);
+  flowGradient_ = model_.flowAt(t).background.gradient;
   frozenState_ = y;
   frozen_.emplace(model_.contour(y));
   fixed_ = model_.tethered() ? std::vector<int>{0} : std::vector<int>{};
@@ -163,7 +164,7 @@ Eigen::MatrixXf VelocityJacobian2D::approximateJacobian(const contour::Contour& 
     }
     A = -(mobility.asDiagonal() * K);
   }
-  const Eigen::Matrix2f gradient = (flowFactor_ * model_.flow().conditions.background.gradient).cast<float>();
+  const Eigen::Matrix2f gradient = (flowFactor_ * flowGradient_).cast<float>();
   for (int i = 0; i < n; ++i) {
     A.block<2, 2>(2 * i, 2 * i) += gradient;
   }
@@ -205,7 +206,7 @@ void VelocityJacobian2D::apply(const double* x, double* y)
                                     (states[2].loadAt(segment, t) - states[3].loadAt(segment, t))));
   };
   const std::vector<double> single = velocity_->singleLayer(*frozen_, derivative);
-  const Eigen::Matrix2d& gradient = model_.flow().conditions.background.gradient;
+  const Eigen::Matrix2d& gradient = flowGradient_;
   for (std::size_t g = 0; g < n / 2; ++g) {
     for (int i = 0; i < 2; ++i) {
       const double flow = gradient(i, 0) * x[2 * g] + gradient(i, 1) * x[2 * g + 1];

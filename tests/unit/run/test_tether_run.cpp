@@ -256,6 +256,19 @@ TEST(TetherRun2D, AutoRestartReproducesTheUninterruptedRun)
                                 "switched to ROS34PW2");
 }
 
+TEST(TetherRun2D, PulsatileRestartReproducesTheUninterruptedRun)
+{
+  // Period 1.5 of k t = 4 outputs of tau = 0.125 at lambda = 3. The tethered stage starts
+  // wherever the preparation ended and the restart falls mid-period: k(t) depends on t
+  // alone, which the checkpoint holds.
+  const std::vector<std::string> pulsatile{"Flow/Shear rate/Form=Pulsatile", "Flow/Shear rate/Amplitude=0.5",
+                                           "Flow/Shear rate/Period=1.5"};
+  expectRestartReproducesTheRun(pulsatile, "pulsatile", "pulsatile, k = 1 + 0.5 sin(2 pi t / 1.5)");
+  auto stiff = pulsatile;
+  stiff.emplace_back("Time integration/Method=ROS34PW2");
+  expectRestartReproducesTheRun(stiff, "pulsatile_stiff", "pulsatile");
+}
+
 TEST(TetherRun2D, PreparationRegridsNeedTheRegridAtTethering)
 {
   EXPECT_THROW(TetherRun2D(serialComm(), tether2dDeck({"Tether/Preparation regrid interval=0.5"}), nullptr),

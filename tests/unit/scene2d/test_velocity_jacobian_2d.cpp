@@ -81,24 +81,34 @@ std::vector<double> applied(VelocityJacobian2D& jacobian, const std::vector<doub
 // At e = 1e-6 (|v| <= 1.5, node spacing 0.2) the truncation, ~(e / 0.2)^2, and the
 // round-off, ~1e-16 |u| / e against |J~ v| ~ 50, are below 1e-10 of |J~ v|, and so is the
 // error of J~'s own differences (1e-10, the header); a wrong sign, factor 2 pi or flow term
-// is an O(1) error. Free cell and tethered cell, in free space and above the wall.
+// is an O(1) error. Free cell and tethered cell, in free space and above the wall; the free
+// cells under a pulsatile shear rate at t = 0.5 of a period 2, amplitude 0.5 (k = 1.5: J~'s
+// flow term is k(t) grad u_inf).
 TEST(VelocityJacobian2D, IsTheDerivativeOfTheVelocityAtRest)
 {
   for (const bool wall : {false, true}) {
     for (const bool tethered : {false, true}) {
       // J~'s single layer with the right-hand side's rule (6 Gauss-Legendre points, not 3).
-      const auto deck =
-          tether2dDeck({"Cell/Number of points=32", "Cell/Aspect ratio=0.7", "Flow/Capillary number=0.05",
-                        "Solver/Stiff/Gauss-Legendre points=0", wall ? "Wall/Enabled=true" : "Wall/Enabled=false",
-                        wall ? "Cell/Lowest point height=0.1" : "Cell/Lowest point height=-1",
-                        wall ? "Tether/Enabled=true" : "Tether/Enabled=false"});
+      auto settings = std::vector<std::string>{"Cell/Number of points=32",
+                                               "Cell/Aspect ratio=0.7",
+                                               "Flow/Capillary number=0.05",
+                                               "Solver/Stiff/Gauss-Legendre points=0",
+                                               wall ? "Wall/Enabled=true" : "Wall/Enabled=false",
+                                               wall ? "Cell/Lowest point height=0.1" : "Cell/Lowest point height=-1",
+                                               wall ? "Tether/Enabled=true" : "Tether/Enabled=false"};
+      if (!tethered) {
+        settings.insert(settings.end(), {"Flow/Shear rate/Form=Pulsatile", "Flow/Shear rate/Amplitude=0.5",
+                                         "Flow/Shear rate/Period=2"});
+      }
+      const double t = tethered ? 0.0 : 0.5;
+      const auto deck = tether2dDeck(settings);
       CapsuleModel2D model = jacobianModelOf(deck);
       if (tethered) {
         model.tether(0); // node 0 held; the reference relabelled by 0: still unstressed
       }
       VelocityJacobian2D jacobian(model, serial(), deck);
       const std::vector<double> x = model.initialState();
-      jacobian.linearise(0.0, x);
+      jacobian.linearise(t, x);
       const std::vector<double> v = direction(x.size());
       const std::vector<double> Jv = applied(jacobian, v);
       const double e = 1e-6;
@@ -107,8 +117,8 @@ TEST(VelocityJacobian2D, IsTheDerivativeOfTheVelocityAtRest)
         plus[i] += e * v[i];
         minus[i] -= e * v[i];
       }
-      model.rightHandSide(plus, up);
-      model.rightHandSide(minus, um);
+      model.rightHandSide(t, plus, up);
+      model.rightHandSide(t, minus, um);
       double worst = 0.0;
       for (std::size_t i = 0; i < x.size(); ++i) {
         worst = std::max(worst, std::abs(Jv[i] - (up[i] - um[i]) / (2 * e)));
@@ -231,7 +241,7 @@ TEST(VelocityJacobian2D, StiffCellRunConvergesAtOrderThree)
     settings.adaptive = false;
     settings.initialStep = 0.2 / steps;
     timeint::TimeIntegrator integrator(settings, [&model](double, const std::vector<double>& y,
-                                                          std::vector<double>& u) { model.rightHandSide(y, u); });
+                                                          std::vector<double>& u) { model.rightHandSide(0.0, y, u); });
     integrator.setLinearisedSystem(std::make_shared<VelocityJacobian2D>(model, serial(), deck));
     auto state = integrator.start(0.0, model.initialState());
     while (state.time < 0.2) {

@@ -15,7 +15,9 @@
 // rebuild: GMRES's warm start (the next solve's start), and after regularisations or
 // adaptions the reference shapes, the meshes' connectivity and the event counts:
 //   scene.gmresWarmStart.rhs, scene.gmresWarmStart.solutions, scene.reference.<c>,
-//   scene.connectivity.<c>, scene.regularisations, scene.adaptions.
+//   scene.connectivity.<c>, scene.regularisations, scene.adaptions; and a tabulated shear
+// rate's samples, flow.shearRate.waveform, so that a restart whose waveform file changed is
+// refused.
 // Loading it rebuilds the scene on the checkpoint's meshes, at the positions of the
 // integration state (loaded before it).
 #include <capsula/io/CheckpointSection.hpp>

@@ -95,7 +95,10 @@ public:
   const mesh::SurfaceMesh& cell(int c) const { return cells_[static_cast<std::size_t>(c)]; }
   const elasticity::MembraneMechanics& membrane(int c) const { return *membranes_[static_cast<std::size_t>(c)]; }
   operators::BoundaryIntegralSolver& solver() { return *solver_; }
+  /// Ca, lambda and the undisturbed flow at the mean shear rate, u_inf = (y, 0, 0).
   const operators::FlowConditions& flow() const { return flow_; }
+  /// The same at time t: u_inf = (k(t) y, 0, 0) ('Flow/Shear rate', operators/ShearRate.hpp).
+  operators::FlowConditions flowAt(double t) const;
   std::string kernelName() const { return solver_->kernelName(); }
   /// The name the kernel registry knows the Green's function by ("Wall", "FreeSpace").
   const std::string& kernelKey() const { return kernelKey_; }

@@ -4,6 +4,7 @@
 // without gaps, a fixed height that needs the wall.
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/RedistributionParameters.hpp>
+#include <capsula/operators/ShearRate.hpp>
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -27,6 +28,7 @@ struct CellDescription {
 struct SceneDescription {
   double capillaryNumber = 1.0;
   double viscosityRatio = 1.0;
+  operators::ShearRate shearRate; ///< 'Flow/Shear rate': k(t) over its mean
   bool wall = true;
   std::vector<CellDescription> cells;
   double minimumGap = 0.05;                        ///< 'Cells/Minimum gap': closer surfaces stop the run

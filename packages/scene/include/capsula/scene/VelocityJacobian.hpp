@@ -68,8 +68,9 @@ private:
   std::vector<elasticity::TangentStiffness> stiffness_;        // per cell, at x_n
   std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_; // per cell, at x_n
   std::vector<double> frozenPositions_;
-  std::vector<double> coefficient_; // -c_d per node
-  std::vector<double> flowFactor_;  // 2 / (1 + lambda_d) per node
+  std::vector<double> coefficient_;              // -c_d per node
+  std::vector<double> flowFactor_;               // 2 / (1 + lambda_d) per node
+  mesh::Mat3 flowGradient_ = mesh::Mat3::Zero(); // grad u_inf at the step's start, k(t_n)
   Teuchos::RCP<const Tpetra::Map<>> map_;
   Teuchos::RCP<operators::StageOperator> stage_;
   Teuchos::RCP<LocalMobilityPreconditioner> preconditioner_;

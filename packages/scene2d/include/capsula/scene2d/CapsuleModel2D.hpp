@@ -11,7 +11,9 @@
 // Its checkpoint section holds the warm start ("run gmres warm start rhs", "... solutions")
 // and the prestress the membrane's reference was built with ("run cell prestress"): the
 // reference is rebuilt from the deck on restart, so a deck with another prestress is
-// refused. The regridded markers and the tether are the tether procedure's to save.
+// refused. A tabulated shear rate's samples ("run shear rate waveform") are kept too: a
+// restart whose waveform file changed is refused. The regridded markers and the tether are
+// the tether procedure's to save.
 #include "capsula/scene2d/CellContour2D.hpp"
 #include "capsula/scene2d/FlowModel2D.hpp"
 
@@ -43,6 +45,8 @@ public:
   int numberOfNodes() const { return static_cast<int>(referenceNodes_.cols()); }
   const CellSettings2D& cell() const { return cell_; }
   const FlowSettings2D& flow() const { return flow_; }
+  /// Ca, lambda and u_inf = (k(t) y, 0) at time t ('Flow/Shear rate').
+  operators::FlowConditions2D flowAt(double t) const;
   const operators::ContourDiscretisation2D& discretisation() const { return discretisation_; }
   std::string kernelName() const { return velocity_->kernelName(); }
   /// The terms built, one line each (the run log and summary.json print them).
@@ -82,12 +86,12 @@ public:
   contour::Contour contour(const std::vector<double>& state) const;
   elasticity::MembraneState2D membrane(const contour::Contour& contour) const;
 
-  /// Node velocities for a contour and its membrane state (collective).
-  operators::VelocitySolution2D velocities(const contour::Contour& contour,
+  /// Node velocities at time t for a contour and its membrane state (collective).
+  operators::VelocitySolution2D velocities(double t, const contour::Contour& contour,
                                            const elasticity::MembraneState2D& membrane);
 
-  /// dy/dt = u(y) (collective): the right-hand side of the time integration.
-  void rightHandSide(const std::vector<double>& state, std::vector<double>& derivative);
+  /// dy/dt = u(t, y) (collective): the right-hand side of the time integration.
+  void rightHandSide(double t, const std::vector<double>& state, std::vector<double>& derivative);
 
   /// GMRES iterations of the last velocity solve (0 when lambda = 1).
   int lastIterations() const { return lastIterations_; }

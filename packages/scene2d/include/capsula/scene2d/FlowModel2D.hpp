@@ -1,19 +1,21 @@
 #pragma once
-// What drives the 2D cell: the shear flow (Flow/Capillary number, Flow/Viscosity ratio)
-// and whether the wall y = 0 bounds it (Wall/Enabled: Blake's 2D Green's function, thesis
+// What drives the 2D cell: the shear flow (Flow/Capillary number, Flow/Viscosity ratio,
+// Flow/Shear rate: k(t) over its mean, operators/ShearRate.hpp) and whether the wall y = 0 bounds it (Wall/Enabled: Blake's 2D Green's function, thesis
 // App. B.1, or free space). Dimensionless as in the thesis: u_inf = (y, 0), time in 1/k.
 #include <capsula/operators/InterfaceVelocity2D.hpp>
+#include <capsula/operators/ShearRate.hpp>
 
 #include <Teuchos_ParameterList.hpp>
 
 namespace capsula::scene2d {
 
 struct FlowSettings2D {
-  operators::FlowConditions2D conditions; ///< Ca, lambda, u_inf = (y, 0)
+  operators::FlowConditions2D conditions; ///< Ca, lambda, u_inf = (y, 0) at the mean shear rate
+  operators::ShearRate shearRate;         ///< k(t) over its mean: u_inf = (k(t) y, 0) at time t
   bool wall = true;
 };
 
-/// Declares Capillary number and Viscosity ratio in `flow`.
+/// Declares Capillary number, Viscosity ratio and the Shear rate sublist in `flow`.
 void declareFlowParameters2D(Teuchos::ParameterList& flow);
 /// Declares Enabled in `wall`.
 void declareWallParameters2D(Teuchos::ParameterList& wall);

@@ -83,8 +83,9 @@ private:
   std::vector<double> frozenState_;
   std::vector<int> fixed_;
   double shortestSegment_ = 0.0;
-  double coefficient_ = 0.0; // c
-  double flowFactor_ = 0.0;  // 2 / (1 + lambda)
+  double coefficient_ = 0.0;                               // c
+  double flowFactor_ = 0.0;                                // 2 / (1 + lambda)
+  Eigen::Matrix2d flowGradient_ = Eigen::Matrix2d::Zero(); // grad u_inf at the step's start, k(t_n)
   bool tetherEnabled_ = false;
   Teuchos::RCP<const Tpetra::Map<>> map_;
   Teuchos::RCP<operators::StageOperator> stage_;
