@@ -18,7 +18,9 @@ same capillary number and start height) gives the membrane relaxation time tau, 
 D12 takes to reach 1 - 1/e of its first maximum, and the mean rise velocity over the same
 window, (y_c(t2) - y_c(t1)) / (t2 - t1), that each pulsatile run's is compared with. A
 Kelvin-Voigt membrane (one relaxation time tau) would lag by atan(omega tau) with the
-relative amplitude 1 / sqrt(1 + (omega tau)^2).
+relative amplitude s / sqrt(1 + (omega tau)^2), s the quasi-static d ln D12 / d ln k (1 for
+a response proportional to k); the table gives tan(phi) / omega (that element's tau) and
+(R / m) / A / cos(phi) (its s) for each run, which agree between runs if one element fits.
 
 Writes into --out
   cell3d_pulsatile_table.md, cell3d_pulsatile_table.csv   one row per run
@@ -157,7 +159,7 @@ def degrees(x):
 
 def table_lines(rows, steady):
     header = ["run", "T", "omega", "omega tau", "window", "D12 mean", "D12 amp", "D12 rel amp",
-              "D12 lag deg", "KV lag deg", "KV rel amp", "u_slip mean", "u_slip rel amp", "u_slip lag deg",
+              "D12 lag deg", "KV lag deg", "KV rel amp", "D12 tau from lag", "D12 rel amp / cos(lag)", "u_slip mean", "u_slip rel amp", "u_slip lag deg",
               "rise", "steady rise", "rise / steady", "steady D12 mean"]
     body = []
     for r in rows:
@@ -169,6 +171,8 @@ def table_lines(rows, steady):
                      f"{r['t1']:g}-{r['t2']:g} ({r['periods']} T)",
                      f"{d['mean']:.4f}", f"{d['amplitude']:.4f}", f"{d['amplitude'] / d['mean'] / r['amplitude']:.3f}",
                      f"{degrees(d['lag']):.1f}", f"{degrees(kv_lag):.1f}", f"{kv_amp:.3f}",
+                     f"{math.tan(d['lag']) / r['omega']:.3f}",
+                     f"{d['amplitude'] / d['mean'] / r['amplitude'] / math.cos(d['lag']):.3f}",
                      f"{s['mean']:.4f}", f"{s['amplitude'] / s['mean'] / r['amplitude']:.3f}",
                      f"{degrees(s['lag']):.1f}", f"{r['rise']:.5f}", f"{r['steady_rise']:.5f}",
                      f"{ratio:.3f}", f"{r['steady_d12']:.4f}"])
@@ -232,6 +236,10 @@ def lags_figure(rows, steady, out, plt, co):
         x = np.geomspace(max(finite.min() / 5, 1e-2), finite.max() * 5, 100)
         axes[0].plot(x, np.degrees(np.arctan(x)), color="0.5", ls="--", label="Kelvin-Voigt atan(omega tau)")
         axes[1].plot(x, 1 / np.sqrt(1 + x ** 2), color="0.5", ls="--", label="Kelvin-Voigt 1/sqrt(1 + (omega tau)^2)")
+        scale = np.mean([r["d12"]["amplitude"] / r["d12"]["mean"] / r["amplitude"] / math.cos(r["d12"]["lag"])
+                         for r in rows])
+        axes[1].plot(x, scale / np.sqrt(1 + x ** 2), color="C0", ls=":",
+                     label=f"the same times s = {scale:.2f} (D12's mean rel amp / cos(lag))")
     x_of = wt if finite.size == wt.size else np.array([r["omega"] for r in rows])
     xlabel = "omega tau" if finite.size == wt.size else "omega"
     axes[0].plot(x_of, [degrees(r["d12"]["lag"]) for r in rows], "o", color="C0", label="D12")
@@ -244,7 +252,8 @@ def lags_figure(rows, steady, out, plt, co):
         ax.set_xscale("log")
         ax.set_xlabel(xlabel)
         ax.set_ylabel(label)
-        ax.legend()
+    axes[0].legend(loc="upper left")
+    axes[1].legend(loc="lower left")
     axes[0].axhline(0, color="0.8", lw=0.8)
     for s in steady:
         m = s["run"].table()
