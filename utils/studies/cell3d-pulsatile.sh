@@ -3,8 +3,8 @@
 # Ca = 0.3, released at h/a = 1.6) under k(t) = 1 + 0.5 sin(2 pi t / T) at a short and a long
 # period, and in the steady shear of the same mean (input/cell3d/pulsatile/); draws the phase
 # lags and amplitudes of D12 and u_slip and the centroid heights (utils/plotting/cell3d_pulsatile.py).
-#   utils/studies/cell3d-pulsatile.sh --quick /tmp/fig   # ~1 min on 2 cores: level 1, T = 0.5 and 1.5, t = 3
-#   utils/studies/cell3d-pulsatile.sh docs/figures       # reduced (docs/figures): level 2, T = 0.5 and 5, t = 15
+#   utils/studies/cell3d-pulsatile.sh --quick /tmp/fig   # ~10 s on 2 cores: level 1, T = 0.5 and 1.5, t = 3
+#   utils/studies/cell3d-pulsatile.sh docs/figures       # reduced (docs/figures): level 2, T = 0.5 and 5, t = 15: ~8 min
 #   utils/studies/cell3d-pulsatile.sh --full /tmp/fig    # the decks as written (the reduced runs)
 # utils/studies/cell3d-pulsatile.sh --help lists the options.
 set -euo pipefail
