@@ -130,16 +130,6 @@ std::vector<std::string> splitPath(const std::string& key)
   return parts;
 }
 
-std::string trim(const std::string& s)
-{
-  const auto first = s.find_first_not_of(" \t");
-  if (first == std::string::npos) {
-    return {};
-  }
-  const auto last = s.find_last_not_of(" \t");
-  return s.substr(first, last - first + 1);
-}
-
 } // namespace
 
 Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path)
@@ -170,7 +160,7 @@ Teuchos::RCP<Teuchos::ParameterList> readDeckFromString(const std::string& xml, 
     if (cut != std::string::npos) {
       what = what.substr(cut + 1);
     }
-    throw InputError("Deck '" + sourceName + "' is not a valid Teuchos XML parameter list: " + trim(what));
+    throw InputError("Deck '" + sourceName + "' is not a valid Teuchos XML parameter list: " + detail::trimmed(what));
   }
   return deck;
 }
@@ -190,7 +180,7 @@ void applyOverride(Teuchos::ParameterList& deck, const Teuchos::ParameterList& v
   const auto eq = assignment.find('=');
   require<InputError>(eq != std::string::npos && eq > 0, "--set \"", assignment,
                       "\": expected \"List/Sub/Key=value\", e.g. --set \"Flow/Capillary number=0.3\".");
-  const std::string key = trim(assignment.substr(0, eq));
+  const std::string key = detail::trimmed(assignment.substr(0, eq));
   const std::string text = assignment.substr(eq + 1);
   const auto path = splitPath(key);
   const Teuchos::ParameterEntry* target = findEntry(valid, path);
@@ -244,7 +234,7 @@ void applyOverride(Teuchos::ParameterList& deck, const Teuchos::ParameterList& v
     }
     list->set(name, v);
   } else if (target->isType<bool>()) {
-    const std::string t = trim(text);
+    const std::string t = detail::trimmed(text);
     if (t == "true" || t == "1" || t == "yes" || t == "on") {
       list->set(name, true);
     } else if (t == "false" || t == "0" || t == "no" || t == "off") {
@@ -255,7 +245,7 @@ void applyOverride(Teuchos::ParameterList& deck, const Teuchos::ParameterList& v
   } else if (target->isType<std::string>()) {
     list->set(name, text);
   } else if (target->isType<Teuchos::Array<double>>()) {
-    std::string t = trim(text);
+    std::string t = detail::trimmed(text);
     if (!t.empty() && t.front() == '{' && t.back() == '}') {
       t = t.substr(1, t.size() - 2);
     }

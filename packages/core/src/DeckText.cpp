@@ -15,16 +15,6 @@ namespace capsula::core::detail {
 
 namespace {
 
-std::string trimmed(const std::string& s)
-{
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos) {
-    return {};
-  }
-  const auto last = s.find_last_not_of(" \t\r\n");
-  return s.substr(first, last - first + 1);
-}
-
 /// One tag of the deck's text, as far as the check needs it.
 struct Tag {
   std::string element;                           // "ParameterList", "Parameter", ...
@@ -167,6 +157,16 @@ std::string joined(const std::vector<std::string>& path, const std::string& name
 }
 
 } // namespace
+
+std::string trimmed(const std::string& s)
+{
+  const auto first = s.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) {
+    return {};
+  }
+  const auto last = s.find_last_not_of(" \t\r\n");
+  return s.substr(first, last - first + 1);
+}
 
 bool parseFiniteReal(const std::string& text, double& value)
 {

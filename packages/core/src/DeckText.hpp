@@ -16,6 +16,9 @@ namespace capsula::core::detail {
 /// `sourceName` names the deck in the message.
 void checkDeckText(const std::string& xml, const std::string& sourceName);
 
+/// `s` without leading and trailing blanks (spaces, tabs, line ends).
+std::string trimmed(const std::string& s);
+
 /// Strict parses shared with --set: true only if the whole trimmed text is the value.
 bool parseFiniteReal(const std::string& text, double& value);
 bool parseInteger(const std::string& text, int& value);
