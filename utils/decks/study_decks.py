@@ -27,18 +27,20 @@ def g(x):
 
 def cell3d_deck(path, comment, *, ca, height, wall="true", law="Skalak", c="2.5", prestress="0.0",
                 fixed="false", level="3", end="15", tolerance="1e-6", steady="0", interval="0.1",
-                wall_stress="true", stride="10", near_singular="1", directory=None, spacing="0.25"):
+                wall_stress="true", stride="10", near_singular="1", directory=None, spacing="0.25",
+                lam="1.0", method="RKF45", shape=()):
     directory = directory or f"out/cell3d/{os.path.basename(os.path.dirname(path))}/" \
                              f"{os.path.splitext(os.path.basename(path))[0]}"
     cell = "Cells/Cell 0/"
     wss = "Output/Wall shear stress/"
     return (path, comment + "\n     (written by %WRITER%)", [
-        ("Flow/Capillary number", ca), ("Flow/Viscosity ratio", "1.0"),
+        ("Flow/Capillary number", ca), ("Flow/Viscosity ratio", lam),
         ("Wall/Enabled", wall),
-        (cell + "Shape", "Sphere"), (cell + "Radius", "1.0"), (cell + "Center", f"{{0.0, {height}, 0.0}}"),
+        *(shape or [(cell + "Shape", "Sphere"), (cell + "Radius", "1.0")]),
+        (cell + "Center", f"{{0.0, {height}, 0.0}}"),
         (cell + "Mesh level", level), (cell + "Membrane law", law), (cell + "Area dilation C", c),
         (cell + "Prestress", prestress), (cell + "Fixed height", fixed),
-        ("Time integration/End time", end), ("Time integration/Method", "RKF45"),
+        ("Time integration/End time", end), ("Time integration/Method", method),
         ("Time integration/Tolerance", tolerance), ("Time integration/Initial step", "1e-3"),
         ("Time integration/Steady tolerance", steady),
         ("Discretisation/Quadrature points", "7"), ("Discretisation/Singular quadrature points", "6"),
@@ -155,6 +157,48 @@ def cell3d():
         yield path, comment, assignments[:2] + [
             ("Flow/Shear rate/Form", "Pulsatile"), ("Flow/Shear rate/Amplitude", "0.5"),
             ("Flow/Shear rate/Period", period)] + assignments[2:]
+
+    # Viscosity ratio (docs/cell3d-viscosity-ratio-results.md). An initially spherical capsule
+    # has no preferred material orientation, so it tank-treads at every lambda; tumbling and
+    # swinging need a non-spherical unstressed shape. The cell is an oblate spheroid of aspect
+    # ratio 0.8 with the volume of the unit sphere (semi-axes 1.0772, 1.0772, 0.86177: Ca
+    # refers to the equal-volume radius, as in Walter et al. 2011 and Dupont et al. 2016),
+    # its symmetry axis along the velocity gradient y, so that it turns in the shear plane.
+    # Its largest semi-axis stays below 1.25, so it can tumble at h/a = 1.25 without touching
+    # the wall. The height is held fixed (Section 5.1), so each run's regime belongs to one
+    # height; u_lift is the migration velocity the constraint removes. lambda in {0.2, 1, 2,
+    # 5, 10} x Ca in {0.03, 0.05, 0.1, 0.3, 0.9} x {Skalak C = 2.5, neo-Hookean}, at h/a =
+    # 1.25 and 2 and in unbounded shear (Ca = 0.03 and 0.05 reach the tumbling side of the
+    # transition, which lies below Ca = 0.1 for this shape); a spherical control at lambda =
+    # 10, Ca = 0.1. Level 2, Auto at
+    # 1e-4 (ROS34PW2 takes over where the membrane holds RKF45's step), to t = 30 (two
+    # tumbling periods of a rigid spheroid of this shape, 4 pi (r + 1/r) / 2 ~ 13), outputs
+    # every 0.1, a wall stress map at spacing 0.5.
+    cell = "Cells/Cell 0/"
+    oblate = [(cell + "Shape", "Spheroid"), (cell + "Semi-axes", "{1.0772, 1.0772, 0.86177}"),
+              (cell + "Orientation axis", "{1.0, 0.0, 0.0}"), (cell + "Orientation angle", "90")]
+    study = dict(level="2", end="30", tolerance="1e-4", method="Auto", stride="50", spacing="0.5")
+    laws = [("Skalak", "2.5", "Skalak C = 2.5"), ("NeoHookean", "1.0", "neo-Hookean")]
+    for setting, where, placement in [
+            ("wall-h1.25", "centroid held at h/a = 1.25", dict(height="1.25", fixed="true")),
+            ("wall-h2", "centroid held at h/a = 2", dict(height="2", fixed="true")),
+            ("unbounded", "unbounded shear", dict(height="0.0", wall="false", wall_stress="false"))]:
+        for law, c, law_name in laws:
+            for ca in ["0.03", "0.05", "0.1", "0.3", "0.9"]:
+                for lam in ["0.2", "1", "2", "5", "10"]:
+                    yield cell3d_deck(
+                        f"{root}/viscosity-ratio/{setting}/{law}-Ca{ca}-lambda{lam}.xml",
+                        f"Viscosity-ratio study: oblate capsule (aspect ratio 0.8), {law_name}, Ca = {ca},\n"
+                        f"     lambda = {lam}, {where}.",
+                        ca=ca, lam=lam, law=law, c=c, shape=oblate, **placement, **study)
+    for setting, placement in [("wall-h1.25", dict(height="1.25", fixed="true")),
+                               ("unbounded", dict(height="0.0", wall="false", wall_stress="false"))]:
+        yield cell3d_deck(
+            f"{root}/viscosity-ratio/{setting}/sphere-Skalak-Ca0.1-lambda10.xml",
+            "Viscosity-ratio study, control: a spherical capsule, Skalak C = 2.5, Ca = 0.1, lambda = 10,\n"
+            f"     {'centroid held at h/a = 1.25' if setting != 'unbounded' else 'unbounded shear'}: "
+            "it tank-treads.",
+            ca="0.1", lam="10", **placement, **study)
 
 
 # --- twocell3d: thesis Chapter 6, Section 6.1 ------------------------------------------------

@@ -23,6 +23,7 @@ runs=""
 jobs=${DEFAULT_JOBS:-2}
 ranks=${DEFAULT_RANKS:-1}
 plot_only=0
+keep_finished=0
 positional=()
 queued=()
 failed_runs=0
@@ -34,6 +35,9 @@ common_options_help() {
                RUNS/<name>.xml, its log RUNS/<name>.log
   --jobs N     runs at the same time (default $jobs)
   --ranks N    MPI ranks per run (default $ranks; 1 runs without mpiexec)
+  --keep-finished  do not run again a run that finished (its summary.json says so) from
+               the same deck (RUNS/<name>.xml unchanged): a study extended by new decks
+               runs only those
   --help       this text
 EOF
 }
@@ -61,6 +65,7 @@ parse_options() {
       --runs) [[ $# -ge 2 ]] || die "--runs needs a value"; runs="$2"; shift ;;
       --jobs) [[ $# -ge 2 ]] || die "--jobs needs a value"; jobs="$2"; shift ;;
       --ranks) [[ $# -ge 2 ]] || die "--ranks needs a value"; ranks="$2"; shift ;;
+      --keep-finished) keep_finished=1 ;;
       -h|--help) usage; exit 0 ;;
       -*) die "unknown option '$1' (see --help)" ;;
       *) positional+=("$1") ;;
@@ -110,12 +115,27 @@ run_queued() {
   [[ ${#queued[@]} -gt 0 ]] || return 0
   require_app
   mkdir -p "$runs"
+  local -A finished=()
+  if [[ $keep_finished -eq 1 ]]; then
+    # The runs that finished, with the checksum of the deck they ran from (compared below
+    # with the deck written now).
+    for line in "${queued[@]}"; do
+      name=${line%%$'\t'*}
+      if [[ -f "$runs/$name.xml" ]] && grep -q '"status": "finished"' "$runs/$name/summary.json" 2>/dev/null; then
+        finished[$name]=$(cksum < "$runs/$name.xml")
+      fi
+    done
+  fi
   printf '%s\n' "${queued[@]}" > "$runs/.decks.tsv"
   "$python" "$deck_writer" manifest --app "$APP" --build "$build" --runs "$runs" "$runs/.decks.tsv" > /dev/null ||
     die "the decks were not written (see the message above); nothing was run"
   rm -f "$runs/.failed"
   for line in "${queued[@]}"; do
     name=${line%%$'\t'*}
+    if [[ -n "${finished[$name]-}" && "${finished[$name]}" == "$(cksum < "$runs/$name.xml")" ]]; then
+      echo "  kept    $name (finished from the same deck)"
+      continue
+    fi
     while [[ $(jobs -rp | wc -l) -ge $jobs ]]; do
       wait -n || true
     done
