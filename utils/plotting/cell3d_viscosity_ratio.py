@@ -136,6 +136,7 @@ def describe(run, transient, swing_threshold):
                seconds=timings.get("wall seconds (this process)", float("nan")),
                seconds_per_rhs=timings.get("seconds per rhs evaluation (this process)", float("nan")),
                volume_drift=run.summary.get("max volume drift", float("nan")))
+    row["seconds_per_step"] = row["seconds"] / row["steps"] if row["steps"] else float("nan")
     table = run.table()
     keep = table["time"] >= transient
     if row["status"] != "finished" or np.count_nonzero(keep) < 3:
@@ -164,7 +165,7 @@ def settings_in(rows):
 
 COLUMNS = ["setting", "law", "shape", "ca", "lam", "regime", "mean_theta", "swing", "turn", "ratio",
            "D12", "u_slip", "u_lift", "omega_z", "wall_stress_max", "gmres", "steps", "stiff_steps",
-           "seconds", "seconds_per_rhs", "cost_vs_lambda1", "volume_drift", "level", "status", "time"]
+           "seconds", "seconds_per_step", "seconds_per_rhs", "cost_vs_lambda1", "volume_drift", "level", "status", "time"]
 
 
 def add_cost_ratios(rows):
@@ -190,7 +191,7 @@ def write_tables(rows, folder):
         for row in rows:
             f.write(",".join(text(row[c] if c != "setting" else setting_of(row)) for c in COLUMNS) + "\n")
     shown = ["setting", "law", "shape", "ca", "lam", "regime", "mean_theta", "swing", "ratio", "D12",
-             "u_slip", "u_lift", "omega_z", "wall_stress_max", "gmres", "steps", "seconds_per_rhs",
+             "u_slip", "u_lift", "omega_z", "wall_stress_max", "gmres", "steps", "stiff_steps", "seconds_per_step",
              "cost_vs_lambda1"]
     path = os.path.join(folder, "cell3d_viscosity_ratio_table.md")
     with open(path, "w", encoding="utf-8") as f:
@@ -233,8 +234,10 @@ def phase_diagram(rows, folder, plt, co):
                 ax.set_xlabel("viscosity ratio lambda")
             if j == 0:
                 ax.set_ylabel("Ca")
-    handles = {h.get_label(): h for ax in axes.flat for h in ax.collections}
-    axes[0][0].legend(list(handles.values()), list(handles.keys()), loc="upper left", fontsize=7)
+    from matplotlib.lines import Line2D
+    handles = [Line2D([], [], ls="none", marker=marker, color=colour, ms=7, label=regime)
+               for regime, (marker, colour) in MARKERS.items()]
+    axes[0][0].legend(handles=handles, loc="upper left", fontsize=7)
     co.save_figure(fig, folder, "cell3d_viscosity_ratio_phase_diagram.png")
 
 

@@ -21,6 +21,13 @@ EXPECTED=(cell3d_viscosity_ratio_phase_diagram.png cell3d_viscosity_ratio_inclin
 
 # Regimes are judged on the outputs after this time (the start-up from the unstressed shape).
 transient=15
+only=()   # --only GLOB: the runs whose name (e.g. unbounded/Skalak-Ca0.05-lambda2) matches
+
+study_options_help() {
+  echo "  --only GLOB  run only the decks whose name (the path under input/cell3d/viscosity-ratio/"
+  echo "               without .xml, e.g. 'unbounded/Skalak-Ca0.05-*') matches GLOB; may be"
+  echo "               repeated; the figures are drawn from every run in the runs folder"
+}
 study_runs() {
   local settings=() deck name
   local decks=("$here"/input/cell3d/viscosity-ratio/*/*.xml)
@@ -43,14 +50,34 @@ study_runs() {
     full)
       settings=() ;;
   esac
+  local pattern selected
   for deck in "${decks[@]}"; do
     name=${deck#"$here"/input/cell3d/viscosity-ratio/}
-    queue_run "${name%.xml}" "$deck" "${settings[@]}"
+    name=${name%.xml}
+    selected=$((${#only[@]} == 0))
+    for pattern in "${only[@]}"; do
+      # shellcheck disable=SC2053  # GLOB is a pattern
+      if [[ "$name" == $pattern ]]; then selected=1; fi
+    done
+    if [[ $selected -eq 1 ]]; then queue_run "$name" "$deck" "${settings[@]}"; fi
   done
+  [[ ${#queued[@]} -gt 0 ]] || die "no deck matches --only ${only[*]}"
 }
 
 study_figures() {
   draw cell3d_viscosity_ratio.py --transient "$transient"
 }
 
-figure_study_main "$@"
+# --only is this study's own option; the rest go to figure_study_main.
+args=()
+while [[ $# -gt 0 ]]; do
+  if [[ "$1" == --only ]]; then
+    [[ $# -ge 2 ]] || die "--only needs a GLOB (see --help)"
+    only+=("$2")
+    shift 2
+  else
+    args+=("$1")
+    shift
+  fi
+done
+figure_study_main "${args[@]}"

@@ -197,7 +197,7 @@ Runs the $STUDY study decks and draws the thesis's figures of it as PNG files in
   --plot-only  draw from the runs already in the runs folder
   --check      afterwards check that each expected figure exists and is not blank
                (utils/plotting/check_figures.py)
-$(common_options_help)
+$(common_options_help; if declare -F study_options_help > /dev/null; then study_options_help; fi)
 
 Exit status: 0 when every run finished and every figure was drawn (and passed --check);
 1 otherwise (the log of each run is RUNS/<name>.log).
