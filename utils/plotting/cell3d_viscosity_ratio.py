@@ -23,7 +23,7 @@ such and kept out of the trends.
 Writes into --out
   cell3d_viscosity_ratio_table.md, cell3d_viscosity_ratio_table.csv   one row per run
   cell3d_viscosity_ratio_phase_diagram.png   regime against lambda and Ca, per law and height
-  cell3d_viscosity_ratio_inclination.png     mean inclination (bars: the swing) and D12 vs lambda
+  cell3d_viscosity_ratio_inclination.png     mean inclination (bars: half the swing) and D12 vs lambda
   cell3d_viscosity_ratio_velocities.png      u_slip, migration velocity u_lift and omega_z vs lambda
   cell3d_viscosity_ratio_histories.png       theta(t) (unwrapped) of the Skalak cell at the
                                              smallest and largest Ca, one line per lambda

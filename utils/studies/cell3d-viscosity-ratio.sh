@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # The viscosity-ratio study (docs/cell3d-viscosity-ratio-results.md): an oblate capsule
 # (aspect ratio 0.8) held at h/a = 1.25 and 2 above the wall and in unbounded shear, for
-# lambda = 0.2 to 10 and Ca = 0.1 to 0.9, Skalak C = 2.5 and neo-Hookean
+# lambda = 0.2 to 10 and Ca = 0.03 to 0.9, Skalak C = 2.5 and neo-Hookean
 # (input/cell3d/viscosity-ratio/); classifies each run as tank-treading, swinging or tumbling
 # and draws the phase diagram, the inclination and velocities against lambda and the cost of
 # the lambda != 1 solve (utils/plotting/cell3d_viscosity_ratio.py).
-#   utils/studies/cell3d-viscosity-ratio.sh --quick /tmp/fig   # ~1 min on 2 cores: 6 runs, level 1, t = 4
-#   utils/studies/cell3d-viscosity-ratio.sh docs/figures       # reduced (docs/figures): the 92 decks at level 1: ~40 min
-#   utils/studies/cell3d-viscosity-ratio.sh --full /tmp/fig    # the decks as written (level 2): ~5 h
+#   utils/studies/cell3d-viscosity-ratio.sh --quick /tmp/fig   # ~40 s on 2 cores: 6 runs, level 1, t = 4
+#   utils/studies/cell3d-viscosity-ratio.sh docs/figures       # reduced (docs/figures): the 152 decks at level 1: ~80 min
+#   utils/studies/cell3d-viscosity-ratio.sh --full /tmp/fig    # the decks as written (level 2): about a day
 # utils/studies/cell3d-viscosity-ratio.sh --help lists the options.
 set -euo pipefail
 STUDY=cell3d-viscosity-ratio
@@ -28,6 +28,7 @@ study_options_help() {
   echo "               without .xml, e.g. 'unbounded/Skalak-Ca0.05-*') matches GLOB; may be"
   echo "               repeated; the figures are drawn from every run in the runs folder"
 }
+
 study_runs() {
   local settings=() deck name
   local decks=("$here"/input/cell3d/viscosity-ratio/*/*.xml)
