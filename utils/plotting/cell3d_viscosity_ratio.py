@@ -316,6 +316,25 @@ def histories_figure(rows, folder, plt, co):
     co.save_figure(fig, folder, "cell3d_viscosity_ratio_histories.png")
 
 
+def check_trends(rows):
+    """What every run set must show, whatever its mesh and length: a viscous interior deforms
+    less (mean D12 at the smallest lambda above that at the largest, for each setting, law
+    and Ca of the oblate cell), and a spherical capsule tank-treads. Prints one line; returns
+    whether both hold."""
+    groups = {}
+    for r in rows:
+        if r["shape"] != "Sphere" and r["regime"] != STOPPED:
+            groups.setdefault((r["height"], r["law"], r["ca"]), []).append(r)
+    pairs = [(min(g, key=lambda r: r["lam"]), max(g, key=lambda r: r["lam"]))
+             for g in groups.values() if len({r["lam"] for r in g}) > 1]
+    falls = sum(low["D12"] > high["D12"] for low, high in pairs)
+    spheres = [r for r in rows if r["shape"] == "Sphere"]
+    steady = sum(r["regime"] == TANK_TREADING for r in spheres)
+    print(f"cell3d_viscosity_ratio: D12 falls from the smallest to the largest lambda in {falls} of "
+          f"{len(pairs)} groups; {steady} of {len(spheres)} spherical capsules tank-tread")
+    return bool(pairs) and falls == len(pairs) and steady == len(spheres)
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", help="folder for the tables and PNG files")
@@ -324,6 +343,8 @@ def main(argv=None):
     parser.add_argument("--swing-threshold", type=float, default=1.0,
                         help="peak-to-peak inclination (degrees) from which a run swings (default 1)")
     parser.add_argument("--self-test", action="store_true", help="check the criterion on synthetic signals")
+    parser.add_argument("--check-trends", action="store_true",
+                        help="exit 1 unless D12 falls with lambda and the spherical capsules tank-tread")
     parser.add_argument("runs", nargs="*", help="cell3d run directories or folders holding them")
     args = parser.parse_args(argv)
     if args.self_test:
@@ -359,7 +380,8 @@ def main(argv=None):
     stopped = [r for r in rows if r["regime"] == STOPPED]
     for r in stopped:
         print(f"cell3d_viscosity_ratio: {r['directory']} stopped at t = {r['time']:g} ({r['status']})")
-    return 0
+    trends = check_trends(rows)
+    return 1 if args.check_trends and not trends else 0
 
 
 if __name__ == "__main__":

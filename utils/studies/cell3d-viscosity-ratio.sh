@@ -66,7 +66,10 @@ study_runs() {
 }
 
 study_figures() {
-  draw cell3d_viscosity_ratio.py --transient "$transient"
+  local check=()
+  # The quick runs are too short for regimes, not for the trends every run set must show.
+  [[ "$mode" != quick ]] || check=(--check-trends)
+  draw cell3d_viscosity_ratio.py --transient "$transient" "${check[@]}"
 }
 
 # --only is this study's own option; the rest go to figure_study_main.
