@@ -201,6 +201,32 @@ def cell3d():
             ca="0.1", lam="10", **placement, **study)
 
 
+    # Red cells (docs/cell3d-red-cell-results.md): the Evans-Fung biconcave cell with the
+    # volume of the unit sphere (disc radius R0 = 1.38577 a, a the equal-volume radius Ca
+    # refers to), Skalak C = 10 (a nearly area-preserving membrane), bending modulus E_b =
+    # k_b / (G a^2) = 0.01 with the initial shape free of bending moments, its symmetry axis
+    # along the velocity gradient y so that it turns in the shear plane. Free shear: Ca in
+    # {0.05, 0.1, 0.2, 0.4, 0.8} x lambda in {1, 5} (5: the viscosity of haemoglobin over
+    # plasma's); near the wall: released at h/a = 2 (free height), Ca in {0.1, 0.4} x lambda
+    # in {1, 5}. Level 2, Auto at 1e-4 (ROS34PW2 takes the stiff steps bending and C = 10
+    # need), to t = 30, outputs every 0.1.
+    red = [(cell + "Shape", "Biconcave"), (cell + "Radius", "1.38577"),
+           (cell + "Orientation axis", "{1.0, 0.0, 0.0}"), (cell + "Orientation angle", "90"),
+           (cell + "Bending modulus", "0.01"), (cell + "Bending reference", "Initial shape")]
+    for setting, where, placement, grid in [
+            ("unbounded", "unbounded shear", dict(height="0.0", wall="false", wall_stress="false"),
+             [(ca, lam) for lam in ["1", "5"] for ca in ["0.05", "0.1", "0.2", "0.4", "0.8"]]),
+            ("wall-h2", "released at h/a = 2 above the wall", dict(height="2"),
+             [(ca, lam) for lam in ["1", "5"] for ca in ["0.1", "0.4"]])]:
+        for ca, lam in grid:
+            yield cell3d_deck(
+                f"{root}/red-cell/{setting}/Ca{ca}-lambda{lam}.xml",
+                f"Red cell: biconcave (Evans-Fung), Skalak C = 10, bending E_b = 0.01, Ca = {ca},\n"
+                f"     lambda = {lam}, {where}.",
+                ca=ca, lam=lam, c="10", shape=red, directory=f"out/cell3d/red-cell/{setting}/Ca{ca}-lambda{lam}",
+                **placement, **study)
+
+
 # --- twocell3d: thesis Chapter 6, Section 6.1 ------------------------------------------------
 #   demo.xml        two cells side by side at h/a = 1.25, level 2, to t = 1
 #   side-by-side/   Delta x = 0, Delta z0/a in {0.5, 1, 2, 3, 4, 5, 7.5, 10}

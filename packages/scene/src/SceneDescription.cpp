@@ -4,6 +4,8 @@
 
 #include <capsula/core/Error.hpp>
 
+#include <cmath>
+
 namespace capsula::scene {
 
 namespace core = capsula::core;
@@ -29,6 +31,29 @@ int countCells(const Teuchos::ParameterList& cells)
     }
   }
   return count;
+}
+
+// The bending keys that only make sense together (the validators see one key at a time).
+void requireConsistentBending(const CellDescription& cell)
+{
+  core::require<core::InputError>(std::isfinite(cell.spontaneousCurvature), "'", cell.path,
+                                  "/Spontaneous curvature' = ", cell.spontaneousCurvature, " is not a finite number.");
+  if (cell.bendingModulus == 0.0) {
+    core::require<core::InputError>(cell.spontaneousCurvature == 0.0, "'", cell.path, "/Spontaneous curvature' = ",
+                                    cell.spontaneousCurvature, " has no effect without bending: set '", cell.path,
+                                    "/Bending modulus' > 0 or the curvature to 0.");
+    return;
+  }
+  core::require<core::InputError>(std::isfinite(cell.bendingModulus), "'", cell.path,
+                                  "/Bending modulus' is not a finite number.");
+  core::require<core::InputError>(cell.membraneForces == "Virtual work", "'", cell.path,
+                                  "/Bending modulus' > 0 needs '", cell.path,
+                                  "/Membrane forces' = 'Virtual work': bending enters as the nodal forces "
+                                  "of its energy, which the contour-integral load has no place for.");
+  core::require<core::InputError>(cell.bendingReference == "Flat" || cell.spontaneousCurvature == 0.0, "'", cell.path,
+                                  "/Spontaneous curvature' = ", cell.spontaneousCurvature, " and '", cell.path,
+                                  "/Bending reference' = 'Initial shape' both set the curvature without "
+                                  "moments: keep one of them.");
 }
 
 } // namespace
@@ -62,6 +87,10 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
     cell.shearModulus = list.get<double>("Shear modulus");
     cell.areaDilation = list.get<double>("Area dilation C");
     cell.prestress = list.get<double>("Prestress");
+    cell.bendingModulus = list.get<double>("Bending modulus");
+    cell.spontaneousCurvature = list.get<double>("Spontaneous curvature");
+    cell.bendingReference = list.get<std::string>("Bending reference");
+    requireConsistentBending(cell);
     cell.fixedHeight = list.get<bool>("Fixed height");
     cell.meshLevel = list.get<int>("Mesh level");
     core::require<core::InputError>(!cell.fixedHeight || scene.wall, "'", cell.path,

@@ -79,6 +79,23 @@ void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double
                     "Membrane prestress alpha = a/a0 - 1 (eq 3.45): the unstressed reference shape "
                     "is the initial shape shrunk by 1 + alpha about its centroid (0.05 = 5%).",
                     core::atLeast(0.0), core::lessThan(1.0));
+  core::declareReal(cell, "Bending modulus", 0.0,
+                    "E_b = k_b / (G a^2): the membrane's bending modulus k_b over the G of the "
+                    "capillary number times the cell radius squared (Helfrich energy (k_b/2) int "
+                    "(2H - c0)^2 dA, docs/membrane-forces.md). 0 builds no bending term. A red cell "
+                    "has E_b ~ 0.005-0.03 (k_b ~ 2e-19 J, G ~ 5e-6 N/m, a ~ 2.8 um). Needs 'Membrane "
+                    "forces' = 'Virtual work'.",
+                    core::atLeast(0.0));
+  core::declareReal(cell, "Spontaneous curvature", 0.0,
+                    "c0 a: the total curvature 2H at which the membrane carries no bending moment, "
+                    "times the cell radius (outward normal: a sphere of radius R has 2H = 2/R, so a "
+                    "sphere with c0 = 2/R is free of bending moments). Needs a 'Bending modulus' > 0 "
+                    "and 'Bending reference' = 'Flat'.");
+  core::declareChoice(cell, "Bending reference", "Flat", {"Flat", "Initial shape"},
+                      "The curvature at which the bending energy vanishes. 'Flat': the spontaneous "
+                      "curvature c0 everywhere. 'Initial shape': each material point's own 2H in "
+                      "the cell's initial shape, so that the shape the deck builds (a biconcave red "
+                      "cell, say) is free of bending moments.");
   core::declareBool(cell, "Fixed height", false,
                     "Hold the height of the cell's centroid above the wall fixed (thesis Section "
                     "5.1): the cell's mean vertical velocity is removed from all its nodes.");

@@ -21,6 +21,9 @@ struct CellDescription {
   double shearModulus = 1.0;      ///< relative to the G of the capillary number
   double areaDilation = 0.0;      ///< C (Skalak)
   double prestress = 0.0;         ///< alpha (eq 3.45)
+  double bendingModulus = 0.0;    ///< E_b = k_b / (G a^2); 0: no bending term
+  double spontaneousCurvature = 0.0; ///< c0 a
+  std::string bendingReference;   ///< "Flat" or "Initial shape"
   bool fixedHeight = false;
   int meshLevel = 0;
 };

@@ -5,7 +5,8 @@
 //   Wall/             Enabled
 //   Cells/Cell 0/     Shape, Radius, Semi-axes, Center, Orientation ..., Mesh level
 //                     (capsula::mesh), Membrane law, Shear modulus, Area dilation C,
-//                     Prestress, Fixed height
+//                     Prestress, Bending modulus, Spontaneous curvature, Bending
+//                     reference, Fixed height
 //   Cells/Cell 1/     ... one sublist per cell, numbered from 0
 //   Cells/            Minimum gap (between cell surfaces: touching at the start, stop of a run)
 //   Mesh regularisation/, Mesh adaption/   (capsula::mesh)
