@@ -25,27 +25,42 @@ SurfaceMassMatrix::SurfaceMassMatrix(const SurfaceMesh& mesh)
 
 void SurfaceMassMatrix::assemble(const double* positions)
 {
-  const quadrature::TriangleRule& rule = quadrature::triangleRule(7);
   std::fill(diagonal_.begin(), diagonal_.end(), 0.0);
   for (int e = 0; e < mesh_->numElements(); ++e) {
     const ElementNodes x = mesh_->elementNodes(e, positions);
-    const ShapeParameters p = shapeParameters(x);
-    std::array<double, 36>& M = element_[static_cast<std::size_t>(e)];
-    M.fill(0.0);
-    for (int q = 0; q < rule.size(); ++q) {
-      const SurfacePoint s = evaluateSurfacePoint(x, p, rule.xi[q], rule.eta[q]);
-      double phi[6];
-      shapeFunctions(p, rule.xi[q], rule.eta[q], phi);
-      const double w = rule.weight[q] * s.metric;
-      for (int k = 0; k < 6; ++k) {
-        for (int l = 0; l < 6; ++l) {
-          M[6 * k + l] += w * phi[k] * phi[l];
-        }
+    assembleElement(e, x, shapeParameters(x));
+  }
+}
+
+void SurfaceMassMatrix::assemble(const double* positions, const std::vector<ShapeParameters>& parameters)
+{
+  core::require(parameters.size() == static_cast<std::size_t>(mesh_->numElements()),
+                "SurfaceMassMatrix: ", parameters.size(), " shape parameter sets for ", mesh_->numElements(),
+                " elements");
+  std::fill(diagonal_.begin(), diagonal_.end(), 0.0);
+  for (int e = 0; e < mesh_->numElements(); ++e) {
+    assembleElement(e, mesh_->elementNodes(e, positions), parameters[static_cast<std::size_t>(e)]);
+  }
+}
+
+void SurfaceMassMatrix::assembleElement(int e, const ElementNodes& x, const ShapeParameters& p)
+{
+  const quadrature::TriangleRule& rule = quadrature::triangleRule(7);
+  std::array<double, 36>& M = element_[static_cast<std::size_t>(e)];
+  M.fill(0.0);
+  for (int q = 0; q < rule.size(); ++q) {
+    const SurfacePoint s = evaluateSurfacePoint(x, p, rule.xi[q], rule.eta[q]);
+    double phi[6];
+    shapeFunctions(p, rule.xi[q], rule.eta[q], phi);
+    const double w = rule.weight[q] * s.metric;
+    for (int k = 0; k < 6; ++k) {
+      for (int l = 0; l < 6; ++l) {
+        M[6 * k + l] += w * phi[k] * phi[l];
       }
     }
-    for (int k = 0; k < 6; ++k) {
-      diagonal_[static_cast<std::size_t>(mesh_->element(e)[k])] += M[6 * k + k];
-    }
+  }
+  for (int k = 0; k < 6; ++k) {
+    diagonal_[static_cast<std::size_t>(mesh_->element(e)[k])] += M[6 * k + k];
   }
 }
 

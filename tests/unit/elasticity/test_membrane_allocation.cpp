@@ -1,7 +1,9 @@
-// MembraneMechanics::evaluate runs every right-hand-side evaluation: it must not touch
-// the heap. This executable counts calls to the global operator new.
+// MembraneMechanics::evaluate and HelfrichBending::evaluate run every right-hand-side
+// evaluation, and HelfrichBending::applyStiffness every Krylov iteration: they must not
+// touch the heap. This executable counts calls to the global operator new.
 #include "MembraneTesting.hpp"
 
+#include <capsula/elasticity/HelfrichBending.hpp>
 #include <capsula/elasticity/MembraneMechanics.hpp>
 #include <capsula/elasticity/SkalakLaw.hpp>
 #include <capsula/mesh/Shapes.hpp>
@@ -12,6 +14,7 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <vector>
 
 namespace {
 std::atomic<long> allocations{0};
@@ -50,4 +53,19 @@ TEST(MembraneAllocation, EvaluateDoesNotAllocate)
   const long again = allocations.load();
   const MembraneMechanics other(mesh, mesh.positions(), std::make_shared<SkalakLaw>(1.0, 1.0));
   EXPECT_GT(allocations.load() - again, 0);
+}
+
+TEST(MembraneAllocation, BendingEvaluateDoesNotAllocate)
+{
+  using namespace capsula::elasticity;
+  const capsula::mesh::SurfaceMesh mesh = capsula::mesh::makeSphere(2, 1.0);
+  const auto current =
+      capsula::elasticity::testing::mapNodes(mesh.positions(), capsula::elasticity::testing::smoothDeformation);
+  HelfrichBending b(mesh, mesh.positions(), BendingParameters{0.5, 0.3, BendingReference::Flat});
+  std::vector<double> y(current.size());
+  const long before = allocations.load();
+  b.evaluate(current.data());
+  b.evaluate(mesh.positionData());
+  b.applyStiffness(current.data(), y.data());
+  EXPECT_EQ(allocations.load() - before, 0);
 }

@@ -14,6 +14,7 @@
 #include <capsula/mesh/SurfaceMesh.hpp>
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 namespace capsula::mesh {
@@ -27,6 +28,13 @@ public:
   /// parameters (eq 3.17), the 7-point rule (exact for the degree-4 product phi_k phi_l
   /// on a flat element).
   void assemble(const double* positions);
+  /// The same with given shape parameters per element (numElements entries), e.g. those of
+  /// a reference shape: with them fixed the element map is linear in the nodal positions,
+  /// which is what an energy differentiated node by node needs (elasticity::HelfrichBending).
+  void assemble(const double* positions, const std::vector<ShapeParameters>& parameters);
+
+  /// The 6x6 element matrix of element e (row-major, local node order), after assemble().
+  const std::array<double, 36>& elementMatrix(int e) const { return element_[static_cast<std::size_t>(e)]; }
 
   /// y = M x for 3 components per node (x and y hold 3 * numNodes doubles).
   void apply(const double* x, double* y) const;
@@ -40,6 +48,8 @@ public:
   std::vector<double> nodalAreas() const;
 
 private:
+  void assembleElement(int e, const ElementNodes& x, const ShapeParameters& p);
+
   const SurfaceMesh* mesh_;
   std::vector<std::array<double, 36>> element_; // full 6x6 element matrices
   std::vector<double> diagonal_;
