@@ -96,20 +96,48 @@ HelfrichBending::HelfrichBending(const mesh::SurfaceMesh& mesh, std::vector<doub
   force_.assign(at(numNodes), Vec3::Zero());
 
   spontaneous_.assign(at(numNodes), c0);
+  for (QuadraturePoint& point : points_) {
+    point.c = c0;
+  }
   if (parameters.reference == BendingReference::InitialShape) {
-    try {
-      solveCurvature(reference_.data());
-    } catch (const core::NumericalError& error) {
-      throw core::InputError(core::message("the curvature of the 'Bending reference' shape cannot be computed (",
-                                           error.what(), "): 'Initial shape' needs a non-degenerate reference"));
-    }
-    for (int k = 0; k < numNodes; ++k) {
-      spontaneous_[at(k)] = 2.0 * meanCurvature_[at(k)];
-      core::require<core::InputError>(std::isfinite(spontaneous_[at(k)]), "the curvature of the 'Bending reference' ",
-                                      "shape is not finite at node ", k);
+    setReferenceCurvature();
+  }
+  hasSpontaneous_ = std::any_of(points_.begin(), points_.end(), [](const QuadraturePoint& point) {
+    return point.c != 0.0 || point.beta[0] != 0.0 || point.beta[1] != 0.0;
+  });
+}
+
+void HelfrichBending::setReferenceCurvature()
+{
+  // R = Y_h of the reference at every quadrature point, in the element's frame there.
+  try {
+    solveCurvature(reference_.data());
+  } catch (const core::NumericalError& error) {
+    throw core::InputError(core::message("the curvature of the 'Bending reference' shape cannot be computed (",
+                                         error.what(), "): 'Initial shape' needs a non-degenerate reference"));
+  }
+  const mesh::SurfaceMesh& mesh = *mesh_;
+  for (int k = 0; k < mesh.numNodes(); ++k) {
+    spontaneous_[at(k)] = 2.0 * meanCurvature_[at(k)];
+    core::require<core::InputError>(std::isfinite(spontaneous_[at(k)]), "the curvature of the 'Bending reference' ",
+                                    "shape is not finite at node ", k);
+  }
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const mesh::ElementNodes X = mesh.elementNodes(e, reference_.data());
+    const auto& nodes = mesh.element(e);
+    for (int q = 0; q < numPoints; ++q) {
+      QuadraturePoint& point = points_[at(e) * numPoints + at(q)];
+      const auto a = tangents(X, point.dXi, point.dEta);
+      const TangentFrame f = tangentFrame(a[0], a[1]);
+      Vec3 Y = Vec3::Zero();
+      for (int k = 0; k < 6; ++k) {
+        Y += point.phi[k] * curvature_[at(nodes[at(k)])];
+      }
+      point.c = Y.dot(f.normal);
+      point.beta[0] = Y.dot(f.dual[0]);
+      point.beta[1] = Y.dot(f.dual[1]);
     }
   }
-  hasSpontaneous_ = std::any_of(spontaneous_.begin(), spontaneous_.end(), [](double c) { return c != 0.0; });
 }
 
 void HelfrichBending::buildPattern()
@@ -230,7 +258,7 @@ void HelfrichBending::solveCurvature(const double* positions)
 
 void HelfrichBending::energyAndSpontaneousTerm(const double* positions)
 {
-  // E = (k_b/2) int |Y_h - c_h n_e|^2 dA and N_k = int phi_k c_h n_e dA, then
+  // E = (k_b/2) int |Y_h - R|^2 dA and N_k = int phi_k R dA, R = c n_e + beta^i a_i, then
   // Lambda = -k_b (Y - M^-1 N), the multiplier that makes dL/dY = 0.
   const mesh::SurfaceMesh& mesh = *mesh_;
   const double kb = parameters_.modulus;
@@ -246,17 +274,16 @@ void HelfrichBending::energyAndSpontaneousTerm(const double* positions)
       const double J = area.norm();
       const Vec3 n = area / J;
       Vec3 Y = Vec3::Zero();
-      double c = 0.0;
       for (int k = 0; k < 6; ++k) {
         Y += point.phi[k] * curvature_[at(nodes[at(k)])];
-        c += point.phi[k] * spontaneous_[at(nodes[at(k)])];
       }
+      const Vec3 R = point.c * n + point.beta[0] * a[0] + point.beta[1] * a[1];
       const double w = point.weight * J;
-      energy_ += 0.5 * kb * w * (Y - c * n).squaredNorm();
+      energy_ += 0.5 * kb * w * (Y - R).squaredNorm();
       for (int k = 0; hasSpontaneous_ && k < 6; ++k) {
         double* N = spontaneousForce_.data() + 3 * at(nodes[at(k)]);
         for (int d = 0; d < 3; ++d) {
-          N[d] += w * point.phi[k] * c * n[d];
+          N[d] += w * point.phi[k] * R[d];
         }
       }
     }
@@ -291,14 +318,15 @@ void HelfrichBending::addForces(const double* positions)
       fields.Y.setZero();
       fields.lambda.setZero();
       fields.lambdaDerivative = {Vec3::Zero(), Vec3::Zero()};
-      fields.c = 0.0;
+      fields.c = point.c;
+      fields.beta[0] = point.beta[0];
+      fields.beta[1] = point.beta[1];
       for (int k = 0; k < 6; ++k) {
         const std::size_t node = at(nodes[at(k)]);
         fields.Y += point.phi[k] * curvature_[node];
         fields.lambda += point.phi[k] * multiplier_[node];
         fields.lambdaDerivative[0] += point.dXi[k] * multiplier_[node];
         fields.lambdaDerivative[1] += point.dEta[k] * multiplier_[node];
-        fields.c += point.phi[k] * spontaneous_[node];
       }
       const auto d = lagrangianTangentDerivative(a[0], a[1], tangentFrame(a[0], a[1]), fields);
       for (int k = 0; k < 6; ++k) {

@@ -43,7 +43,7 @@ std::string to_string(MembraneForceMethod method)
 
 MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh, std::vector<double> referencePositions,
                                      std::shared_ptr<const MembraneLaw> law,
-                                     const MembraneDiscretisation& discretisation)
+                                     const MembraneDiscretisation& discretisation, const BendingParameters& bending)
     : mesh_(&mesh),
       reference_(std::move(referencePositions)),
       law_(std::move(law)),
@@ -96,6 +96,14 @@ MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh, std::vector<
     mass_ = std::make_unique<mesh::SurfaceMassMatrix>(mesh);
     nodalForce_.assign(numNodes, Vec3::Zero());
     nodalLoad_.assign(numNodes, Vec3::Zero());
+  }
+  if (bending.modulus != 0.0 || bending.spontaneousCurvature != 0.0) {
+    core::require<core::InputError>(discretisation.forceMethod == MembraneForceMethod::VirtualWork,
+                                    "bending ('Bending modulus' > 0) needs the virtual-work load ('Membrane "
+                                    "forces' = 'Virtual work'): it enters as the nodal forces of its energy");
+    bending_ = std::make_unique<HelfrichBending>(mesh, reference_, bending);
+    bendingLoad_ = std::make_unique<LinearLumpedLoad>(mesh);
+    nodalArea_.assign(static_cast<std::size_t>(numNodes), 0.0);
   }
 
   currentTangent_.resize(6 * static_cast<std::size_t>(numElements));
@@ -256,6 +264,17 @@ void MembraneMechanics::virtualWorkLoads(const double* positions)
   // The load density: int phi_k Delta f dS = F_k, i.e. M f = F.
   mass_->assemble(positions);
   mass_->solve(nodalForce_.front().data(), nodalLoad_.front().data());
+  if (bending_) {
+    // The Helfrich energy's nodal forces join the strain energy's; their density comes from
+    // the linear space (LinearLumpedLoad.hpp: M^-1 would keep a grid-scale mode).
+    bending_->evaluate(positions);
+    const std::vector<Vec3>& bendingForce = bending_->nodalForces();
+    mass_->nodalAreas(nodalArea_.data());
+    bendingLoad_->apply(bendingForce.front().data(), nodalArea_.data(), nodalLoad_.front().data(), /*add=*/true);
+    for (std::size_t k = 0; k < nodalForce_.size(); ++k) {
+      nodalForce_[k] += bendingForce[k];
+    }
+  }
   // Element totals and moments of the continuous load: elementLoads() for the outputs
   // (membrane stress metrics, snapshots) and netForce()/netTorque() for the checks.
   for (int e = 0; e < mesh.numElements(); ++e) {
@@ -375,7 +394,12 @@ TangentStiffness MembraneMechanics::tangentStiffness(const double* positions) co
           "the membrane is crushed in element ", e, " (degenerate tangents at a quadrature point)");
     }
   }
-  return TangentStiffness(mesh, std::move(elements));
+  std::shared_ptr<HelfrichBending> bending;
+  if (bending_) { // a copy linearised at `positions`: the membrane's own keeps its state
+    bending = std::make_shared<HelfrichBending>(*bending_);
+    bending->evaluate(positions);
+  }
+  return TangentStiffness(mesh, std::move(elements), std::move(bending));
 }
 
 } // namespace capsula::elasticity

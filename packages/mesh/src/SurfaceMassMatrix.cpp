@@ -143,6 +143,13 @@ int SurfaceMassMatrix::solve(const double* F, double* f, double tolerance)
 std::vector<double> SurfaceMassMatrix::nodalAreas() const
 {
   std::vector<double> area(static_cast<std::size_t>(mesh_->numNodes()), 0.0);
+  nodalAreas(area.data());
+  return area;
+}
+
+void SurfaceMassMatrix::nodalAreas(double* area) const
+{
+  std::fill(area, area + mesh_->numNodes(), 0.0);
   for (int e = 0; e < mesh_->numElements(); ++e) {
     const std::array<double, 36>& M = element_[static_cast<std::size_t>(e)];
     for (int k = 0; k < 6; ++k) {
@@ -150,10 +157,9 @@ std::vector<double> SurfaceMassMatrix::nodalAreas() const
       for (int l = 0; l < 6; ++l) {
         row += M[6 * k + l];
       }
-      area[static_cast<std::size_t>(mesh_->element(e)[k])] += row;
+      area[mesh_->element(e)[k]] += row;
     }
   }
-  return area;
 }
 
 } // namespace capsula::mesh

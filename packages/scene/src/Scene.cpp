@@ -38,6 +38,14 @@ std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMes
   if (cell.prestress > 0.0) {
     line << cell.prestress;
   }
+  if (cell.bendingModulus > 0.0) {
+    line << ", Helfrich bending E_b = " << cell.bendingModulus;
+    if (cell.bendingReference == "Initial shape") {
+      line << " about the reference shape's curvature";
+    } else {
+      line << ", c0 = " << cell.spontaneousCurvature;
+    }
+  }
   line << "; mesh level " << cell.meshLevel << " (" << surface.numElements() << " elements, " << surface.numNodes()
        << " nodes)";
   return line.str();
@@ -119,8 +127,16 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
                                     : cell.prestress > 0.0 ? elasticity::prestressedReference(surface, cell.prestress)
                                                            : surface.positions();
     membraneDiscretisation.forceMethod = elasticity::membraneForceMethod(cell.membraneForces);
-    membranes_.push_back(std::make_unique<elasticity::MembraneMechanics>(surface, std::move(reference), std::move(law),
-                                                                         membraneDiscretisation));
+    elasticity::BendingParameters bending;
+    bending.modulus = cell.bendingModulus;
+    bending.spontaneousCurvature = cell.spontaneousCurvature;
+    bending.reference = elasticity::bendingReference(cell.bendingReference);
+    try {
+      membranes_.push_back(std::make_unique<elasticity::MembraneMechanics>(
+          surface, std::move(reference), std::move(law), membraneDiscretisation, bending));
+    } catch (const core::InputError& e) {
+      throw core::InputError(core::message("'", cell.path, "': ", e.what()));
+    }
     terms_.push_back(describeMembrane(cell, surface));
   }
 

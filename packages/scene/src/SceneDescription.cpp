@@ -39,9 +39,9 @@ void requireConsistentBending(const CellDescription& cell)
   core::require<core::InputError>(std::isfinite(cell.spontaneousCurvature), "'", cell.path,
                                   "/Spontaneous curvature' = ", cell.spontaneousCurvature, " is not a finite number.");
   if (cell.bendingModulus == 0.0) {
-    core::require<core::InputError>(cell.spontaneousCurvature == 0.0, "'", cell.path, "/Spontaneous curvature' = ",
-                                    cell.spontaneousCurvature, " has no effect without bending: set '", cell.path,
-                                    "/Bending modulus' > 0 or the curvature to 0.");
+    core::require<core::InputError>(
+        cell.spontaneousCurvature == 0.0, "'", cell.path, "/Spontaneous curvature' = ", cell.spontaneousCurvature,
+        " has no effect without bending: set '", cell.path, "/Bending modulus' > 0 or the curvature to 0.");
     return;
   }
   core::require<core::InputError>(std::isfinite(cell.bendingModulus), "'", cell.path,

@@ -72,6 +72,8 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   gmres_.maximumIterations = settings_.maximumIterations;
   for (int c = 0; c < scene.numCells(); ++c) {
     mass_.push_back(std::make_unique<mesh::SurfaceMassMatrix>(scene.cell(c)));
+    bendingLoad_.push_back(std::make_unique<elasticity::LinearLumpedLoad>(scene.cell(c)));
+    nodalAreas_.emplace_back(static_cast<std::size_t>(scene.cell(c).numNodes()), 0.0);
   }
 }
 
@@ -92,6 +94,7 @@ void VelocityJacobian::linearise(double t, const std::vector<double>& y)
                                                "' failed: ", e.what()));
     }
     mass_[static_cast<std::size_t>(c)]->assemble(positions);
+    mass_[static_cast<std::size_t>(c)]->nodalAreas(nodalAreas_[static_cast<std::size_t>(c)].data());
     if (preconditioner_.is_null()) {
       continue;
     }
@@ -123,8 +126,14 @@ void VelocityJacobian::apply(const double* x, double* y)
   loads_.resize(n);
   for (int c = 0; c < scene_.numCells(); ++c) {
     const std::size_t first = 3 * static_cast<std::size_t>(scene_.nodeOffset(c));
-    stiffness_[static_cast<std::size_t>(c)].apply(x + first, forces_.data() + first);
+    const elasticity::TangentStiffness& stiffness = stiffness_[static_cast<std::size_t>(c)];
+    stiffness.apply(x + first, forces_.data() + first, elasticity::TangentStiffness::Part::Strain);
     mass_[static_cast<std::size_t>(c)]->solve(forces_.data() + first, loads_.data() + first, kMassSolveTolerance);
+    if (stiffness.hasBending()) { // the bending forces' density, as the membrane makes it
+      stiffness.apply(x + first, forces_.data() + first, elasticity::TangentStiffness::Part::Bending);
+      bendingLoad_[static_cast<std::size_t>(c)]->apply(
+          forces_.data() + first, nodalAreas_[static_cast<std::size_t>(c)].data(), loads_.data() + first, /*add=*/true);
+    }
   }
   const std::vector<double> single = frozen_->singleLayerOfNodalLoad(loads_.data());
   const mesh::Mat3& gradient = flowGradient_;
@@ -199,7 +208,14 @@ std::string VelocityJacobian::settingsHint() const
 std::string VelocityJacobian::describe() const
 {
   std::ostringstream line;
-  line << "stiff Jacobian: single layer of the membranes' tangent stiffness, frozen each step";
+  line << "stiff Jacobian: single layer of the membranes' tangent stiffness";
+  for (int c = 0; c < scene_.numCells(); ++c) {
+    if (scene_.membrane(c).bending() != nullptr) {
+      line << " (with the bending stiffness on the normal modes)";
+      break;
+    }
+  }
+  line << ", frozen each step";
   if (scene_.description().viscosityRatio != 1.0) {
     line << " (double layer left out)";
   }

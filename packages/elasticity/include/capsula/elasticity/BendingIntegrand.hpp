@@ -43,20 +43,26 @@ inline TangentFrame tangentFrame(const Vec3& a1, const Vec3& a2)
 
 /// The fixed (non-geometric) fields of the Lagrangian at one quadrature point: the
 /// interpolated curvature vector Y_h, multiplier Lambda_h and its parametric derivatives
-/// u_i = d_i Lambda_h, the spontaneous curvature c_h, and k_b.
+/// u_i = d_i Lambda_h, the target curvature vector's components (c along n and beta^i
+/// along the tangents a_i: R = c n + beta^i a_i, see HelfrichBending.hpp), and k_b.
 struct BendingPointFields {
   Vec3 Y;
   Vec3 lambda;
   std::array<Vec3, 2> lambdaDerivative;
   double c;
+  double beta[2];
   double modulus;
 };
 
 /// d l / d a_1 and d l / d a_2 of the Lagrangian density (per unit parametric area)
-///   l = (k_b/2) J |Y - c n|^2 + J Lambda.Y - J g^ij u_i . a_j
-///     = [(k_b/2)(|Y|^2 + c^2) + Lambda.Y] J - k_b c Y.(a_1 x a_2) - T,
-/// whose integral is E + Lambda^T (M Y - K x) (HelfrichBending.cpp). The pieces:
+///   l = (k_b/2) J |Y - c n - beta^i a_i|^2 + J Lambda.Y - J g^ij u_i . a_j
+///     = [(k_b/2)(|Y|^2 + c^2 - 2 beta^i Y.a_i + beta^i beta^j g_ij) + Lambda.Y] J
+///       - k_b c Y.(a_1 x a_2) - T,
+/// (n is normal to the a_i), whose integral is E + Lambda^T (M Y - K x)
+/// (HelfrichBending.cpp). The pieces:
 ///   dJ/da_k = J a^k,   d[Y.(a_1 x a_2)]/da_1 = a_2 x Y,   .../da_2 = Y x a_1,
+///   d[J beta^i Y.a_i]/da_k = (beta^i Y.a_i) J a^k + J beta^k Y,
+///   d[J beta^i beta^j g_ij]/da_k = (beta^i beta^j g_ij) J a^k + 2 J beta^k beta^j a_j,
 ///   T = J g^ij b_ij with b_ij = u_i . a_j:
 ///   dT/da_k = T a^k - J sum_l (C_kl + C_lk) a_l + J g^ik u_i,  C = g^-1 b g^-1
 /// (from d g^ij = -g^ik d g_kl g^lj and d g_kl = da_k . a_l + a_k . da_l).
@@ -79,13 +85,17 @@ inline std::array<Vec3, 2> lagrangianTangentDerivative(const Vec3& a1, const Vec
       C[i][j] = gb[i][0] * gi[0][j] + gb[i][1] * gi[1][j];
     }
   }
-  const double s = 0.5 * p.modulus * (p.Y.squaredNorm() + p.c * p.c) + p.lambda.dot(p.Y);
+  const Vec3 tangential = p.beta[0] * a1 + p.beta[1] * a2; // beta^i a_i
+  const double s =
+      0.5 * p.modulus * (p.Y.squaredNorm() + p.c * p.c - 2.0 * p.Y.dot(tangential) + tangential.squaredNorm()) +
+      p.lambda.dot(p.Y);
   const Vec3 area[2] = {a2.cross(p.Y), p.Y.cross(a1)};
   std::array<Vec3, 2> d;
   for (int k = 0; k < 2; ++k) {
     const Vec3 dT = T * f.dual[k] - f.J * ((C[k][0] + C[0][k]) * a1 + (C[k][1] + C[1][k]) * a2) +
                     f.J * (gi[0][k] * u1 + gi[1][k] * u2);
-    d[k] = (s * f.J) * f.dual[k] - (p.modulus * p.c) * area[k] - dT;
+    d[k] =
+        (s * f.J) * f.dual[k] - (p.modulus * p.c) * area[k] - dT + (p.modulus * f.J * p.beta[k]) * (tangential - p.Y);
   }
   return d;
 }

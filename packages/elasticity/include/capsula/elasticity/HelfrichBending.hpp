@@ -8,14 +8,22 @@
 //   M(x) Y = K(x) x   (each coordinate),  M_kl = int phi_k phi_l dA,
 //                                         K_kl = int grad_s phi_k . grad_s phi_l dA,
 // with the consistent mass M (a lumped quadratic mass is singular), and
-//   E(x) = (k_b / 2) int_S |Y_h - c_h n_e|^2 dA,
-// n_e the element's own unit normal at each point of the 7-point rule.
+//   E(x) = (k_b / 2) int_S |Y_h - R|^2 dA,   R = c n_e + beta^i a_i,
+// n_e the element's own unit normal and a_i its tangents at each point of the 7-point
+// rule. R is the curvature vector the membrane carries no moment at, held per quadrature
+// point as components in the element's own frame, so it turns with the element:
+//   Flat:          c = c0, beta = 0 (|Y - c0 n|^2 = (2H - c0)^2 where Y = 2 H n);
+//   InitialShape:  R = Y_h of the reference shape at that point (c its normal part,
+//                  beta^i = Y_h . a^i its tangential part), so that the reference is an
+//                  exact minimum, E = 0, and carries no bending force to round-off. A
+//                  nodal c_k = 2 H_k interpolated instead would leave the discretisation
+//                  error of Y_h as a force at rest (measured: 4-15% of a flat reference's).
 //
 // The element maps use the REFERENCE shape parameters (eq 3.17), fixed for the
 // object's life as in MembraneMechanics, so they are linear in the nodal positions.
 // The nodal forces F_k = dE/dx_k are exact without forming M^-1: with the Lagrangian
 //   L(x, Y, Lambda) = E(x, Y) + Lambda^T (M(x) Y - K(x) x),
-// stationarity in Y gives M Lambda = -k_b (M Y - N), N_k = int phi_k c_h n_e dA, i.e.
+// stationarity in Y gives M Lambda = -k_b (M Y - N), N_k = int phi_k R dA, i.e.
 // Lambda = -k_b (Y - M^-1 N), and then dE/dx_k = dL/dx_k at fixed Y and Lambda, a sum of
 // element integrals (BendingIntegrand.hpp). One mass solve for Y, and one more for
 // M^-1 N where c is nonzero somewhere.
@@ -112,11 +120,15 @@ public:
 
 private:
   /// Shape-function values and derivatives at one quadrature point of one element (the
-  /// reference shape parameters), with the rule's weight.
+  /// reference shape parameters), with the rule's weight, and the components of the
+  /// moment-free curvature vector R = c n_e + beta^i a_i there.
   struct QuadraturePoint {
     double weight;
     double phi[6], dXi[6], dEta[6];
+    double c = 0.0;
+    double beta[2] = {0.0, 0.0};
   };
+  void setReferenceCurvature();
 
   void buildPattern();
   void assembleOperators(const double* positions);

@@ -33,8 +33,16 @@
 //       a few shear times (docs/validation-cell3d.md), the virtual-work load does not.
 //     Both give elementLoads() (the average over each element); VirtualWork also gives
 //     nodalLoads() for the single layer to interpolate.
+//  4. with a bending modulus (VirtualWork only): the nodal forces of the Helfrich energy
+//     (HelfrichBending.hpp), whose load density comes from the linear space
+//     (LinearLumpedLoad.hpp) and is added to the strain energy's M^-1 F; nodalForces()
+//     holds both. The bending term is built with the membrane and uses its reference
+//     shape (material coordinates, and the curvature of a BendingReference::InitialShape).
 // Sign (ERRATA): Delta f = (sigma_ext - sigma_int) . n = -div_s T, n outward; a sphere
 // of radius r under isotropic tension T carries Delta f = (2 T / r) n.
+#include "capsula/elasticity/BendingParameters.hpp"
+#include "capsula/elasticity/HelfrichBending.hpp"
+#include "capsula/elasticity/LinearLumpedLoad.hpp"
 #include "capsula/elasticity/MembraneEnergyGradient.hpp"
 #include "capsula/elasticity/MembraneLaw.hpp"
 #include "capsula/elasticity/MembraneTension.hpp"
@@ -93,10 +101,13 @@ class MembraneMechanics {
 public:
   /// `mesh` gives the topology (it must outlive this object; its positions are not
   /// used); `referencePositions` (3 per node, the mesh's numbering) is the unstressed
-  /// shape. Throws InputError for a wrong size, a null law, a bad N_Q or edge-point
-  /// count, or a reference element folded against its neighbours.
+  /// shape. `bending` with a modulus > 0 adds the Helfrich bending term (VirtualWork
+  /// only). Throws InputError for a wrong size, a null law, a bad N_Q or edge-point
+  /// count, a reference element folded against its neighbours, or bending with the
+  /// contour-integral load.
   MembraneMechanics(const mesh::SurfaceMesh& mesh, std::vector<double> referencePositions,
-                    std::shared_ptr<const MembraneLaw> law, const MembraneDiscretisation& discretisation = {});
+                    std::shared_ptr<const MembraneLaw> law, const MembraneDiscretisation& discretisation = {},
+                    const BendingParameters& bending = {});
 
   /// Computes everything below for the current positions (3 * numNodes doubles), or with
   /// LoadOnly what the load needs. Throws NumericalError if the membrane is folded or
@@ -144,8 +155,14 @@ public:
   /// (no nodal averaging). Independent of evaluate().
   double strainEnergy(const double* positions) const;
 
+  /// The bending term, or null where the membrane has none.
+  const HelfrichBending* bending() const { return bending_.get(); }
+  /// The Helfrich energy at the last evaluate() (0 without bending).
+  double bendingEnergy() const { return bending_ ? bending_->energy() : 0.0; }
+
   /// VirtualWork only: H = d2E/dx dx at `positions`, the derivative of nodalForces()
-  /// (MembraneEnergyHessian.hpp). Independent of evaluate(). Throws InputError for the
+  /// (MembraneEnergyHessian.hpp), with the bending term's stiffness on the normal modes
+  /// where there is one (HelfrichBending::applyStiffness). Independent of evaluate(). Throws InputError for the
   /// contour-integral load, which is not the gradient of an energy, and NumericalError
   /// for a crushed element.
   TangentStiffness tangentStiffness(const double* positions) const;
@@ -155,7 +172,8 @@ public:
   /// nodes' new material points. Throws as the constructor does.
   MembraneMechanics withReference(std::vector<double> referencePositions) const
   {
-    return MembraneMechanics(*mesh_, std::move(referencePositions), law_, discretisation_);
+    return MembraneMechanics(*mesh_, std::move(referencePositions), law_, discretisation_,
+                             bending_ ? bending_->parameters() : BendingParameters{});
   }
 
   const MembraneLaw& law() const { return *law_; }
@@ -185,6 +203,9 @@ private:
   std::vector<Mat3> gradient_;                            // per node: averaged A
   std::vector<ReferenceQuadraturePoint> referencePoints_; // VirtualWork: N_Q per element
   std::unique_ptr<mesh::SurfaceMassMatrix> mass_;         // VirtualWork only
+  std::unique_ptr<HelfrichBending> bending_;              // with a bending modulus only
+  std::unique_ptr<LinearLumpedLoad> bendingLoad_;         // the density of its forces
+  std::vector<double> nodalArea_;                         // int phi_k dS, for bendingLoad_
 
   // Results.
   std::vector<double> area_;

@@ -5,10 +5,16 @@
 // to assemble a sparse matrix (what a preconditioner needs). H is symmetric, sparse (a
 // node couples to the nodes of its elements) and, at a stable state, positive
 // semi-definite with the rigid motions in its kernel.
+//
+// With a bending term (HelfrichBending.hpp) it adds the bending stiffness on the normal
+// modes, k_b P K M^-1 K P: exactly in apply(), and in forEachEntry() its sparse version
+// with M replaced by a diagonal bound (it couples a node to the nodes two elements away).
+#include "capsula/elasticity/HelfrichBending.hpp"
 #include "capsula/elasticity/MembraneEnergyHessian.hpp"
 
 #include <capsula/mesh/SurfaceMesh.hpp>
 
+#include <memory>
 #include <vector>
 
 namespace capsula::elasticity {
@@ -16,13 +22,21 @@ namespace capsula::elasticity {
 class TangentStiffness {
 public:
   /// `mesh` gives the connectivity (it must outlive this object); one matrix per element.
-  TangentStiffness(const mesh::SurfaceMesh& mesh, std::vector<ElementStiffness> elements);
+  /// `bending`, if any, linearised at the same positions (its last evaluate()).
+  TangentStiffness(const mesh::SurfaceMesh& mesh, std::vector<ElementStiffness> elements,
+                   std::shared_ptr<HelfrichBending> bending = nullptr);
 
   int numNodes() const { return mesh_->numNodes(); }
   const std::vector<ElementStiffness>& elements() const { return elements_; }
 
-  /// y = H x for x, y with 3 entries per node (y is overwritten).
-  void apply(const double* x, double* y) const;
+  /// Which part of H apply() applies: the strain energy's, the bending term's or both.
+  enum class Part { All, Strain, Bending };
+
+  /// y = H x for x, y with 3 entries per node (y is overwritten). The parts have loads of
+  /// their own (MembraneMechanics: M^-1 F for the strain forces, LinearLumpedLoad for the
+  /// bending forces), so a Jacobian applies them one at a time.
+  void apply(const double* x, double* y, Part part = Part::All) const;
+  bool hasBending() const { return bending_ != nullptr; }
 
   /// Calls add(row, column, value) for every entry of every element matrix, rows and
   /// columns numbered 3 node + coordinate; entries of shared nodes come once per element
@@ -45,11 +59,16 @@ public:
         }
       }
     }
+    if (bending_) {
+      bending_->forEachEntry(add);
+    }
   }
 
 private:
   const mesh::SurfaceMesh* mesh_;
   std::vector<ElementStiffness> elements_;
+  std::shared_ptr<HelfrichBending> bending_; // its apply needs work arrays: not const
+  mutable std::vector<double> bendingProduct_;
 };
 
 } // namespace capsula::elasticity

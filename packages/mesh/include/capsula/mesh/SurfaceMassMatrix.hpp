@@ -46,6 +46,8 @@ public:
 
   /// int_S phi_k dS per node: the row sums.
   std::vector<double> nodalAreas() const;
+  /// The same into `areas` (numNodes doubles), without allocating.
+  void nodalAreas(double* areas) const;
 
 private:
   void assembleElement(int e, const ElementNodes& x, const ShapeParameters& p);

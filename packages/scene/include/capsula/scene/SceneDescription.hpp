@@ -14,16 +14,16 @@
 namespace capsula::scene {
 
 struct CellDescription {
-  std::string path;               ///< "Cells/Cell 0", for messages
-  Teuchos::ParameterList surface; ///< the cell's sublist (mesh::buildCellSurface reads it)
-  std::string membraneLaw;        ///< "NeoHookean" or "Skalak"
-  std::string membraneForces;     ///< "Virtual work" or "Contour integral"
-  double shearModulus = 1.0;      ///< relative to the G of the capillary number
-  double areaDilation = 0.0;      ///< C (Skalak)
-  double prestress = 0.0;         ///< alpha (eq 3.45)
-  double bendingModulus = 0.0;    ///< E_b = k_b / (G a^2); 0: no bending term
+  std::string path;                  ///< "Cells/Cell 0", for messages
+  Teuchos::ParameterList surface;    ///< the cell's sublist (mesh::buildCellSurface reads it)
+  std::string membraneLaw;           ///< "NeoHookean" or "Skalak"
+  std::string membraneForces;        ///< "Virtual work" or "Contour integral"
+  double shearModulus = 1.0;         ///< relative to the G of the capillary number
+  double areaDilation = 0.0;         ///< C (Skalak)
+  double prestress = 0.0;            ///< alpha (eq 3.45)
+  double bendingModulus = 0.0;       ///< E_b = k_b / (G a^2); 0: no bending term
   double spontaneousCurvature = 0.0; ///< c0 a
-  std::string bendingReference;   ///< "Flat" or "Initial shape"
+  std::string bendingReference;      ///< "Flat" or "Initial shape"
   bool fixedHeight = false;
   int meshLevel = 0;
 };

@@ -5,6 +5,9 @@
 //
 //   J~ v = P [ -c_d S(x_n)[M(x_n)^-1 H(x_n) v] + 2/(1 + lambda_d) grad u_inf . v ],
 //
+// (with bending, H's bending part goes through the bending load's own density map,
+// elasticity::LinearLumpedLoad, as in the right-hand side),
+//
 // frozen at the step's start x_n: H the membranes' tangent stiffness (second variation
 // of the strain energy, elasticity::TangentStiffness), M their mass matrices (the load is
 // M^-1 of the nodal forces), S the single layer on a geometry of its own frozen at x_n, P
@@ -21,6 +24,7 @@
 #include "capsula/scene/LocalMobilityPreconditioner.hpp"
 #include "capsula/scene/StiffSolverParameters.hpp"
 
+#include <capsula/elasticity/LinearLumpedLoad.hpp>
 #include <capsula/elasticity/TangentStiffness.hpp>
 #include <capsula/mesh/SurfaceMassMatrix.hpp>
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
@@ -64,9 +68,11 @@ private:
   Scene& scene_;
   StiffSolverSettings settings_;
   operators::SolverParameters gmres_;
-  std::unique_ptr<operators::BoundaryIntegralSolver> frozen_;  // the single layer at x_n
-  std::vector<elasticity::TangentStiffness> stiffness_;        // per cell, at x_n
-  std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_; // per cell, at x_n
+  std::unique_ptr<operators::BoundaryIntegralSolver> frozen_;              // the single layer at x_n
+  std::vector<elasticity::TangentStiffness> stiffness_;                    // per cell, at x_n
+  std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_;             // per cell, at x_n
+  std::vector<std::unique_ptr<elasticity::LinearLumpedLoad>> bendingLoad_; // per cell
+  std::vector<std::vector<double>> nodalAreas_;                            // per cell, int phi_k dS at x_n
   std::vector<double> frozenPositions_;
   std::vector<double> coefficient_;              // -c_d per node
   std::vector<double> flowFactor_;               // 2 / (1 + lambda_d) per node
