@@ -1,5 +1,6 @@
 // Receptors on a curved membrane and their bond forces spread onto the nodes by virtual work:
 // total force and torque exactly those of the point forces.
+#include <capsula/adhesion/AdhesionOutputs.hpp>
 #include <capsula/adhesion/BondPopulation.hpp>
 #include <capsula/adhesion/Receptors.hpp>
 #include <capsula/mesh/Icosphere.hpp>
@@ -118,4 +119,29 @@ TEST(Receptors, CountFollowsDensityAndPointsMoveWithTheMembrane)
     // On the sphere's discrete surface: within the chord sag (~1e-3 at level 2) of radius 1.
     EXPECT_NEAR(receptors.position(sphere, sphere.positionData(), r).norm(), 1.0, 2e-3);
   }
+}
+
+TEST(AdhesionOutputs, SummaryCountsBondsForceAndContact)
+{
+  mesh::SurfaceMesh sphere = mesh::makeIcosphere(2);
+  std::vector<double> x = sphere.positions();
+  double lowest = 1.0;
+  for (std::size_t i = 1; i < x.size(); i += 3) {
+    lowest = std::min(lowest, x[i]);
+  }
+  for (std::size_t i = 1; i < x.size(); i += 3) {
+    x[i] += 0.01 - lowest; // lowest node 0.01 above the wall
+  }
+  const adhesion::ReceptorSet receptors(sphere, sphere.positions(), 20.0, 5, 0);
+  adhesion::AdhesionSettings s;
+  adhesion::BondPopulation bonds(s, 0, receptors.size());
+  bonds.setState(4, {1.0, Vec3::Zero()});
+  const auto summary = adhesion::summariseAdhesion(bonds, sphere, receptors, x.data());
+  EXPECT_EQ(summary.bonds, 1.0);
+  EXPECT_LT((summary.bondForce - bonds.force(4, receptors.position(sphere, x.data(), 4))).norm(), 1e-15);
+  EXPECT_NEAR(summary.minimumGap, 0.01, 1e-12);
+  // The nodes within r_0 = 0.05 of the wall: a cap of height ~0.04, area 2 pi 0.04 ~ 0.25,
+  // resolved by the node spacing (~0.15 at level 2): a few node shares of ~0.02.
+  EXPECT_GT(summary.contactArea, 0.0);
+  EXPECT_LT(summary.contactArea, 0.5);
 }
