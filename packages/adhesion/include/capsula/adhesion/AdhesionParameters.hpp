@@ -1,0 +1,76 @@
+#pragma once
+// The deck's "Adhesion" sublist: receptor-ligand bonds between a cell's membrane and a
+// ligand-coated wall y = 0, after Hammer's Adhesive Dynamics (Hammer & Apte, Biophys J 63:35,
+// 1992; Chang, Tees & Hammer, PNAS 97:11262, 2000) with deformable cells (Jadhav, Eggleton &
+// Konstantopoulos, Biophys J 88:96, 2005).
+//
+// Units are those of the capillary number Ca = mu k a / G: lengths in cell radii a, forces
+// in G a, energies in G a^2, times in 1/k (k the shear rate), so rates are in units of k;
+// a density per area is per a^2, a spring constant is in G (force per length).
+#include <Teuchos_ParameterList.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <string>
+
+namespace capsula::adhesion {
+
+/// How a bond's off-rate (and on-rate) depends on its stretch (BondKinetics.hpp).
+enum class BondModel {
+  Slip,     ///< Bell (1978): k_off = k_off0 exp(gamma |F| / kT)
+  CatchSlip ///< Dembo et al. (1988): k_off = k_off0 exp((sigma - sigma_ts) (L - lambda)^2 / (2 kT))
+};
+
+/// How bonds form and break.
+enum class BondKinetics {
+  Stochastic, ///< Monte Carlo per receptor and step
+  MeanField   ///< the expected bond occupancy per receptor, deterministic
+};
+
+/// A rectangle x in [xMin, xMax], z in [zMin, zMax] of the wall y = 0 (infinite bounds:
+/// the whole plane).
+struct WallRectangle {
+  double xMin = -std::numeric_limits<double>::infinity();
+  double xMax = std::numeric_limits<double>::infinity();
+  double zMin = -std::numeric_limits<double>::infinity();
+  double zMax = std::numeric_limits<double>::infinity();
+  bool contains(double x, double z) const { return x >= xMin && x <= xMax && z >= zMin && z <= zMax; }
+  bool bounded() const;
+};
+
+/// The adhesion model, read from a validated "Adhesion" sublist.
+struct AdhesionSettings {
+  bool enabled = false;
+  double receptorDensity = 50.0;         ///< receptors per a^2 of reference membrane
+  double ligandDensity = 100.0;          ///< ligands per a^2 of wall
+  WallRectangle ligandPatch;             ///< where the wall carries ligands
+  double springConstant = 10.0;          ///< sigma / G
+  double equilibriumLength = 0.02;       ///< lambda / a
+  double reactionDistance = 0.05;        ///< r_0 / a: a receptor binds only within r_0 of the wall
+  double onRate = 0.1;                   ///< k_on0 / (k a^2): the forward rate per unit ligand density
+  double offRate = 1.0;                  ///< k_off0 / k
+  double reactiveCompliance = 1e-3;      ///< gamma / a (Bell)
+  double transitionSpringConstant = 9.0; ///< sigma_ts / G (Dembo)
+  double thermalEnergy = 1e-4;           ///< k_B T / (G a^2)
+  BondModel model = BondModel::Slip;
+  BondKinetics kinetics = BondKinetics::Stochastic;
+  std::uint64_t seed = 1;
+};
+
+/// Declares Enabled, Receptor density, Ligand density, Ligand patch, Spring constant,
+/// Equilibrium length, Reaction distance, On-rate, Off-rate, Reactive compliance, Transition
+/// spring constant, Thermal energy, Bond model, Kinetics and Seed.
+void declareAdhesionParameters(Teuchos::ParameterList& adhesion);
+
+/// Reads a validated sublist. `path` names it in messages ("Adhesion"); `wall` is the part
+/// of the wall the scene simulates (default: the whole plane). Throws core::InputError,
+/// naming the key, for a negative density, a spring constant of 0 or a non-positive thermal
+/// energy with adhesion enabled, or a ligand patch that is empty or reaches off `wall`.
+AdhesionSettings readAdhesionParameters(const Teuchos::ParameterList& adhesion, const std::string& path = "Adhesion",
+                                        const WallRectangle& wall = {});
+
+/// "Slip (Bell)" / "Catch-slip (Dembo)", "Stochastic" / "Mean field": the deck's names.
+std::string to_string(BondModel model);
+std::string to_string(BondKinetics kinetics);
+
+} // namespace capsula::adhesion

@@ -1,0 +1,165 @@
+#include "capsula/adhesion/BondPopulation.hpp"
+
+#include "capsula/adhesion/BondKinetics.hpp"
+#include "capsula/adhesion/CounterRandom.hpp"
+#include "capsula/adhesion/PointForces.hpp"
+
+#include <capsula/core/Error.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace capsula::adhesion {
+
+namespace core = capsula::core;
+
+namespace {
+
+mesh::Vec3 footOnWall(const mesh::Vec3& x)
+{
+  return mesh::Vec3(x[0], 0.0, x[2]);
+}
+
+// One key word for (cell, receptor): the cell in the high 32 bits, the receptor in the low.
+std::uint64_t streamOf(std::uint64_t cell, std::uint64_t receptor)
+{
+  return (cell << 32) ^ receptor;
+}
+
+} // namespace
+
+BondPopulation::BondPopulation(const AdhesionSettings& settings, std::uint64_t stream, int numReceptors)
+    : settings_(settings), stream_(stream), states_(static_cast<std::size_t>(std::max(numReceptors, 0)))
+{}
+
+void BondPopulation::setState(int r, const BondState& state)
+{
+  core::require<core::InputError>(r >= 0 && r < size(), "BondPopulation: no receptor ", r, ".");
+  const bool valid = settings_.kinetics == BondKinetics::MeanField ? state.occupancy >= 0.0 && state.occupancy <= 1.0
+                                                                   : state.occupancy == 0.0 || state.occupancy == 1.0;
+  core::require<core::InputError>(valid, "BondPopulation: receptor ", r, " cannot have occupancy ", state.occupancy,
+                                  ".");
+  states_[static_cast<std::size_t>(r)] = state;
+}
+
+void BondPopulation::stochasticStep(BondState& state, const mesh::Vec3& x, double dt, std::uint64_t receptor,
+                                    std::uint64_t step, BondEvents& events) const
+{
+  if (state.occupancy > 0.0) {
+    const double p = eventProbability(offRate(settings_, (x - state.anchor).norm()), dt);
+    if (counterUniform(settings_.seed, streamOf(stream_, receptor), step,
+                       static_cast<std::uint64_t>(DrawPurpose::Breakage)) < p) {
+      state.occupancy = 0.0;
+      ++events.broken;
+    }
+    return;
+  }
+  const double p = eventProbability(onRate(settings_, x[1], x[0], x[2]), dt);
+  if (p > 0.0 && counterUniform(settings_.seed, streamOf(stream_, receptor), step,
+                                static_cast<std::uint64_t>(DrawPurpose::Formation)) < p) {
+    state.occupancy = 1.0;
+    state.anchor = footOnWall(x);
+    ++events.formed;
+  }
+}
+
+void BondPopulation::meanFieldStep(BondState& state, const mesh::Vec3& x, double dt) const
+{
+  const double p = state.occupancy;
+  // Without bonds yet, the bonds this step forms have the length of a bond to the foot.
+  const double kOff = offRate(settings_, p > 0.0 ? (x - state.anchor).norm() : std::abs(x[1]));
+  const double kOn = onRate(settings_, x[1], x[0], x[2]);
+  if (kOn <= 0.0 && p <= 0.0) {
+    return;
+  }
+  const double k = kOn + kOff;
+  if (k <= 0.0) {
+    return; // no rate: nothing changes
+  }
+  const double equilibrium = kOn / k;
+  const double next = equilibrium + (p - equilibrium) * std::exp(-k * dt);
+  // Occupancy kept by the old bonds, and what formed anew: the anchor's weights.
+  const double survived = std::min(p * std::exp(-kOff * dt), next);
+  const double formed = next - survived;
+  if (next <= 0.0) {
+    state = BondState{};
+    return;
+  }
+  state.anchor = (survived * state.anchor + formed * footOnWall(x)) / next;
+  state.occupancy = std::clamp(next, 0.0, 1.0);
+}
+
+BondEvents BondPopulation::update(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors, const double* positions,
+                                  double dt, std::uint64_t step, int first, int last)
+{
+  core::require<core::InputError>(receptors.size() == size(), "BondPopulation: ", size(), " states for ",
+                                  receptors.size(), " receptors.");
+  core::require<core::InputError>(first >= 0 && first <= last && last <= size(), "BondPopulation: receptors ", first,
+                                  "..", last, " are not within 0..", size(), ".");
+  BondEvents events;
+  for (int r = first; r < last; ++r) {
+    const mesh::Vec3 x = receptors.position(mesh, positions, r);
+    BondState& state = states_[static_cast<std::size_t>(r)];
+    if (settings_.kinetics == BondKinetics::MeanField) {
+      meanFieldStep(state, x, dt);
+    } else {
+      stochasticStep(state, x, dt, static_cast<std::uint64_t>(r), step, events);
+    }
+  }
+  return events;
+}
+
+double BondPopulation::bondCount() const
+{
+  double count = 0.0;
+  for (const BondState& s : states_) {
+    count += s.occupancy;
+  }
+  return count;
+}
+
+mesh::Vec3 BondPopulation::force(int r, const mesh::Vec3& x) const
+{
+  const BondState& s = state(r);
+  if (s.occupancy <= 0.0) {
+    return mesh::Vec3::Zero();
+  }
+  const mesh::Vec3 d = x - s.anchor;
+  const double length = d.norm();
+  // A bond of zero length has no direction; it can only be compressed, so it pushes off the wall.
+  const mesh::Vec3 direction = length > 0.0 ? mesh::Vec3(d / length) : mesh::Vec3::UnitY();
+  return -s.occupancy * settings_.springConstant * (length - settings_.equilibriumLength) * direction;
+}
+
+mesh::Vec3 BondPopulation::addNodalForces(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors,
+                                          const double* positions, double* nodalForces, int first, int last) const
+{
+  mesh::Vec3 total = mesh::Vec3::Zero();
+  for (int r = first; r < last; ++r) {
+    if (state(r).occupancy <= 0.0) {
+      continue;
+    }
+    const mesh::Vec3 f = force(r, receptors.position(mesh, positions, r));
+    double phi[6];
+    receptors.shapeFunctions(r, phi);
+    spreadPointForce(mesh.element(receptors[r].element), phi, f, nodalForces);
+    total += f;
+  }
+  return total;
+}
+
+std::vector<BondRecord> BondPopulation::records(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors,
+                                                const double* positions) const
+{
+  std::vector<BondRecord> out;
+  for (int r = 0; r < size(); ++r) {
+    const BondState& s = state(r);
+    if (s.occupancy > 0.0) {
+      const mesh::Vec3 x = receptors.position(mesh, positions, r);
+      out.push_back({r, s.occupancy, x, s.anchor, force(r, x)});
+    }
+  }
+  return out;
+}
+
+} // namespace capsula::adhesion

@@ -1,0 +1,187 @@
+// Bond kinetics against the master equation: lifetimes under a fixed force (Bell and Dembo),
+// the relaxation of the bound fraction under constant rates, and the mean field's exactness.
+#include <capsula/adhesion/BondKinetics.hpp>
+#include <capsula/adhesion/BondPopulation.hpp>
+#include <capsula/adhesion/Receptors.hpp>
+#include <capsula/mesh/Icosphere.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace adhesion = capsula::adhesion;
+namespace mesh = capsula::mesh;
+using mesh::Vec3;
+
+namespace {
+
+// >= 10^4 receptors on a unit sphere centred 1.5 above the wall (density 1000 per a^2).
+struct KineticsEnsemble {
+  mesh::SurfaceMesh sphere = mesh::makeIcosphere(2);
+  std::vector<double> x;
+  adhesion::ReceptorSet receptors;
+  KineticsEnsemble() : receptors(sphere, sphere.positions(), 1000.0, 2024, 0)
+  {
+    x = sphere.positions();
+    for (std::size_t i = 1; i < x.size(); i += 3) {
+      x[i] += 1.5;
+    }
+  }
+};
+
+struct LifetimeStatistics {
+  double mean = 0.0;
+  double standardError = 0.0;
+  int samples = 0;
+};
+
+// Binds every receptor with a bond of length `length` (anchor straight below, the membrane
+// held still, so the force stays fixed) and steps until all have broken. A bond that breaks
+// in step n lived between (n - 1) dt and n dt: its lifetime is taken as (n - 1/2) dt, whose
+// mean is 1/k (1 + (k dt)^2 / 12 + ...) for the geometric law of the steps.
+LifetimeStatistics measureLifetimes(const adhesion::AdhesionSettings& s, double length, double dt)
+{
+  KineticsEnsemble e;
+  adhesion::BondPopulation bonds(s, 0, e.receptors.size());
+  for (int r = 0; r < e.receptors.size(); ++r) {
+    bonds.setState(r, {1.0, e.receptors.position(e.sphere, e.x.data(), r) - Vec3(0.0, length, 0.0)});
+  }
+  std::vector<double> lifetimes;
+  std::vector<bool> alive(static_cast<std::size_t>(e.receptors.size()), true);
+  for (std::uint64_t step = 1; lifetimes.size() < alive.size() && step < 1000000; ++step) {
+    bonds.update(e.sphere, e.receptors, e.x.data(), dt, step);
+    for (int r = 0; r < e.receptors.size(); ++r) {
+      if (alive[static_cast<std::size_t>(r)] && bonds.state(r).occupancy == 0.0) {
+        alive[static_cast<std::size_t>(r)] = false;
+        lifetimes.push_back((static_cast<double>(step) - 0.5) * dt);
+      }
+    }
+  }
+  LifetimeStatistics out;
+  out.samples = static_cast<int>(lifetimes.size());
+  double sum = 0.0, sumSquares = 0.0;
+  for (const double t : lifetimes) {
+    sum += t;
+    sumSquares += t * t;
+  }
+  out.mean = sum / out.samples;
+  out.standardError = std::sqrt((sumSquares / out.samples - out.mean * out.mean) / out.samples);
+  return out;
+}
+
+// Receptors far above the reaction distance (no rebinding).
+adhesion::AdhesionSettings lifetimeSettings(adhesion::BondModel model)
+{
+  adhesion::AdhesionSettings s;
+  s.model = model;
+  s.springConstant = 10.0;
+  s.equilibriumLength = 0.02;
+  s.thermalEnergy = 1e-4;
+  s.reactiveCompliance = 1e-3;
+  s.offRate = 1.0;
+  s.reactionDistance = 0.01;
+  return s;
+}
+
+} // namespace
+
+TEST(BondKinetics, BellLifetimeIsTheInverseOffRate)
+{
+  const auto s = lifetimeSettings(adhesion::BondModel::Slip);
+  const double length = 0.03; // |F| = 10 x 0.01 = 0.1: gamma |F| / kT = 1e-3 x 0.1 / 1e-4 = 1
+  const double k = 1.0 * std::exp(1.0);
+  EXPECT_NEAR(adhesion::offRate(s, length), k, 1e-14 * k);
+  const auto t = measureLifetimes(s, length, 0.005); // k dt = 0.014: bias (k dt)^2/12 = 1.6e-5
+  ASSERT_GE(t.samples, 10000);
+  // 4 standard errors (~4% at N ~ 12,600): a factor e of a missing force term is 60 SE off.
+  EXPECT_NEAR(t.mean, 1.0 / k, 4.0 * t.standardError) << "SE " << t.standardError;
+  std::printf("Bell: N = %d, mean lifetime %.5f, 1/k_off %.5f, SE %.5f\n", t.samples, t.mean, 1.0 / k, t.standardError);
+}
+
+TEST(BondKinetics, DemboLifetimeIsTheInverseOffRateForSlipAndCatch)
+{
+  auto s = lifetimeSettings(adhesion::BondModel::CatchSlip);
+  const double length = 0.03; // y = 0.01: y^2 / (2 kT) = 0.5 per unit of sigma - sigma_ts
+  for (const double transition : {5.0, 15.0}) {
+    s.transitionSpringConstant = transition;
+    const double k = std::exp((10.0 - transition) * 0.5); // slip: e^2.5; catch: e^-2.5
+    EXPECT_NEAR(adhesion::offRate(s, length), k, 1e-13 * k);
+    const double dt = 0.01 / k; // k dt = 0.01
+    const auto t = measureLifetimes(s, length, dt);
+    ASSERT_GE(t.samples, 10000);
+    EXPECT_NEAR(t.mean, 1.0 / k, 4.0 * t.standardError) << "sigma_ts " << transition; // as for Bell
+    std::printf("Dembo sigma_ts = %g: N = %d, mean lifetime %.5f, 1/k_off %.5f, SE %.5f\n", transition, t.samples,
+                t.mean, 1.0 / k, t.standardError);
+  }
+}
+
+TEST(BondKinetics, BoundFractionRelaxesAtTheSumOfTheRates)
+{
+  // Rates independent of the stretch (sigma ~ 0) and every receptor within reach: a
+  // two-state Markov chain, p(t) = p_eq (1 - exp(-(k_on + k_off) t)).
+  adhesion::AdhesionSettings s;
+  s.springConstant = 1e-12;
+  s.reactiveCompliance = 0.0;
+  s.thermalEnergy = 1.0;
+  s.reactionDistance = 3.0;
+  s.onRate = 0.02;
+  s.ligandDensity = 100.0; // k_on = 2
+  s.offRate = 1.0;
+  const double kOn = 2.0, kOff = 1.0, rate = kOn + kOff, equilibrium = kOn / rate;
+  const double dt = 1.0 / 1500.0;
+  for (const auto kinetics : {adhesion::BondKinetics::Stochastic, adhesion::BondKinetics::MeanField}) {
+    s.kinetics = kinetics;
+    KineticsEnsemble e;
+    adhesion::BondPopulation bonds(s, 0, e.receptors.size());
+    const int n = e.receptors.size();
+    ASSERT_GE(n, 10000);
+    for (std::uint64_t step = 1; step <= 1500; ++step) {
+      bonds.update(e.sphere, e.receptors, e.x.data(), dt, step);
+      if (step % 250 != 0) {
+        continue;
+      }
+      const double t = static_cast<double>(step) * dt;
+      const double expected = equilibrium * (1.0 - std::exp(-rate * t));
+      const double fraction = bonds.bondCount() / n;
+      if (kinetics == adhesion::BondKinetics::MeanField) {
+        // Exact solution over each step; the rates differ from constants by sigma y^2/(2kT)
+        // < 1e-11: the only error is round-off accumulated over 1500 steps.
+        EXPECT_NEAR(fraction, expected, 1e-10) << "t = " << t;
+        EXPECT_NEAR(bonds.state(n / 2).occupancy, expected, 1e-10);
+        continue;
+      }
+      // Binomial standard error; the step's bias (O(k dt) ~ 2e-3 relative in the rate, 1e-4
+      // in p_eq) is far below it.
+      const double se = std::sqrt(expected * (1.0 - expected) / n);
+      EXPECT_NEAR(fraction, expected, 4.0 * se) << "t = " << t;
+      if (step == 500) {
+        // The rate itself, from p(1/3): -ln(1 - p/p_eq) / t, its SE propagated from p's.
+        const double measured = -std::log(1.0 - fraction / equilibrium) / t;
+        const double rateSe = se / ((equilibrium - expected) * t);
+        EXPECT_NEAR(measured, rate, 4.0 * rateSe);
+        std::printf("bound fraction at t = 1/3: %.4f (expected %.4f, SE %.4f); rate %.3f (expected 3, SE %.3f)\n",
+                    fraction, expected, se, measured, rateSe);
+      }
+    }
+  }
+}
+
+TEST(BondKinetics, MeanFieldSurvivalIsTheExponentialOfTheOffRate)
+{
+  for (const auto model : {adhesion::BondModel::Slip, adhesion::BondModel::CatchSlip}) {
+    auto s = lifetimeSettings(model);
+    s.kinetics = adhesion::BondKinetics::MeanField;
+    s.transitionSpringConstant = 5.0;
+    KineticsEnsemble e;
+    adhesion::BondPopulation bonds(s, 0, e.receptors.size());
+    const Vec3 x = e.receptors.position(e.sphere, e.x.data(), 0);
+    bonds.setState(0, {1.0, x - Vec3(0.0, 0.03, 0.0)});
+    const double k = adhesion::offRate(s, 0.03), dt = 0.01;
+    for (std::uint64_t step = 1; step <= 50; ++step) {
+      bonds.update(e.sphere, e.receptors, e.x.data(), dt, step, 0, 1);
+    }
+    // exp(-k dt) applied 50 times: exact up to 50 roundings.
+    EXPECT_NEAR(bonds.state(0).occupancy, std::exp(-k * 50 * dt), 1e-13);
+  }
+}
