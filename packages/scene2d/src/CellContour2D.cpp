@@ -44,7 +44,9 @@ void declareCellParameters2D(Teuchos::ParameterList& cell)
                     "Bending stiffness k_b / (E L^2) of the membrane: the moment k_b (kappa - kappa_ref) with the "
                     "energy (k_b/2) int (kappa - kappa_ref)^2 dl adds its load to the tension's "
                     "(elasticity/BendingLoad2D.hpp). It resists the grid-scale wrinkles of a compressed "
-                    "membrane; 0 (the thesis's) builds no bending term.",
+                    "membrane; 0 (the thesis's) builds no bending term. Use it with Tether spline ends = "
+                    "NotAKnot: Natural ends force kappa = 0 at the tether, which the bending load turns into a "
+                    "spurious tether force (docs/tether2d.md).",
                     core::atLeast(0.0));
   core::declareChoice(cell, "Bending reference", "Flat", {"Flat", "Initial shape"},
                       "The curvature kappa_ref at which the membrane carries no bending moment: Flat (0), or "
