@@ -63,6 +63,9 @@ capsula_bad_deck(end_time_negative ${_cell3d_demo}
 capsula_add_reliability_test(reliability_deck_end_time_negative EXIT_CODE 2
   MATCHES "Time integration/End time must be > 0 \\(runs start at t = 0\\), got -1"
   COMMAND $<TARGET_FILE:cell3d> ${_bad}/end_time_negative.xml --output ${_out}/never)
+capsula_add_reliability_test(reliability_deck_tether2d_negative_bending_modulus EXIT_CODE 2
+  MATCHES "'Cell/Bending modulus' = -0\\.01 is invalid: it must be a finite real number >= 0"
+  COMMAND $<TARGET_FILE:tether2d> ${_decks}/tether2d/demo.xml --set "Cell/Bending modulus=-0.01" --output ${_out}/never)
 capsula_add_reliability_test(reliability_deck_tether2d_end_time_zero EXIT_CODE 2
   MATCHES "Time integration/End time must be > 0 \\(runs start at t = 0\\), got 0"
   COMMAND $<TARGET_FILE:tether2d> ${_decks}/tether2d/demo.xml --set "Time integration/End time=0" --output ${_out}/never)

@@ -20,6 +20,12 @@ ElasticMembrane2D::ElasticMembrane2D(const Contour& reference, HookeanLaw2D law)
     : law_(law), closure_(reference.closure()), referenceArcLengths_(reference.knotArcLengths())
 {}
 
+ElasticMembrane2D::ElasticMembrane2D(const Contour& reference, HookeanLaw2D law, BendingLaw2D bending)
+    : ElasticMembrane2D(reference, law)
+{
+  bending_.emplace(reference, bending);
+}
+
 MembraneState2D ElasticMembrane2D::evaluate(const Contour& current) const
 {
   const int n = numberOfNodes();
@@ -70,6 +76,9 @@ MembraneState2D ElasticMembrane2D::evaluate(const Contour& current) const
   }();
 
   MembraneState2D state(current, std::move(tensionSpline));
+  if (bending_) {
+    state.bending_.emplace(bending_->evaluate(current));
+  }
   state.stretch_.resize(n);
   state.tension_.resize(n);
   state.tensionSlope_.resize(n);
@@ -80,6 +89,9 @@ MembraneState2D ElasticMembrane2D::evaluate(const Contour& current) const
     state.tension_(i) = piece.d;
     state.tensionSlope_(i) = piece.c;
     state.load_.col(i) = membraneLoad2D(piece.d, piece.c, current.nodePoint(i));
+  }
+  if (bending_) {
+    state.load_ += state.bending_->load();
   }
   state.energy_ = energy;
   return state;

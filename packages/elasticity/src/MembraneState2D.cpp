@@ -41,7 +41,8 @@ Eigen::Vector2d MembraneState2D::loadAt(const contour::ContourPoint& point, int 
 {
   const contour::CubicPiece& piece = tensionSpline_.piece(segment);
   const double offset = arcOffset(contour_, segment, t);
-  return membraneLoad2D(piece.value(offset), piece.derivative(offset), point);
+  const Eigen::Vector2d tension = membraneLoad2D(piece.value(offset), piece.derivative(offset), point);
+  return bending_ ? Eigen::Vector2d(tension + bending_->loadAt(point, segment, offset)) : tension;
 }
 
 Eigen::Vector2d MembraneState2D::netForce(int points) const

@@ -9,6 +9,7 @@
 #include <capsula/elasticity/Prestress2D.hpp>
 
 #include <optional>
+#include <sstream>
 
 namespace capsula::scene2d {
 
@@ -23,6 +24,17 @@ contour::ContourOptions optionsFor(contour::Closure closure, contour::TetherEnds
 }
 
 } // namespace
+
+std::unique_ptr<elasticity::ElasticMembrane2D> CapsuleModel2D::makeMembrane(const contour::Contour& reference) const
+{
+  // The composition is fixed here: a membrane with bending only when the deck asks for it.
+  const elasticity::HookeanLaw2D tension(1.0);
+  if (cell_.bendingModulus > 0.0) {
+    return std::make_unique<elasticity::ElasticMembrane2D>(
+        reference, tension, elasticity::BendingLaw2D{cell_.bendingModulus, cell_.bendingReference});
+  }
+  return std::make_unique<elasticity::ElasticMembrane2D>(reference, tension);
+}
 
 CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const CellSettings2D& cell,
                                const FlowSettings2D& flow, const operators::ContourDiscretisation2D& discretisation,
@@ -39,8 +51,7 @@ CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& com
   const contour::Contour initial(referenceNodes_);
   referenceLength_ = initial.length();
   referenceArea_ = contour::enclosedArea(initial);
-  membrane_ =
-      std::make_unique<elasticity::ElasticMembrane2D>(contour::Contour(freeReference_), elasticity::HookeanLaw2D(1.0));
+  membrane_ = makeMembrane(contour::Contour(freeReference_));
   velocity_ = operators::makeInterfaceVelocity2D(flow.wall, comm, numberOfNodes(), discretisation, solver);
   if (solver.warmStart && flow.conditions.viscosityRatio != 1.0) {
     warmStart_.emplace();
@@ -61,6 +72,12 @@ std::vector<std::string> CapsuleModel2D::terms() const
   std::vector<std::string> terms{"single layer, " + kernelName() + " Green's function, log-singular rule"};
   if (flow_.conditions.viscosityRatio != 1.0) {
     terms.emplace_back("double layer (subtracted) with Belos GMRES, lambda != 1");
+  }
+  if (cell_.bendingModulus > 0.0) {
+    std::ostringstream line;
+    line << "membrane bending, k_b/(E L^2) = " << cell_.bendingModulus << ", reference curvature "
+         << (cell_.bendingReference == elasticity::BendingReference2D::Flat ? "0 (flat)" : "of the initial shape");
+    terms.push_back(line.str());
   }
   if (discretisation_.nearSingularDistance > 0.0) {
     terms.emplace_back("near-singular subdivision");
@@ -111,7 +128,7 @@ void CapsuleModel2D::tether(int offset)
 {
   const contour::Contour reference(relabelNodes(freeReference_, offset),
                                    optionsFor(contour::Closure::Tethered, cell_.tetherEnds));
-  membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
+  membrane_ = makeMembrane(reference);
   tetherOffset_ = offset;
   if (warmStart_) { // relabelled nodes and a fixed row: the old solutions do not apply
     warmStart_.emplace(warmStart_->depth());
@@ -123,8 +140,7 @@ void CapsuleModel2D::regridFree(const Eigen::Matrix2Xd& referenceNodes)
   core::require<core::InputError>(!tethered() && referenceNodes.cols() == numberOfNodes(),
                                   "CapsuleModel2D::regridFree: ", referenceNodes.cols(), " reference nodes for a ",
                                   tethered() ? "tethered" : "free", " cell of ", numberOfNodes());
-  membrane_ =
-      std::make_unique<elasticity::ElasticMembrane2D>(contour::Contour(referenceNodes), elasticity::HookeanLaw2D(1.0));
+  membrane_ = makeMembrane(contour::Contour(referenceNodes));
   freeReference_ = referenceNodes;
   freeRegridded_ = true;
   if (warmStart_) { // new markers: the old solutions do not apply
@@ -138,7 +154,7 @@ void CapsuleModel2D::tether(const Eigen::Matrix2Xd& referenceNodes)
                                   "CapsuleModel2D::tether: ", referenceNodes.cols(), " reference nodes for a cell of ",
                                   numberOfNodes());
   const contour::Contour reference(referenceNodes, optionsFor(contour::Closure::Tethered, cell_.tetherEnds));
-  membrane_ = std::make_unique<elasticity::ElasticMembrane2D>(reference, elasticity::HookeanLaw2D(1.0));
+  membrane_ = makeMembrane(reference);
   tetherOffset_ = 0;
   regriddedReference_ = referenceNodes;
   if (warmStart_) { // new markers and a fixed row: the old solutions do not apply

@@ -40,6 +40,20 @@ void declareCellParameters2D(Teuchos::ParameterList& cell)
                       "tether force, first-order accurate; NotAKnot makes them third-order, but without "
                       "Cell/Prestress the tethered run is unstable on fine contours "
                       "(docs/tether2d-results.md).");
+  core::declareReal(cell, "Bending modulus", defaults.bendingModulus,
+                    "Bending stiffness k_b / (E L^2) of the membrane: the moment k_b (kappa - kappa_ref) with the "
+                    "energy (k_b/2) int (kappa - kappa_ref)^2 dl adds its load to the tension's "
+                    "(elasticity/BendingLoad2D.hpp). It resists the grid-scale wrinkles of a compressed "
+                    "membrane; 0 (the thesis's) builds no bending term. Use it with Tether spline ends = "
+                    "NotAKnot: Natural ends force kappa = 0 at the tether, which the bending load turns into a "
+                    "spurious tether force (docs/tether2d.md).",
+                    core::atLeast(0.0));
+  core::declareChoice(cell, "Bending reference", "Flat", {"Flat", "Initial shape"},
+                      "The curvature kappa_ref at which the membrane carries no bending moment: Flat (0), or "
+                      "Initial shape: the curvature of the membrane's unstressed reference contour at each "
+                      "material point (the initial contour, shrunk by 1 + Cell/Prestress), so that the "
+                      "initial cell is free of bending moment when unstressed. Only read when Bending "
+                      "modulus > 0.");
 }
 
 CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell)
@@ -51,6 +65,10 @@ CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell)
   s.prestress = cell.get<double>("Prestress");
   s.tetherEnds = cell.get<std::string>("Tether spline ends") == "Natural" ? contour::TetherEnds::Natural
                                                                           : contour::TetherEnds::NotAKnot;
+  s.bendingModulus = cell.get<double>("Bending modulus");
+  s.bendingReference = cell.get<std::string>("Bending reference") == "Flat"
+                           ? elasticity::BendingReference2D::Flat
+                           : elasticity::BendingReference2D::InitialShape;
   return s;
 }
 

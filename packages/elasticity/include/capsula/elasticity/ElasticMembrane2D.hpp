@@ -13,11 +13,16 @@
 // d^2 gamma/dl^2 = 0 at the tether, which nothing in the mechanics imposes, so they use
 // not-a-knot ends (exact for cubics, no end data needed); MaterialArcLength2D.hpp builds
 // l(l0).
+//
+// A membrane built with a bending law adds the bending load (MembraneBending2D.hpp) to the
+// tension's in every evaluation; one built without has no bending term at all.
 #include "capsula/elasticity/HookeanLaw2D.hpp"
+#include "capsula/elasticity/MembraneBending2D.hpp"
 #include "capsula/elasticity/MembraneState2D.hpp"
 
 #include <capsula/contour/Contour.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace capsula::elasticity {
@@ -27,8 +32,12 @@ public:
   /// `reference` is the unstressed contour (its marker points are the same material
   /// points as those of every contour later passed to evaluate()).
   ElasticMembrane2D(const contour::Contour& reference, HookeanLaw2D law);
+  /// With bending stiffness as well (kappa_ref from `reference` with 'Initial shape').
+  ElasticMembrane2D(const contour::Contour& reference, HookeanLaw2D law, BendingLaw2D bending);
 
   const HookeanLaw2D& law() const { return law_; }
+  /// The bending part, or null without one.
+  const MembraneBending2D* bending() const { return bending_ ? &*bending_ : nullptr; }
   /// Reference arc length l0 at the knots, 0 .. L0 (N + 1 values).
   const std::vector<double>& referenceArcLengths() const { return referenceArcLengths_; }
   int numberOfNodes() const { return static_cast<int>(referenceArcLengths_.size()) - 1; }
@@ -41,6 +50,7 @@ private:
   HookeanLaw2D law_;
   contour::Closure closure_;
   std::vector<double> referenceArcLengths_;
+  std::optional<MembraneBending2D> bending_;
 };
 
 } // namespace capsula::elasticity

@@ -1,7 +1,8 @@
 #pragma once
 // The 2D capsule of Chapter 4 as an ODE for its marker points, dx_i/dt = u_i (thesis eq
 // A.48): contour (App. A.3) -> Hookean membrane load with E = 1 (App. A.5; loads in units
-// of E/L) -> node velocities from the boundary-integral equation (eq A.35). Free cells use
+// of E/L), plus the bending load with 'Cell/Bending modulus' > 0 (elasticity/
+// MembraneBending2D.hpp) -> node velocities from the boundary-integral equation (eq A.35). Free cells use
 // periodic splines; after tethering, tethered splines with node 0 at the tether, whose
 // velocity is held at zero. With lambda != 1 and 'Solver/Warm start', each GMRES solve starts
 // from the last solutions (operators/WarmStartHistory.hpp); the history is part of the run's
@@ -108,6 +109,10 @@ public:
   void load(const io::Checkpoint& checkpoint, const std::string& source) override;
 
 private:
+  /// The membrane on `reference`: Hookean tension (E = 1), with bending when Cell/Bending
+  /// modulus > 0.
+  std::unique_ptr<elasticity::ElasticMembrane2D> makeMembrane(const contour::Contour& reference) const;
+
   CellSettings2D cell_;
   FlowSettings2D flow_;
   operators::ContourDiscretisation2D discretisation_;

@@ -3,6 +3,7 @@
 // ratio a/b (a along the flow, x; b across it, y) and area pi L^2 (L = sqrt(ab) = 1), its
 // lowest point a given height above the wall y = 0, node 0 at that lowest point.
 #include <capsula/contour/Contour.hpp>
+#include <capsula/elasticity/MembraneBending2D.hpp>
 
 #include <Eigen/Core>
 #include <Teuchos_ParameterList.hpp>
@@ -18,10 +19,14 @@ struct CellSettings2D {
   double prestress = 0.0;
   /// End conditions of the tethered splines at the tether (thesis A.31-A.32: natural).
   contour::TetherEnds tetherEnds = contour::TetherEnds::Natural;
+  /// Bending stiffness k_b / (E L^2) and its reference curvature (elasticity/
+  /// MembraneBending2D.hpp); 0: the membrane has no bending term (the thesis's).
+  double bendingModulus = 0.0;
+  elasticity::BendingReference2D bendingReference = elasticity::BendingReference2D::Flat;
 };
 
-/// Declares Aspect ratio, Number of points, Lowest point height, Prestress and Tether spline
-/// ends in `cell`.
+/// Declares Aspect ratio, Number of points, Lowest point height, Prestress, Tether spline
+/// ends, Bending modulus and Bending reference in `cell`.
 void declareCellParameters2D(Teuchos::ParameterList& cell);
 
 /// Reads a validated "Cell" sublist.
