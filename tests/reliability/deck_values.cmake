@@ -66,6 +66,10 @@ capsula_add_reliability_test(reliability_deck_end_time_negative EXIT_CODE 2
 capsula_add_reliability_test(reliability_deck_tether2d_negative_bending_modulus EXIT_CODE 2
   MATCHES "'Cell/Bending modulus' = -0\\.01 is invalid: it must be a finite real number >= 0"
   COMMAND $<TARGET_FILE:tether2d> ${_decks}/tether2d/demo.xml --set "Cell/Bending modulus=-0.01" --output ${_out}/never)
+# Bending with the natural tether ends: kappa = 0 forced at the tether gives a spurious tether force.
+capsula_add_reliability_test(reliability_deck_tether2d_bending_with_natural_ends EXIT_CODE 2
+  MATCHES "'Cell/Bending modulus' = 0\\.01 needs 'Cell/Tether spline ends' = NotAKnot"
+  COMMAND $<TARGET_FILE:tether2d> ${_decks}/tether2d/demo.xml --set "Cell/Bending modulus=0.01" --output ${_out}/never)
 capsula_add_reliability_test(reliability_deck_tether2d_end_time_zero EXIT_CODE 2
   MATCHES "Time integration/End time must be > 0 \\(runs start at t = 0\\), got 0"
   COMMAND $<TARGET_FILE:tether2d> ${_decks}/tether2d/demo.xml --set "Time integration/End time=0" --output ${_out}/never)

@@ -46,7 +46,7 @@ void declareCellParameters2D(Teuchos::ParameterList& cell)
                     "(elasticity/BendingLoad2D.hpp). It resists the grid-scale wrinkles of a compressed "
                     "membrane; 0 (the thesis's) builds no bending term. Use it with Tether spline ends = "
                     "NotAKnot: Natural ends force kappa = 0 at the tether, which the bending load turns into a "
-                    "spurious tether force (docs/tether2d.md).",
+                    "spurious tether force (refused).",
                     core::atLeast(0.0));
   core::declareChoice(cell, "Bending reference", "Flat", {"Flat", "Initial shape"},
                       "The curvature kappa_ref at which the membrane carries no bending moment: Flat (0), or "
@@ -66,6 +66,11 @@ CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell)
   s.tetherEnds = cell.get<std::string>("Tether spline ends") == "Natural" ? contour::TetherEnds::Natural
                                                                           : contour::TetherEnds::NotAKnot;
   s.bendingModulus = cell.get<double>("Bending modulus");
+  core::require<core::InputError>(s.bendingModulus == 0.0 || s.tetherEnds == contour::TetherEnds::NotAKnot,
+                                  "'Cell/Bending modulus' = ", s.bendingModulus,
+                                  " needs 'Cell/Tether spline ends' = NotAKnot: Natural ends force kappa = 0 at "
+                                  "the tether, which the bending load turns into a spurious tether force that grows "
+                                  "with the number of points (docs/tether2d.md)");
   s.bendingReference = cell.get<std::string>("Bending reference") == "Flat"
                            ? elasticity::BendingReference2D::Flat
                            : elasticity::BendingReference2D::InitialShape;
