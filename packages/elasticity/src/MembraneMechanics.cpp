@@ -122,6 +122,15 @@ MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh, std::vector<
 
 void MembraneMechanics::evaluate(const double* positions, MembraneEvaluation what)
 {
+  evaluate(positions, what, nullptr);
+}
+
+void MembraneMechanics::evaluate(const double* positions, MembraneEvaluation what, const double* externalForces)
+{
+  core::require<core::InputError>(externalForces == nullptr ||
+                                      discretisation_.forceMethod == MembraneForceMethod::VirtualWork,
+                                  "forces from outside the membrane (contact, bonds) need the virtual-work load "
+                                  "('Membrane forces' = 'Virtual work')");
   // The virtual-work load needs neither the nodal average of A nor the nodal tensions
   // (steps 2-3 below, a third of this function's time at level 3); the fold check of
   // step 2 is kept.
@@ -200,7 +209,7 @@ void MembraneMechanics::evaluate(const double* positions, MembraneEvaluation wha
 
   // 4. The load.
   if (discretisation_.forceMethod == MembraneForceMethod::VirtualWork) {
-    virtualWorkLoads(positions);
+    virtualWorkLoads(positions, externalForces);
   } else {
     contourIntegralLoads(positions);
   }
@@ -236,7 +245,7 @@ void MembraneMechanics::contourIntegralLoads(const double* positions)
   }
 }
 
-void MembraneMechanics::virtualWorkLoads(const double* positions)
+void MembraneMechanics::virtualWorkLoads(const double* positions, const double* externalForces)
 {
   const mesh::SurfaceMesh& mesh = *mesh_;
   const quadrature::TriangleRule& rule = *areaRule_;
@@ -259,6 +268,11 @@ void MembraneMechanics::virtualWorkLoads(const double* positions)
     }
     for (int k = 0; k < 6; ++k) {
       nodalForce_[static_cast<std::size_t>(mesh.element(e)[k])] += gradient[k];
+    }
+  }
+  if (externalForces != nullptr) { // Delta f = -div_s T - f_ext
+    for (std::size_t k = 0; k < nodalForce_.size(); ++k) {
+      nodalForce_[k] -= mesh::nodeAt(externalForces, static_cast<int>(k));
     }
   }
   // The load density: int phi_k Delta f dS = F_k, i.e. M f = F.

@@ -5,6 +5,7 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
 #include <capsula/elasticity/MembraneLawFactory.hpp>
+#include <capsula/adhesion/ContactRepulsion.hpp>
 #include <capsula/elasticity/Prestress.hpp>
 #include <capsula/mesh/Adaption.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
@@ -138,6 +139,16 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
       throw core::InputError(core::message("'", cell.path, "': ", e.what()));
     }
     terms_.push_back(describeMembrane(cell, surface));
+  }
+
+  if (description_.contact.enabled) {
+    for (const mesh::SurfaceMesh& cell : cells_) {
+      contactForces_.emplace_back(3 * static_cast<std::size_t>(cell.numNodes()), 0.0);
+    }
+    std::ostringstream line;
+    line << "contact repulsion (" << (description_.wall ? "wall and " : "") << "cells): range "
+         << description_.contact.range << " a, strength " << description_.contact.strength << " G/a";
+    terms_.push_back(line.str());
   }
 
   // The boundary-integral operator for the kernel the geometry needs.
@@ -329,13 +340,38 @@ void Scene::setReferencePositions(int c, std::vector<double> reference)
   membrane = std::make_unique<elasticity::MembraneMechanics>(membrane->withReference(std::move(reference)));
 }
 
+void Scene::computeContactForces()
+{
+  // The repulsion of the wall and of the other cells on each membrane (adhesion
+  // ContactRepulsion.hpp), as physical nodal forces on it.
+  const adhesion::ContactSettings& contact = description_.contact;
+  std::vector<std::vector<double>> areas(cells_.size());
+  for (std::size_t c = 0; c < cells_.size(); ++c) {
+    std::fill(contactForces_[c].begin(), contactForces_[c].end(), 0.0);
+    areas[c] = adhesion::nodalAreaShares(cells_[c], cells_[c].positionData());
+    if (description_.wall) {
+      adhesion::addWallContactForces(contact, cells_[c], cells_[c].positionData(), areas[c], contactForces_[c].data());
+    }
+  }
+  for (std::size_t a = 0; a < cells_.size(); ++a) {
+    for (std::size_t b = a + 1; b < cells_.size(); ++b) {
+      adhesion::addCellContactForces(contact, cells_[a], cells_[a].positionData(), areas[a], contactForces_[a].data(),
+                                     cells_[b], cells_[b].positionData(), areas[b], contactForces_[b].data());
+    }
+  }
+}
+
 void Scene::computeLoads(double t, elasticity::MembraneEvaluation what)
 {
   Teuchos::TimeMonitor guard(*membraneTimer_);
+  if (!contactForces_.empty()) {
+    computeContactForces();
+  }
   for (int c = 0; c < numCells(); ++c) {
     auto& membrane = *membranes_[static_cast<std::size_t>(c)];
     try {
-      membrane.evaluate(cells_[static_cast<std::size_t>(c)].positionData(), what);
+      membrane.evaluate(cells_[static_cast<std::size_t>(c)].positionData(), what,
+                        contactForces_.empty() ? nullptr : contactForces_[static_cast<std::size_t>(c)].data());
     } catch (const core::NumericalError& e) {
       throw core::NumericalError(core::message("At t = ", t, ", the membrane of '",
                                                description_.cells[static_cast<std::size_t>(c)].path,

@@ -101,6 +101,15 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
 
   scene.meshRegularisation = mesh::readRedistributionParameters(deck.sublist("Mesh regularisation"));
   scene.meshAdaption = mesh::readAdaptionParameters(deck.sublist("Mesh adaption"));
+  if (deck.isSublist("Contact")) {
+    scene.contact = adhesion::readContactParameters(deck.sublist("Contact"), "Contact");
+  }
+  for (const auto& cell : scene.cells) {
+    core::require<core::InputError>(!scene.contact.enabled || cell.membraneForces == "Virtual work",
+                                    "'Contact/Enabled' is true but '", cell.path,
+                                    "/Membrane forces' is 'Contour integral': the contact forces enter "
+                                    "as nodal forces, which need 'Virtual work'.");
+  }
   return scene;
 }
 

@@ -1,5 +1,6 @@
 #include "capsula/scene/SceneParameters.hpp"
 
+#include <capsula/adhesion/ContactParameters.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
@@ -127,6 +128,11 @@ void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::Parame
                     "keeps it as far as 'Cells/Minimum gap' keeps two cells. 0 refuses only a cell "
                     "on or through the wall.",
                     core::atLeast(0.0));
+
+  adhesion::declareContactParameters(core::declareSublist(
+      valid, "Contact",
+      "Short-range repulsion that keeps membranes off the wall and off each other (packages/adhesion "
+      "ContactRepulsion.hpp); off by default."));
 
   auto& cells = core::declareSublist(valid, "Cells", "One sublist per cell: Cell 0, Cell 1, ...");
   declareMinimumGap(cells);

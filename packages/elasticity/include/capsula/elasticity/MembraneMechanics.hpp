@@ -113,6 +113,11 @@ public:
   /// LoadOnly what the load needs. Throws NumericalError if the membrane is folded or
   /// crushed somewhere.
   void evaluate(const double* positions, MembraneEvaluation what = MembraneEvaluation::Everything);
+  /// The same with forces acting on the membrane from outside it (contact, bonds: 3 per
+  /// node, virtual-work nodal forces, int phi_k f_ext dS): the membrane in equilibrium
+  /// passes them to the fluids, so they are taken from F before the mass solve
+  /// (Delta f = -div_s T - f_ext). VirtualWork only (throws InputError otherwise).
+  void evaluate(const double* positions, MembraneEvaluation what, const double* externalForces);
 
   // --- per node (after evaluate) --------------------------------------------
   const std::vector<Mat3>& nodalTensions() const { return tension_; } ///< T, eq 3.30
@@ -190,7 +195,7 @@ private:
   quadrature::Rule1D edgeRule_;
 
   void contourIntegralLoads(const double* positions);
-  void virtualWorkLoads(const double* positions);
+  void virtualWorkLoads(const double* positions, const double* externalForces);
 
   // Reference data, per element (shape parameters) and per element node (6 e + j).
   std::vector<mesh::ShapeParameters> referenceParameters_;

@@ -165,6 +165,7 @@ public:
 
 private:
   void computeLoads(double t, elasticity::MembraneEvaluation what);
+  void computeContactForces();
   std::string nonFiniteCause(double t) const;
 
   SceneDescription description_;
@@ -177,6 +178,7 @@ private:
   std::vector<double> initialPositions_;
   std::vector<double> loads_;
   std::vector<double> loadDensity_;
+  std::vector<std::vector<double>> contactForces_; // per cell, with 'Contact/Enabled' only
   std::vector<std::string> terms_;
   std::string kernelKey_;
   std::optional<operators::WarmStartHistory> warmStart_; // with 'Solver/Warm start'

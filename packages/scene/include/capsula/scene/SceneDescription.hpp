@@ -2,6 +2,7 @@
 // The physical model a validated deck asks for, in plain values (SceneParameters.hpp lists
 // the keys). Reading it checks what the validators cannot see alone: cells numbered 0..N-1
 // without gaps, a fixed height that needs the wall.
+#include <capsula/adhesion/ContactParameters.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/RedistributionParameters.hpp>
 #include <capsula/operators/ShearRate.hpp>
@@ -38,6 +39,7 @@ struct SceneDescription {
   double minimumWallGap = 0.025;                   ///< 'Wall/Minimum gap': a new run must start farther up
   mesh::RedistributionSettings meshRegularisation; ///< 'Mesh regularisation'
   mesh::AdaptionSettings meshAdaption;             ///< 'Mesh adaption'
+  adhesion::ContactSettings contact;               ///< 'Contact': the short-range repulsion
 
   int numCells() const { return static_cast<int>(cells.size()); }
   bool anyFixedHeight() const;

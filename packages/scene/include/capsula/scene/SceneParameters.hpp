@@ -9,6 +9,7 @@
 //                     reference, Fixed height
 //   Cells/Cell 1/     ... one sublist per cell, numbered from 0
 //   Cells/            Minimum gap (between cell surfaces: touching at the start, stop of a run)
+//   Contact/          Enabled, Range, Strength (capsula::adhesion: the short-range repulsion)
 //   Mesh regularisation/, Mesh adaption/   (capsula::mesh)
 //
 // The run adds Time integration (capsula::timeint), Discretisation and Solver
