@@ -66,10 +66,10 @@ void Octree::split(int index)
   if (longest == 0.0) {
     return; // coinciding points: nothing separates them
   }
-  // Split the sides within a factor sqrt(2) of the longest (Section 3.1 of the paper).
+  // Halve the longest side (Octree.hpp).
   bool splitAxis[3];
   for (int i = 0; i < 3; ++i) {
-    splitAxis[i] = parent.box.hi[i] - parent.box.lo[i] >= longest / std::sqrt(2.0);
+    splitAxis[i] = parent.box.hi[i] - parent.box.lo[i] >= longest;
   }
   const std::vector<double>* coordinates[3] = {&x_, &y_, &z_};
   std::vector<int> part(parent.size());

@@ -72,16 +72,18 @@ TEST(Octree, LeavesPartitionThePointsAndBoxesAreTight)
   EXPECT_TRUE(std::all_of(covered.begin(), covered.end(), [](int k) { return k == 1; }));
 }
 
-TEST(Octree, FlatClusterIsSplitOnlyAlongItsLongSides)
+TEST(Octree, ClusterIsHalvedAlongItsLongestSide)
 {
-  // Points in a 1 x 1 x 0.01 slab: the root is cut in x and y only (4 children).
+  // Points in a 1 x 0.01 x 0.5 slab: the root is cut in x only (2 children).
   std::mt19937 random(3);
   const int n = 400;
   const auto x = uniformValues(n, 0.0, 1.0, random);
   const auto y = uniformValues(n, 0.0, 0.01, random);
-  const auto z = uniformValues(n, 0.0, 1.0, random);
+  const auto z = uniformValues(n, 0.0, 0.5, random);
   const Octree tree(x.data(), y.data(), z.data(), n, 10);
-  EXPECT_EQ(tree.clusters()[0].numChildren, 4);
+  ASSERT_EQ(tree.clusters()[0].numChildren, 2);
+  const Cluster& first = tree.clusters()[tree.clusters()[0].firstChild];
+  EXPECT_LE(first.box.hi[0], 0.5 * (tree.clusters()[0].box.lo[0] + tree.clusters()[0].box.hi[0]));
 }
 
 TEST(Octree, CoincidingPointsStayInOneLeaf)

@@ -10,10 +10,10 @@
 namespace capsula::fastsum {
 
 struct TreecodeParameters {
-  int degree = 6;      ///< n: (n+1)^3 Chebyshev proxies per cluster
-  double theta = 0.7;  ///< acceptance criterion (r_B + r_C) / R < theta; 0: all direct
-  int leafSize = 400;  ///< most sources in a leaf cluster
-  int batchSize = 128; ///< most targets in a batch (at most operators::targetBlockSize)
+  int degree = 6;     ///< n: (n+1)^3 Chebyshev proxies per cluster
+  double theta = 0.7; ///< acceptance criterion (r_B + r_C) / R < theta; 0: all direct
+  int leafSize = 400; ///< most sources in a leaf cluster
+  int batchSize = 32; ///< most targets in a batch (at most operators::targetBlockSize)
 };
 
 /// The cheapest measured (degree, theta) whose relative error on the single and double
