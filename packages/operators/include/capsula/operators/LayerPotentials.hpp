@@ -137,10 +137,21 @@ private:
     int firstNode, endNode, firstElement, endElement;
   };
 
+  // A sphere about a cell that holds every element's near-singular zone (bounding sphere
+  // plus `Near-singular distance` sizes): a target outside it, and its images too, is near
+  // none of the cell's elements, which findNearElements then skips without testing them.
+  struct CellReach {
+    double centre[3];
+    double radius;
+  };
+
   int cellOfNode(int node) const;
   // Elements near x0 or one of its images; for a node target (neighbourhood given) its
   // incident elements are left out and its ring is tested from the images only.
   void findNearElements(const double* x0, const Neighbourhood* neighbourhood, std::vector<int>& near) const;
+  // The elements [begin, end) near one of the poles (x0 and its images), appended to near.
+  void addNearElements(const double (*poles)[3], int numPoles, int begin, int end, const Neighbourhood* neighbourhood,
+                       std::vector<int>& near) const;
   // The regular rule over element m, as the sums do it, for one integrand.
   template <class Integrand>
   typename Integrand::Value regularRule(int m, const Integrand& integrand) const;
@@ -168,6 +179,7 @@ private:
   quadrature::Rule1D gauss_;
   ParametricRule vertexRules_[3];
   std::vector<CellRange> cells_;
+  std::vector<CellReach> cellReach_;          // per cell, for the current geometry
   std::vector<Neighbourhood> neighbourhoods_; // per node target
   int firstTarget_ = 0;
   int numTargets_ = 0;
@@ -314,6 +326,25 @@ void LayerPotentials<Kernel>::update(const CellSurfaces& surfaces)
                                     " of the scene lies outside the fluid domain of the ", Kernel::name, " kernel (at ",
                                     positions[3 * g], ", ", positions[3 * g + 1], ", ", positions[3 * g + 2], ").");
   }
+  const ElementData& elements = quadrature_.elements();
+  cellReach_.clear();
+  for (const CellRange& cell : cells_) {
+    CellReach reach{{0.0, 0.0, 0.0}, 0.0};
+    const double count = cell.endElement - cell.firstElement;
+    for (int m = cell.firstElement; m < cell.endElement; ++m) {
+      reach.centre[0] += elements.cx[m] / count;
+      reach.centre[1] += elements.cy[m] / count;
+      reach.centre[2] += elements.cz[m] / count;
+    }
+    for (int m = cell.firstElement; m < cell.endElement; ++m) {
+      const double dx = elements.cx[m] - reach.centre[0], dy = elements.cy[m] - reach.centre[1],
+                   dz = elements.cz[m] - reach.centre[2];
+      reach.radius = std::max(reach.radius, std::sqrt(dx * dx + dy * dy + dz * dz) + elements.radius[m] +
+                                                parameters_.nearSingularDistance * elements.size[m]);
+    }
+    reach.radius *= 1.0 + 1e-9; // round-off: never skip an element the element test would keep
+    cellReach_.push_back(reach);
+  }
   const int nq = quadrature_.pointsPerElement();
   std::vector<int> cellPointOffsets{0};
   for (const CellRange& cell : cells_) {
@@ -358,10 +389,28 @@ void LayerPotentials<Kernel>::findNearElements(const double* x0, const Neighbour
     poles[0][i] = x0[i];
   }
   const int numPoles = 1 + KernelTraits<Kernel>::images(x0, poles + 1);
+  for (std::size_t c = 0; c < cells_.size(); ++c) {
+    const CellReach& cell = cellReach_[c];
+    bool reached = false;
+    for (int p = 0; p < numPoles; ++p) {
+      const double dx = poles[p][0] - cell.centre[0], dy = poles[p][1] - cell.centre[1],
+                   dz = poles[p][2] - cell.centre[2];
+      reached = reached || dx * dx + dy * dy + dz * dz < cell.radius * cell.radius;
+    }
+    if (reached) {
+      addNearElements(poles, numPoles, cells_[c].firstElement, cells_[c].endElement, neighbourhood, near);
+    }
+  }
+}
+
+template <class Kernel>
+void LayerPotentials<Kernel>::addNearElements(const double (*poles)[3], int numPoles, int begin, int end,
+                                              const Neighbourhood* neighbourhood, std::vector<int>& near) const
+{
+  const double reach = parameters_.nearSingularDistance;
   const ElementData& e = quadrature_.elements();
-  const int numElements = quadrature_.numElements();
   // Fast path: one branch-free pass over the bounding spheres, then the few close ones.
-  for (int m = 0; m < numElements; ++m) {
+  for (int m = begin; m < end; ++m) {
     const double limit = e.radius[m] + reach * e.size[m];
     double closest = std::numeric_limits<double>::infinity();
     for (int p = 0; p < numPoles; ++p) {
