@@ -2,16 +2,24 @@
 //
 //   mpiexec -n 2 bench_operators [--level=3] [--kernel=Wall|FreeSpace|WallTensors] [--lambda=1]
 //                                [--quadrature-points=7]
-//                                [--rings=2] [--repeat=3]
+//                                [--rings=2] [--repeat=3] [--cells=1]
+//                                [--summation=Direct|Treecode] [--tolerance=1e-5]
 //
-// One spherical cell (radius 1, centre 2 above the wall) under a smooth non-uniform load.
-// Prints, as the maximum over ranks of the best of --repeat runs:
+// One spherical cell (radius 1, centre 2 above the wall) under a smooth non-uniform load;
+// with --cells=N > 1, N unit spheres 0.2 above the wall on a square grid of pitch 2.2 in
+// the wall plane (gaps of 0.2, no overlap). --summation picks the far-field back-end of the
+// regular sums ('Operator/Summation'; Treecode to --tolerance, docs/fastsum.md); for
+// Treecode the velocities are also computed with Direct and their relative difference
+// (2-norm) printed. Prints, as the maximum over ranks of the best of --repeat runs:
 //   geometry   rebuilding the quadrature caches after the nodes moved;
 //   velocity   one node-velocity evaluation (singular and near-singular corrections, the
 //              sums, and for lambda != 1 the GMRES solve, with its iterations);
 //   direct sum the bare vectorised regular sum of the Stokeslet over every quadrature point
 //              for the owned nodes (no corrections): the floor the evaluation is compared to.
+#include <capsula/core/Error.hpp>
 #include <capsula/core/MpiSessionDirectory.hpp>
+#include <capsula/fastsum/TreecodeBackEnd.hpp>
+#include <capsula/fastsum/TreecodeSummation.hpp>
 #include <capsula/mesh/Shapes.hpp>
 #include <capsula/operators/BuiltInKernels.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
@@ -22,6 +30,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <memory>
 #include <ctime>
 #include <cstdio>
 #include <functional>
@@ -96,27 +106,79 @@ double directSum(LayerPotentials<Kernel>& potentials, const std::vector<double>&
   return out.empty() ? 0.0 : out[0];
 }
 
+struct BenchOptions {
+  int level = 3;
+  double lambda = 1.0;
+  int quadraturePoints = 7;
+  int rings = DiscretisationParameters{}.regularNeighbourRings;
+  int repeat = 3;
+  int cells = 1;
+  std::string summation = "Direct";
+  double tolerance = 1e-5;
+  int leafSize = fastsum::TreecodeParameters{}.leafSize;
+  int batchSize = fastsum::TreecodeParameters{}.batchSize;
+};
+
+// The centres of the cells: one 2 above the wall, or a square grid 0.2 above it.
+std::vector<mesh::Vec3> cellCentres(int n)
+{
+  if (n == 1) {
+    return {mesh::Vec3(0.0, 2.0, 0.0)};
+  }
+  const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+  std::vector<mesh::Vec3> centres;
+  for (int c = 0; c < n; ++c) {
+    centres.emplace_back(2.2 * (c % columns), 1.2, 2.2 * (c / columns));
+  }
+  return centres;
+}
+
+double relativeDifference(const std::vector<double>& u, const std::vector<double>& reference)
+{
+  double difference = 0.0, norm = 0.0;
+  for (std::size_t k = 0; k < u.size(); ++k) {
+    difference += (u[k] - reference[k]) * (u[k] - reference[k]);
+    norm += reference[k] * reference[k];
+  }
+  return std::sqrt(difference / norm);
+}
+
 template <class Kernel>
-int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int level, double lambda, int quadraturePoints, int rings,
-        int repeat)
+int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& options)
 {
   const bool root = comm->getRank() == 0;
-  mesh::Placement placement;
-  placement.centre = mesh::Vec3(0.0, 2.0, 0.0);
+  const int level = options.level, quadraturePoints = options.quadraturePoints, rings = options.rings;
+  const int repeat = options.repeat;
+  const double lambda = options.lambda;
+  core::require<core::InputError>(options.cells >= 1, "--cells=", options.cells, ": give at least 1 cell.");
+  const std::vector<mesh::Vec3> centres = cellCentres(options.cells);
   std::vector<mesh::SurfaceMesh> cells;
-  cells.push_back(mesh::makeSphere(level, 1.0, placement));
+  for (const mesh::Vec3& centre : centres) {
+    mesh::Placement placement;
+    placement.centre = centre;
+    cells.push_back(mesh::makeSphere(level, 1.0, placement));
+  }
   DiscretisationParameters discretisation;
   discretisation.quadraturePoints = quadraturePoints;
   discretisation.regularNeighbourRings = rings;
-  KernelBoundaryIntegralSolver<Kernel> solver(comm, CellSurfaces(std::move(cells), lambda), discretisation,
-                                              SolverParameters{});
+  const DiscretisationParameters directDiscretisation = discretisation;
+  if (options.summation == "Treecode") {
+    auto parameters = fastsum::treecodeParametersForTolerance(options.tolerance);
+    parameters.leafSize = options.leafSize;
+    parameters.batchSize = options.batchSize;
+    discretisation.farField = std::make_shared<fastsum::TreecodeBackEnd>(parameters);
+  } else if (options.summation != "Direct") {
+    throw core::InputError(core::message("--summation=", options.summation, ": use Direct or Treecode."));
+  }
+  const CellSurfaces scene(std::move(cells), lambda);
+  KernelBoundaryIntegralSolver<Kernel> solver(comm, scene, discretisation, SolverParameters{});
   const CellSurfaces& surfaces = solver.surfaces();
   // A smooth non-uniform membrane load: an inflation-like normal part and a shear part.
   std::vector<double> loads;
   const auto& quad = solver.layerPotentials().quadrature();
   for (int m = 0; m < surfaces.numElements(); ++m) {
     const mesh::Vec3 c(quad.elements().cx[m], quad.elements().cy[m], quad.elements().cz[m]);
-    const mesh::Vec3 n = (c - placement.centre).normalized();
+    const mesh::Vec3 n = (c - centres[surfaces.cellOfElement(m)]).normalized();
     const mesh::Vec3 f = (2.0 + 0.5 * n[0] * n[1]) * n + 0.3 * mesh::Vec3(n[2], 0.0, -n[0]);
     loads.insert(loads.end(), {f[0], f[1], f[2]});
   }
@@ -134,17 +196,38 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int level, double la
   velocity.cpu -= geometry.cpu;
   std::vector<double> direct;
   double sink = 0.0;
-  const Timing directTime = timeIt(*comm, repeat, [&] { sink += directSum(solver.layerPotentials(), loads, direct); });
+  Timing directTime;
+  double difference = -1.0;
+  Timing reference;
+  if (options.summation == "Direct") {
+    directTime = timeIt(*comm, repeat, [&] { sink += directSum(solver.layerPotentials(), loads, direct); });
+  } else {
+    // The same evaluation with the direct sums, once: the reference and its time.
+    KernelBoundaryIntegralSolver<Kernel> directSolver(comm, scene, directDiscretisation, SolverParameters{});
+    VelocitySolution exact;
+    reference = timeIt(*comm, 1, [&] {
+      directSolver.setPositions(positions.data());
+      exact = directSolver.nodeVelocities(LoadDensity::constantOverElements(loads), flow);
+    });
+    difference = relativeDifference(solution.velocities, exact.velocities);
+  }
   const long long nearLocal = solver.layerPotentials().nearSingularElementCount();
   long long nearTotal = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, nearLocal, Teuchos::outArg(nearTotal));
 
   if (root) {
     const int numPoints = quad.numPoints();
-    std::printf("bench_operators: %s kernel, %d rank(s), level %d: %d nodes, %d elements, N_Q = %d "
-                "(%d quadrature points), N_GL = %d, regular neighbour rings %d, lambda = %g\n",
-                Kernel::name, comm->getSize(), level, surfaces.numNodes(), surfaces.numElements(), quadraturePoints,
-                numPoints, discretisation.singularQuadraturePoints, rings, lambda);
+    std::printf("bench_operators: %s kernel, %d rank(s), %d cell(s) at level %d: %d nodes, %d elements, N_Q = %d "
+                "(%d quadrature points), N_GL = %d, regular neighbour rings %d, lambda = %g, summation %s",
+                Kernel::name, comm->getSize(), surfaces.numCells(), level, surfaces.numNodes(), surfaces.numElements(),
+                quadraturePoints, numPoints, discretisation.singularQuadraturePoints, rings, lambda,
+                options.summation.c_str());
+    if (options.summation == "Treecode") {
+      const auto p = fastsum::treecodeParametersForTolerance(options.tolerance);
+      std::printf(" (tolerance %.0e: degree %d, theta %.2f, leaf size %d)", options.tolerance, p.degree, p.theta,
+                  options.leafSize);
+    }
+    std::printf("\n");
     std::printf("  near-singular (target, element) pairs: %lld (%.1f per node)\n", nearTotal,
                 static_cast<double>(nearTotal) / surfaces.numNodes());
     std::printf("                           wall ms   cpu ms (slowest rank, best of %d)\n", repeat);
@@ -153,8 +236,25 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int level, double la
     if (solution.iterations > 0) {
       std::printf("   GMRES: %d iterations, residual %.2e", solution.iterations, solution.residual);
     }
-    std::printf("\n  direct sum (floor)       %8.1f  %8.1f   (%d targets x %d points)\n", directTime.wall,
-                directTime.cpu, surfaces.numNodes(), numPoints);
+    std::printf("\n");
+    if (difference >= 0.0) {
+      std::printf("  same with Direct         %8.1f  %8.1f   (once)\n", reference.wall, reference.cpu);
+      std::printf("  speed-up over Direct     %8.2f  %8.2f\n", reference.wall / velocity.wall,
+                  reference.cpu / velocity.cpu);
+      std::printf("  relative difference from Direct (2-norm over the node velocities): %.2e\n", difference);
+      const auto* fast = dynamic_cast<const fastsum::TreecodeSummation<Kernel>*>(&solver.layerPotentials().farField());
+      if (fast) {
+        const auto& lists = fast->treecode().interactionLists();
+        const double all = static_cast<double>(surfaces.numNodes()) * numPoints;
+        std::printf("  kernel evaluations per single layer: direct %.3g, proxy %.3g (%.3f of all pairs)\n",
+                    static_cast<double>(lists.directPairs), static_cast<double>(lists.proxyPairs),
+                    (lists.directPairs + lists.proxyPairs) / all);
+      }
+      std::printf("  (velocity cpu ms per cell: %.1f)\n", velocity.cpu / surfaces.numCells());
+      return 0;
+    }
+    std::printf("  direct sum (floor)       %8.1f  %8.1f   (%d targets x %d points)\n", directTime.wall, directTime.cpu,
+                surfaces.numNodes(), numPoints);
     std::printf("  ratio velocity / direct  %8.2f  %8.2f\n", velocity.wall / directTime.wall,
                 velocity.cpu / directTime.cpu);
     std::printf("  target: 50 ms per velocity evaluation on 2 cores; velocity / 50 ms: %.2f (wall)\n",
@@ -171,31 +271,34 @@ int main(int argc, char* argv[])
   const capsula::core::MpiSessionDirectory sessionDirectory; // outlives MPI
   Tpetra::ScopeGuard scope(&argc, &argv);
   const auto comm = Tpetra::getDefaultComm();
-  int level = 3, quadraturePoints = 7, repeat = 3;
-  int rings = DiscretisationParameters{}.regularNeighbourRings;
-  double lambda = 1.0;
+  BenchOptions options;
   std::string kernel = "Wall";
   Teuchos::CommandLineProcessor clp(false, true);
   clp.setDocString("Times one velocity evaluation of the boundary-integral operators.");
-  clp.setOption("level", &level, "icosphere level of the cell (3: 2562 nodes)");
+  clp.setOption("level", &options.level, "icosphere level of the cells (3: 2562 nodes each)");
   clp.setOption("kernel", &kernel, "Wall, FreeSpace, or WallTensors (the wall kernel without the contracted forms)");
-  clp.setOption("lambda", &lambda, "viscosity ratio (1: explicit; otherwise GMRES)");
-  clp.setOption("quadrature-points", &quadraturePoints, "N_Q");
-  clp.setOption("rings", &rings, "regular neighbour rings (0: subdivide near elements of the own cell too)");
-  clp.setOption("repeat", &repeat, "runs per measurement (the best counts)");
+  clp.setOption("lambda", &options.lambda, "viscosity ratio (1: explicit; otherwise GMRES)");
+  clp.setOption("quadrature-points", &options.quadraturePoints, "N_Q");
+  clp.setOption("rings", &options.rings, "regular neighbour rings (0: subdivide near elements of the own cell too)");
+  clp.setOption("repeat", &options.repeat, "runs per measurement (the best counts)");
+  clp.setOption("cells", &options.cells, "cells: 1 (2 above the wall) or N on a grid 0.2 above the wall");
+  clp.setOption("summation", &options.summation, "far-field back-end: Direct or Treecode");
+  clp.setOption("tolerance", &options.tolerance, "treecode tolerance (Operator/Treecode/Tolerance)");
+  clp.setOption("leaf-size", &options.leafSize, "treecode leaf size (Operator/Treecode/Leaf size)");
+  clp.setOption("batch-size", &options.batchSize, "most targets in a treecode batch (<= 128)");
   if (clp.parse(argc, argv) != Teuchos::CommandLineProcessor::PARSE_SUCCESSFUL) {
     return 1;
   }
   try {
     if (kernel == "Wall") {
-      return run<Wall3DKernel>(comm, level, lambda, quadraturePoints, rings, repeat);
+      return run<Wall3DKernel>(comm, options);
     }
     if (kernel == "FreeSpace") {
-      return run<FreeSpace3DKernel>(comm, level, lambda, quadraturePoints, rings, repeat);
+      return run<FreeSpace3DKernel>(comm, options);
     }
     if (kernel == "WallTensors") {
       // The wall kernel straight from greens: full tensors contracted in the loops.
-      return run<greens::Wall3D>(comm, level, lambda, quadraturePoints, rings, repeat);
+      return run<greens::Wall3D>(comm, options);
     }
     std::fprintf(stderr, "bench_operators: unknown --kernel=%s (Wall, FreeSpace or WallTensors)\n", kernel.c_str());
   } catch (const std::exception& e) {

@@ -54,6 +54,11 @@ std::unique_ptr<BoundaryIntegralSolver> KernelRegistry::create(const std::string
                                                                const DiscretisationParameters& discretisation,
                                                                const SolverParameters& solver) const
 {
+  if (farField_ && !discretisation.farField) {
+    DiscretisationParameters withFarField = discretisation;
+    withFarField.farField = farField_;
+    return entry(name).factory(comm, std::move(surfaces), withFarField, solver);
+  }
   return entry(name).factory(comm, std::move(surfaces), discretisation, solver);
 }
 

@@ -3,6 +3,7 @@
 #include "capsula/run/SceneRunDeck.hpp"
 #include "capsula/run/SceneRun.hpp"
 
+#include <capsula/fastsum/SummationParameters.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 
 #include <string>
@@ -19,7 +20,8 @@ int runSceneApplication(int argc, char** argv, const core::AppDescription& app, 
     options.outputDirectory = context.options.outputDirectory;
     options.restartDirectory = context.options.restartDirectory;
     options.log = context.out;
-    const auto kernels = operators::builtInKernels();
+    auto kernels = operators::builtInKernels();
+    kernels.setFarField(fastsum::readFarFieldBackEnd(context.deck->sublist("Operator")));
     runScene(*context.deck, context.comm, options, kernels);
   };
   return core::runApplication(

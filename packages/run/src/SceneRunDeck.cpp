@@ -3,6 +3,7 @@
 #include "capsula/run/SceneOutputSettings.hpp"
 
 #include <capsula/core/ParameterDeclaration.hpp>
+#include <capsula/fastsum/SummationParameters.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/scene/SceneParameters.hpp>
 #include <capsula/scene/StiffSolverParameters.hpp>
@@ -19,6 +20,8 @@ Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos
       core::declareSublist(*valid, "Time integration", "Time stepping (Section 3.10; docs/stiff-integration.md)."),
       /*stabilityLimitDefault=*/true);
   operators::declareOperatorParameters(*valid);
+  fastsum::declareSummationParameters(core::declareSublist(
+      *valid, "Operator", "The far-field sums of the boundary-integral operators (docs/fastsum.md)."));
   scene::declareStiffSolverParameters(core::declareSublist(
       valid->sublist("Solver"), "Stiff",
       "The linear solves of the stiff time integrators (Time integration/Method ROS34PW2, ROS2, Auto)."));

@@ -6,6 +6,7 @@
 // solverFactory<Policy>() from KernelBoundaryIntegralSolver.hpp. Nothing global: the
 // application owns the registry and decides what it holds (docs/extending.md).
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
+#include <capsula/operators/FarFieldBackEnd.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 
 #include <functional>
@@ -31,8 +32,14 @@ public:
   std::vector<std::string> names() const;
   const std::string& description(const std::string& name) const;
 
+  /// The far-field back-end ('Operator/Summation') of every solver created, unless the
+  /// discretisation passed to create names its own; null (the default): direct sums.
+  void setFarField(std::shared_ptr<const FarFieldBackEnd> farField) { farField_ = std::move(farField); }
+  const std::shared_ptr<const FarFieldBackEnd>& farField() const { return farField_; }
+
   /// A solver for the kernel `name`. Throws core::InputError naming the registered
-  /// kernels (and the closest one) if there is none by that name.
+  /// kernels (and the closest one) if there is none by that name, or naming
+  /// 'Operator/Summation' if the far-field back-end does not support that kernel.
   std::unique_ptr<BoundaryIntegralSolver> create(const std::string& name,
                                                  const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
                                                  CellSurfaces surfaces, const DiscretisationParameters& discretisation,
@@ -45,6 +52,7 @@ private:
   };
   const Entry& entry(const std::string& name) const;
   std::map<std::string, Entry> entries_;
+  std::shared_ptr<const FarFieldBackEnd> farField_;
 };
 
 /// Registers "FreeSpace" (unbounded fluid, eqs 3.11-3.12) and "Wall" (plane wall y = 0,

@@ -13,7 +13,10 @@
 //                  element sizes of the element's bounding sphere: adaptive subdivision
 //                  (AdaptiveQuadrature.hpp).
 // The sums run over ALL points (no branch in the hot loop); the singular and
-// near-singular elements then get a correction "special rule minus regular rule".
+// near-singular elements then get a correction "special rule minus regular rule". The
+// sums go through a FarFieldSummation back-end (FarFieldSummation.hpp): DirectSummation by
+// default, or a fast one (a treecode), which then approximates the regular rule only; the
+// corrections stay exact.
 // A node's own neighbourhood (`Regular neighbour rings` of elements around those holding
 // it, 2 by default) is left to the regular rule, as in the thesis: there the target lies
 // in the tangent plane of a smooth surface, where the rule is 10-50 times more accurate
@@ -37,7 +40,10 @@
 #include <capsula/operators/AdaptiveQuadrature.hpp>
 #include <capsula/operators/CellSurfaces.hpp>
 #include <capsula/operators/DoubleLayerForm.hpp>
+#include <capsula/operators/DirectSummation.hpp>
 #include <capsula/operators/ElementIntegrals.hpp>
+#include <capsula/operators/FarFieldBackEnd.hpp>
+#include <capsula/operators/FarFieldSummation.hpp>
 #include <capsula/operators/KernelTraits.hpp>
 #include <capsula/operators/LoadDensity.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
@@ -51,6 +57,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <typeinfo>
 #include <vector>
 
 namespace capsula::operators {
@@ -58,6 +66,9 @@ namespace capsula::operators {
 template <class Kernel>
 class LayerPotentials {
 public:
+  /// The regular sums go to the back-end of parameters.farField (DirectSummation<Kernel>
+  /// when null); throws core::InputError naming 'Operator/Summation' if it does not
+  /// support Kernel.
   explicit LayerPotentials(const DiscretisationParameters& parameters);
 
   /// Sets the node targets, the global nodes [firstTargetNode, firstTargetNode +
@@ -71,6 +82,7 @@ public:
 
   const SurfaceQuadrature& quadrature() const { return quadrature_; }
   const DiscretisationParameters& parameters() const { return parameters_; }
+  const FarFieldSummation& farField() const { return *farField_; }
   int firstTargetNode() const { return firstTarget_; }
   int numTargetNodes() const { return numTargets_; }
 
@@ -125,10 +137,21 @@ private:
     int firstNode, endNode, firstElement, endElement;
   };
 
+  // A sphere about a cell that holds every element's near-singular zone (bounding sphere
+  // plus `Near-singular distance` sizes): a target outside it, and its images too, is near
+  // none of the cell's elements, which findNearElements then skips without testing them.
+  struct CellReach {
+    double centre[3];
+    double radius;
+  };
+
   int cellOfNode(int node) const;
   // Elements near x0 or one of its images; for a node target (neighbourhood given) its
   // incident elements are left out and its ring is tested from the images only.
   void findNearElements(const double* x0, const Neighbourhood* neighbourhood, std::vector<int>& near) const;
+  // The elements [begin, end) near one of the poles (x0 and its images), appended to near.
+  void addNearElements(const double (*poles)[3], int numPoles, int begin, int end, const Neighbourhood* neighbourhood,
+                       std::vector<int>& near) const;
   // The regular rule over element m, as the sums do it, for one integrand.
   template <class Integrand>
   typename Integrand::Value regularRule(int m, const Integrand& integrand) const;
@@ -156,6 +179,7 @@ private:
   quadrature::Rule1D gauss_;
   ParametricRule vertexRules_[3];
   std::vector<CellRange> cells_;
+  std::vector<CellReach> cellReach_;          // per cell, for the current geometry
   std::vector<Neighbourhood> neighbourhoods_; // per node target
   int firstTarget_ = 0;
   int numTargets_ = 0;
@@ -170,6 +194,11 @@ private:
 
   // Per-evaluation source arrays (kept to avoid reallocation).
   std::vector<double> fx_, fy_, fz_, vx_, vy_, vz_;
+
+  std::unique_ptr<FarFieldSummation> farField_;
+  std::vector<double> nodeTargets_;  // positions of the target nodes (3 each)
+  std::vector<int> nodeTargetCells_; // their cells
+  std::vector<double> far_;          // the back-end's sums (3 per target)
 };
 
 // ---------------------------------------------------------------------------------------
@@ -219,6 +248,14 @@ LayerPotentials<Kernel>::LayerPotentials(const DiscretisationParameters& paramet
       quadrature_(parameters.quadraturePoints),
       gauss_(quadrature::gaussLegendre(parameters.singularQuadraturePoints, 0.0, 1.0))
 {
+  if (parameters.farField) {
+    farField_ = parameters.farField->forKernel(typeid(Kernel), Kernel::name);
+    core::require<core::InputError>(farField_ != nullptr, "'Operator/Summation' = ", parameters.farField->name(),
+                                    " does not support the ", Kernel::name,
+                                    " kernel; use 'Operator/Summation' = Direct.");
+  } else {
+    farField_ = std::make_unique<DirectSummation<Kernel>>();
+  }
   validate(parameters_);
   for (int vertex = 0; vertex < 3; ++vertex) {
     singularRule(vertex, mesh::ShapeParameters{}, gauss_, vertexRules_[vertex]);
@@ -289,6 +326,38 @@ void LayerPotentials<Kernel>::update(const CellSurfaces& surfaces)
                                     " of the scene lies outside the fluid domain of the ", Kernel::name, " kernel (at ",
                                     positions[3 * g], ", ", positions[3 * g + 1], ", ", positions[3 * g + 2], ").");
   }
+  const ElementData& elements = quadrature_.elements();
+  cellReach_.clear();
+  for (const CellRange& cell : cells_) {
+    CellReach reach{{0.0, 0.0, 0.0}, 0.0};
+    const double count = cell.endElement - cell.firstElement;
+    for (int m = cell.firstElement; m < cell.endElement; ++m) {
+      reach.centre[0] += elements.cx[m] / count;
+      reach.centre[1] += elements.cy[m] / count;
+      reach.centre[2] += elements.cz[m] / count;
+    }
+    for (int m = cell.firstElement; m < cell.endElement; ++m) {
+      const double dx = elements.cx[m] - reach.centre[0], dy = elements.cy[m] - reach.centre[1],
+                   dz = elements.cz[m] - reach.centre[2];
+      reach.radius = std::max(reach.radius, std::sqrt(dx * dx + dy * dy + dz * dz) + elements.radius[m] +
+                                                parameters_.nearSingularDistance * elements.size[m]);
+    }
+    reach.radius *= 1.0 + 1e-9; // round-off: never skip an element the element test would keep
+    cellReach_.push_back(reach);
+  }
+  const int nq = quadrature_.pointsPerElement();
+  std::vector<int> cellPointOffsets{0};
+  for (const CellRange& cell : cells_) {
+    cellPointOffsets.push_back(cell.endElement * nq);
+  }
+  const QuadraturePoints& points = quadrature_.points();
+  farField_->setSources(points.x.data(), points.y.data(), points.z.data(), cellPointOffsets);
+  nodeTargets_.assign(positions + 3 * static_cast<std::size_t>(firstTarget_),
+                      positions + 3 * static_cast<std::size_t>(firstTarget_ + numTargets_));
+  nodeTargetCells_.resize(numTargets_);
+  for (int t = 0; t < numTargets_; ++t) {
+    nodeTargetCells_[t] = cellOfNode(firstTarget_ + t);
+  }
   hasDoubleCorrections_ = false;
   corrections_.clear();
   hasSingleCorrections_ = false;
@@ -320,10 +389,28 @@ void LayerPotentials<Kernel>::findNearElements(const double* x0, const Neighbour
     poles[0][i] = x0[i];
   }
   const int numPoles = 1 + KernelTraits<Kernel>::images(x0, poles + 1);
+  for (std::size_t c = 0; c < cells_.size(); ++c) {
+    const CellReach& cell = cellReach_[c];
+    bool reached = false;
+    for (int p = 0; p < numPoles; ++p) {
+      const double dx = poles[p][0] - cell.centre[0], dy = poles[p][1] - cell.centre[1],
+                   dz = poles[p][2] - cell.centre[2];
+      reached = reached || dx * dx + dy * dy + dz * dz < cell.radius * cell.radius;
+    }
+    if (reached) {
+      addNearElements(poles, numPoles, cells_[c].firstElement, cells_[c].endElement, neighbourhood, near);
+    }
+  }
+}
+
+template <class Kernel>
+void LayerPotentials<Kernel>::addNearElements(const double (*poles)[3], int numPoles, int begin, int end,
+                                              const Neighbourhood* neighbourhood, std::vector<int>& near) const
+{
+  const double reach = parameters_.nearSingularDistance;
   const ElementData& e = quadrature_.elements();
-  const int numElements = quadrature_.numElements();
   // Fast path: one branch-free pass over the bounding spheres, then the few close ones.
-  for (int m = 0; m < numElements; ++m) {
+  for (int m = begin; m < end; ++m) {
     const double limit = e.radius[m] + reach * e.size[m];
     double closest = std::numeric_limits<double>::infinity();
     for (int p = 0; p < numPoles; ++p) {
@@ -567,27 +654,16 @@ void LayerPotentials<Kernel>::singleLayerOfNodalLoadAtNodes(const double* nodalL
       fz_[q] = f[2] * p.weight[q];
     }
   }
-  const SingleLayerSources sources = singleLayerSources();
-  const double* positions = quadrature_.nodePositions().data();
+  far_.resize(3 * static_cast<std::size_t>(numTargets_));
+  farField_->singleLayer(singleLayerSources(), nodeTargets_.data(), numTargets_, far_.data());
   const auto blocks = detail::nodeBlocks(cells_, firstTarget_, numTargets_);
-  const int numPoints = quadrature_.numPoints();
 #if defined(_OPENMP)
 #pragma omp parallel for schedule(dynamic)
 #endif
   for (std::size_t b = 0; b < blocks.size(); ++b) {
-    TargetBlock block;
-    block.start(blocks[b].count);
-    for (int k = 0; k < block.size; ++k) {
-      const double* x0 = positions + 3 * (firstTarget_ + blocks[b].first + k);
-      block.x[k] = x0[0];
-      block.y[k] = x0[1];
-      block.z[k] = x0[2];
-    }
-    block.pad();
-    addSingleLayerSums<Kernel>(block, sources, 0, numPoints);
-    for (int k = 0; k < block.size; ++k) {
+    for (int k = 0; k < blocks[b].count; ++k) {
       const int t = blocks[b].first + k;
-      double u[3] = {block.ux[k], block.uy[k], block.uz[k]};
+      double u[3] = {far_[3 * t], far_[3 * t + 1], far_[3 * t + 2]};
       const TargetCorrections& corr = singleCorrections_[t];
       for (std::size_t e = 0; e < corr.nodes.size(); ++e) {
         detail::addTransposedProduct(&corr.dbl[9 * e], nodalLoad + 3 * corr.nodes[e], u);
@@ -673,30 +749,20 @@ void LayerPotentials<Kernel>::singleLayerAtNodes(const LoadDensity& load, double
 {
   buildSingleLayerSources(load);
   findNodeNearElements();
-  const SingleLayerSources sources = singleLayerSources();
+  far_.resize(3 * static_cast<std::size_t>(numTargets_));
+  farField_->singleLayer(singleLayerSources(), nodeTargets_.data(), numTargets_, far_.data());
   const double* positions = quadrature_.nodePositions().data();
   const auto blocks = detail::nodeBlocks(cells_, firstTarget_, numTargets_);
-  const int numPoints = quadrature_.numPoints();
   long long nearCount = 0;
 #if defined(_OPENMP)
 #pragma omp parallel for schedule(dynamic) reduction(+ : nearCount)
 #endif
   for (std::size_t b = 0; b < blocks.size(); ++b) {
-    TargetBlock block;
-    block.start(blocks[b].count);
-    for (int k = 0; k < block.size; ++k) {
-      const double* x0 = positions + 3 * (firstTarget_ + blocks[b].first + k);
-      block.x[k] = x0[0];
-      block.y[k] = x0[1];
-      block.z[k] = x0[2];
-    }
-    block.pad();
-    addSingleLayerSums<Kernel>(block, sources, 0, numPoints);
     ParametricRule rule;
-    for (int k = 0; k < block.size; ++k) {
+    for (int k = 0; k < blocks[b].count; ++k) {
       const int t = blocks[b].first + k;
       const double* x0 = positions + 3 * (firstTarget_ + t);
-      double u[3] = {block.ux[k], block.uy[k], block.uz[k]};
+      double u[3] = {far_[3 * t], far_[3 * t + 1], far_[3 * t + 2]};
       const auto add = [&u](const std::array<double, 3>& correction) {
         for (int j = 0; j < 3; ++j) {
           u[j] += correction[j];
@@ -723,40 +789,19 @@ void LayerPotentials<Kernel>::doubleLayerAtNodes(const double* density, DoubleLa
 {
   prepareDoubleLayerCorrections();
   buildDoubleLayerSources(density);
-  const DoubleLayerSources sources = doubleLayerSources();
-  const double* positions = quadrature_.nodePositions().data();
-  const int nq = quadrature_.pointsPerElement();
   const bool subtract = form == DoubleLayerForm::Subtracted;
+  far_.resize(3 * static_cast<std::size_t>(numTargets_));
+  farField_->doubleLayer(doubleLayerSources(), nodeTargets_.data(), subtract ? nodeTargetCells_.data() : nullptr,
+                         density + 3 * static_cast<std::size_t>(firstTarget_), numTargets_, far_.data());
   const auto blocks = detail::nodeBlocks(cells_, firstTarget_, numTargets_);
 #if defined(_OPENMP)
 #pragma omp parallel for schedule(dynamic)
 #endif
   for (std::size_t b = 0; b < blocks.size(); ++b) {
-    TargetBlock block;
-    block.start(blocks[b].count);
-    for (int k = 0; k < block.size; ++k) {
-      const int g = firstTarget_ + blocks[b].first + k;
-      block.x[k] = positions[3 * g];
-      block.y[k] = positions[3 * g + 1];
-      block.z[k] = positions[3 * g + 2];
-      block.sx[k] = density[3 * g];
-      block.sy[k] = density[3 * g + 1];
-      block.sz[k] = density[3 * g + 2];
-    }
-    block.pad();
-    for (int d = 0; d < static_cast<int>(cells_.size()); ++d) {
-      const int begin = cells_[d].firstElement * nq;
-      const int end = cells_[d].endElement * nq;
-      if (subtract && d == blocks[b].cell) {
-        addDoubleLayerSums<Kernel, true>(block, sources, begin, end);
-      } else {
-        addDoubleLayerSums<Kernel, false>(block, sources, begin, end);
-      }
-    }
-    for (int k = 0; k < block.size; ++k) {
+    for (int k = 0; k < blocks[b].count; ++k) {
       const int t = blocks[b].first + k;
       const double* u0 = density + 3 * (firstTarget_ + t);
-      double u[3] = {block.ux[k], block.uy[k], block.uz[k]};
+      double u[3] = {far_[3 * t], far_[3 * t + 1], far_[3 * t + 2]};
       const TargetCorrections& corr = corrections_[t];
       for (std::size_t e = 0; e < corr.nodes.size(); ++e) {
         detail::addTransposedProduct(&corr.dbl[9 * e], density + 3 * corr.nodes[e], u);
@@ -778,19 +823,17 @@ template <class Kernel>
 void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, const LoadDensity& load, double* result)
 {
   buildSingleLayerSources(load);
-  const SingleLayerSources sources = singleLayerSources();
-  const int numPoints = quadrature_.numPoints();
+  std::vector<double> far(3 * static_cast<std::size_t>(n));
+  farField_->singleLayer(singleLayerSources(), points, n, far.data());
 #if defined(_OPENMP)
 #pragma omp parallel for schedule(dynamic)
 #endif
   for (int first = 0; first < n; first += targetBlockSize) {
-    TargetBlock block;
-    startPointBlock(block, points, first, n);
-    addSingleLayerSums<Kernel>(block, sources, 0, numPoints);
     std::vector<int> near;
-    for (int k = 0; k < block.size; ++k) {
+    for (int k = 0; k < std::min(targetBlockSize, n - first); ++k) {
       const double* x0 = points + 3 * (first + k);
-      double u[3] = {block.ux[k], block.uy[k], block.uz[k]};
+      const double* sum = &far[3 * static_cast<std::size_t>(first + k)];
+      double u[3] = {sum[0], sum[1], sum[2]};
       findNearElements(x0, nullptr, near);
       for (const int m : near) {
         const auto correction = nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{x0, load.element(m)});
@@ -809,19 +852,17 @@ template <class Kernel>
 void LayerPotentials<Kernel>::doubleLayerAtPoints(const double* points, int n, const double* density, double* result)
 {
   buildDoubleLayerSources(density);
-  const DoubleLayerSources sources = doubleLayerSources();
-  const int numPoints = quadrature_.numPoints();
+  std::vector<double> far(3 * static_cast<std::size_t>(n));
+  farField_->doubleLayer(doubleLayerSources(), points, nullptr, nullptr, n, far.data());
 #if defined(_OPENMP)
 #pragma omp parallel for schedule(dynamic)
 #endif
   for (int first = 0; first < n; first += targetBlockSize) {
-    TargetBlock block;
-    startPointBlock(block, points, first, n);
-    addDoubleLayerSums<Kernel, false>(block, sources, 0, numPoints);
     std::vector<int> near;
-    for (int k = 0; k < block.size; ++k) {
+    for (int k = 0; k < std::min(targetBlockSize, n - first); ++k) {
       const double* x0 = points + 3 * (first + k);
-      double u[3] = {block.ux[k], block.uy[k], block.uz[k]};
+      const double* sum = &far[3 * static_cast<std::size_t>(first + k)];
+      double u[3] = {sum[0], sum[1], sum[2]};
       findNearElements(x0, nullptr, near);
       for (const int m : near) {
         const auto correction = nearCorrection(m, DoubleLayerIntegrand<Kernel>{x0});

@@ -5,7 +5,11 @@
 // strings (docs/operators.md has the measurements behind them).
 #include <Teuchos_ParameterList.hpp>
 
+#include <memory>
+
 namespace capsula::operators {
+
+class FarFieldBackEnd;
 
 /// How the element integrals are computed (thesis Section 3.6).
 struct DiscretisationParameters {
@@ -22,6 +26,8 @@ struct DiscretisationParameters {
   /// Rings of elements around those holding a node target that keep the N_Q-point rule
   /// even when near (the node lies in their tangent plane); 0 tests them too.
   int regularNeighbourRings = 2;
+  /// The back-end of the regular sums ('Operator/Summation'); null: the direct sums.
+  std::shared_ptr<const FarFieldBackEnd> farField;
 };
 
 /// The GMRES solve of the second-kind equation for lambda != 1 (thesis Section 3.8).
