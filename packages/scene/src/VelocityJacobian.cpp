@@ -6,7 +6,6 @@
 #include <capsula/core/Timers.hpp>
 #include <capsula/mesh/Measures.hpp>
 #include <capsula/operators/CellSurfaces.hpp>
-#include <capsula/operators/GmresSolve.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -60,7 +59,6 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   const int numNodes = scene.numNodes();
   map_ = Teuchos::rcp(
       new Tpetra::Map<>(3 * static_cast<Tpetra::global_size_t>(numNodes), 0, scene.comm(), Tpetra::LocallyReplicated));
-  stage_ = Teuchos::rcp(new operators::StageOperator(map_, [this](const double* x, double* y) { apply(x, y); }));
   if (settings_.preconditioned) {
     preconditioner_ = Teuchos::rcp(new LocalMobilityPreconditioner(map_));
   }
@@ -70,6 +68,8 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   flowFactor_.assign(static_cast<std::size_t>(numNodes), 2.0 / (1.0 + lambda));
   gmres_.restart = settings_.restart;
   gmres_.maximumIterations = settings_.maximumIterations;
+  solver_ = std::make_unique<operators::StageSolver>(
+      map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_);
   for (int c = 0; c < scene.numCells(); ++c) {
     mass_.push_back(std::make_unique<mesh::SurfaceMassMatrix>(scene.cell(c)));
     bendingLoad_.push_back(std::make_unique<elasticity::LinearLumpedLoad>(scene.cell(c)));
@@ -154,45 +154,14 @@ timeint::LinearSolveReport VelocityJacobian::solve(double shift, const std::vect
                                                    double residualRms)
 {
   timeint::LinearSolveReport report;
-  const std::size_t n = r.size();
-  double norm = 0.0;
-  for (const double v : r) {
-    norm += v * v;
-  }
-  norm = std::sqrt(norm);
-  const double target = residualRms * std::sqrt(static_cast<double>(n));
-  if (norm <= target) { // x = 0 is already close enough
-    x.assign(n, 0.0);
-    report.converged = true;
-    report.residualRms = norm / std::sqrt(static_cast<double>(n));
-    return report;
-  }
-  stage_->setShift(shift);
   if (!preconditioner_.is_null()) {
     Teuchos::TimeMonitor guard(*preconditionerTimer_);
     preconditioner_->setShift(shift);
   }
-  using MV = Tpetra::MultiVector<double>;
-  auto b = Teuchos::rcp(new MV(map_, 1));
-  auto solution = Teuchos::rcp(new MV(map_, 1));
-  {
-    auto bData = b->getDataNonConst(0);
-    auto xData = solution->getDataNonConst(0);
-    for (std::size_t k = 0; k < n; ++k) {
-      bData[k] = r[k];
-      xData[k] = x[k];
-    }
-  }
-  operators::SolverParameters parameters = gmres_;
-  parameters.tolerance = std::max(target / norm, 1e-14);
-  const bool zeroGuess = std::all_of(x.begin(), x.end(), [](double v) { return v == 0.0; });
-  const operators::GmresResult result =
-      operators::solveWithGmres(stage_, preconditioner_, b, solution, parameters, zeroGuess);
-  const auto xData = solution->getData(0);
-  x.assign(xData.begin(), xData.end());
+  const operators::StageSolveResult result = solver_->solve(shift, r, x, residualRms);
   report.converged = result.converged;
   report.iterations = result.iterations;
-  report.residualRms = result.residual * norm / std::sqrt(static_cast<double>(n));
+  report.residualRms = result.residualRms;
   return report;
 }
 

@@ -3,7 +3,6 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
 #include <capsula/operators/ContourDiscretisation2D.hpp>
-#include <capsula/operators/GmresSolve.hpp>
 #include <capsula/operators/PointSingleLayer2D.hpp>
 
 #include <Eigen/SparseCore>
@@ -52,7 +51,6 @@ VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP
   velocity_ = operators::makeInterfaceVelocity2D(model.flow().wall, comm, n, discretisation,
                                                  operators::readSolverParameters(deck.sublist("Solver")));
   map_ = Teuchos::rcp(new Tpetra::Map<>(2 * static_cast<Tpetra::global_size_t>(n), 0, comm, Tpetra::LocallyReplicated));
-  stage_ = Teuchos::rcp(new operators::StageOperator(map_, [this](const double* x, double* y) { apply(x, y); }));
   if (settings_.preconditioner != StiffPreconditioner2D::None) {
     preconditioner_ = Teuchos::rcp(new StagePreconditioner2D(map_));
   }
@@ -62,6 +60,8 @@ VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP
   flowFactor_ = 2.0 / (1.0 + lambda);
   gmres_.restart = settings_.restart;
   gmres_.maximumIterations = settings_.maximumIterations;
+  solver_ = std::make_unique<operators::StageSolver>(
+      map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_);
 }
 
 void VelocityJacobian2D::linearise(double t, const std::vector<double>& y)
@@ -222,45 +222,14 @@ timeint::LinearSolveReport VelocityJacobian2D::solve(double shift, const std::ve
                                                      double residualRms)
 {
   timeint::LinearSolveReport report;
-  const std::size_t n = r.size();
-  double norm = 0.0;
-  for (const double v : r) {
-    norm += v * v;
-  }
-  norm = std::sqrt(norm);
-  const double target = residualRms * std::sqrt(static_cast<double>(n));
-  if (norm <= target) { // x = 0 is already close enough
-    x.assign(n, 0.0);
-    report.converged = true;
-    report.residualRms = norm / std::sqrt(static_cast<double>(n));
-    return report;
-  }
-  stage_->setShift(shift);
   if (!preconditioner_.is_null()) {
     Teuchos::TimeMonitor guard(*preconditionerTimer_);
     preconditioner_->setShift(shift);
   }
-  using MV = Tpetra::MultiVector<double>;
-  auto b = Teuchos::rcp(new MV(map_, 1));
-  auto solution = Teuchos::rcp(new MV(map_, 1));
-  {
-    auto bData = b->getDataNonConst(0);
-    auto xData = solution->getDataNonConst(0);
-    for (std::size_t k = 0; k < n; ++k) {
-      bData[k] = r[k];
-      xData[k] = x[k];
-    }
-  }
-  operators::SolverParameters parameters = gmres_;
-  parameters.tolerance = std::max(target / norm, 1e-14);
-  const bool zeroGuess = std::all_of(x.begin(), x.end(), [](double v) { return v == 0.0; });
-  const operators::GmresResult result =
-      operators::solveWithGmres(stage_, preconditioner_, b, solution, parameters, zeroGuess);
-  const auto xData = solution->getData(0);
-  x.assign(xData.begin(), xData.end());
+  const operators::StageSolveResult result = solver_->solve(shift, r, x, residualRms);
   report.converged = result.converged;
   report.iterations = result.iterations;
-  report.residualRms = result.residual * norm / std::sqrt(static_cast<double>(n));
+  report.residualRms = result.residualRms;
   return report;
 }
 

@@ -18,7 +18,7 @@
 // methods keep their order with such a J~; it needs to be right only on the stiff modes.
 //
 // Solves with W = I - shift J~ run Belos GMRES on a locally replicated map
-// (operators::StageOperator) with the LocalMobilityPreconditioner on the right; each
+// (operators::StageSolver) with the LocalMobilityPreconditioner on the right; each
 // application of J~ is one single-layer evaluation, its rows shared by the ranks. The
 // results do not depend on the number of ranks (the right-hand side's do not either).
 #include "capsula/scene/LocalMobilityPreconditioner.hpp"
@@ -30,7 +30,7 @@
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
-#include <capsula/operators/StageOperator.hpp>
+#include <capsula/operators/StageSolver.hpp>
 #include <capsula/timeint/LinearisedSystem.hpp>
 
 #include <Teuchos_ParameterList.hpp>
@@ -78,8 +78,8 @@ private:
   std::vector<double> flowFactor_;               // 2 / (1 + lambda_d) per node
   mesh::Mat3 flowGradient_ = mesh::Mat3::Zero(); // grad u_inf at the step's start, k(t_n)
   Teuchos::RCP<const Tpetra::Map<>> map_;
-  Teuchos::RCP<operators::StageOperator> stage_;
   Teuchos::RCP<LocalMobilityPreconditioner> preconditioner_;
+  std::unique_ptr<operators::StageSolver> solver_; // GMRES on W
   std::vector<double> forces_, loads_, product_;
   long long applications_ = 0;
   Teuchos::RCP<Teuchos::Time> lineariseTimer_, applyTimer_, preconditionerTimer_;

@@ -25,7 +25,7 @@
 // methods keep their order with any J~ (docs/stiff-integration.md has the measurement).
 //
 // Solves with W = I - shift J~ run Belos GMRES on a locally replicated map
-// (operators::StageOperator) with a dense preconditioner on the right
+// (operators::StageSolver) with a dense preconditioner on the right
 // (StagePreconditioner2D.hpp). J~ reads the model at every linearisation (its closure,
 // tethered node and membrane reference), so it follows tethering and regridding without
 // being rebuilt. Every rank computes the same J~ v (the single layer's rows are shared and
@@ -35,7 +35,7 @@
 #include "capsula/scene2d/StiffSolverParameters2D.hpp"
 
 #include <capsula/operators/InterfaceVelocity2D.hpp>
-#include <capsula/operators/StageOperator.hpp>
+#include <capsula/operators/StageSolver.hpp>
 #include <capsula/timeint/LinearisedSystem.hpp>
 
 #include <Teuchos_Comm.hpp>
@@ -88,8 +88,8 @@ private:
   Eigen::Matrix2d flowGradient_ = Eigen::Matrix2d::Zero(); // grad u_inf at the step's start, k(t_n)
   bool tetherEnabled_ = false;
   Teuchos::RCP<const Tpetra::Map<>> map_;
-  Teuchos::RCP<operators::StageOperator> stage_;
   Teuchos::RCP<StagePreconditioner2D> preconditioner_;
+  std::unique_ptr<operators::StageSolver> solver_; // GMRES on W
   std::vector<double> probe_;
   long long applications_ = 0;
   Teuchos::RCP<Teuchos::Time> lineariseTimer_, applyTimer_, preconditionerTimer_;

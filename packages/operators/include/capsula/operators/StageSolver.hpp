@@ -1,0 +1,45 @@
+#pragma once
+// Solves with the matrix of a linearly implicit step, W = I - shift J~ (StageOperator),
+// for the stiff time integrators of the 3D scenes and the 2D tethered cell: Belos flexible
+// GMRES with a right preconditioner, to an RMS residual target. J~ comes as an action on
+// whole, locally replicated vectors: every rank takes the same Krylov steps and gets the
+// same bits.
+#include <capsula/operators/OperatorParameters.hpp>
+#include <capsula/operators/StageOperator.hpp>
+
+#include <Teuchos_RCP.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Operator.hpp>
+
+#include <vector>
+
+namespace capsula::operators {
+
+/// How one solve went.
+struct StageSolveResult {
+  bool converged = false;
+  int iterations = 0;       ///< GMRES iterations
+  double residualRms = 0.0; ///< achieved ||r - W x||_2 / sqrt(n)
+};
+
+class StageSolver {
+public:
+  /// On the locally replicated `map`, with J~ = `jacobian`, the preconditioner `M` ~ W^-1
+  /// (null: none; its shift is the caller's to set before each solve) and the GMRES
+  /// restart and iteration cap of `gmres` (its tolerance is set per solve).
+  StageSolver(Teuchos::RCP<const Tpetra::Map<>> map, StageOperator::Action jacobian,
+              Teuchos::RCP<const Tpetra::Operator<double>> M, const SolverParameters& gmres);
+
+  /// Solves W x = r to an RMS residual of at most `residualRms`; x's content on entry is
+  /// the initial guess (all zeros saves an application of W). A right-hand side already
+  /// within the target gives x = 0 without an iteration.
+  StageSolveResult solve(double shift, const std::vector<double>& r, std::vector<double>& x, double residualRms);
+
+private:
+  Teuchos::RCP<const Tpetra::Map<>> map_;
+  Teuchos::RCP<StageOperator> stage_;
+  Teuchos::RCP<const Tpetra::Operator<double>> preconditioner_;
+  SolverParameters gmres_;
+};
+
+} // namespace capsula::operators
