@@ -1,9 +1,9 @@
 #pragma once
 // The command-line program around a scene run, shared by the apps that differ only in
 // their name, description and examples (cell3d, twocell3d): parse the command line, read
-// and validate the deck against validSceneParameters, run it with the standard operator libraries
-// (runScene), report errors (core::runApplication). A program with kernels or summation
-// back-ends of its own passes its OperatorLibraries.
+// and validate the deck against validSceneRunParameters, run it (runScene) with the
+// standard operator libraries, report errors (core::runApplication). A program with
+// kernels or summation back-ends of its own passes its OperatorLibraries.
 #include <capsula/core/Application.hpp>
 #include <capsula/run/OperatorLibraries.hpp>
 
