@@ -1,10 +1,8 @@
 #include "capsula/run/SceneApplication.hpp"
 
+#include "capsula/run/OperatorLibraries.hpp"
 #include "capsula/run/SceneRunDeck.hpp"
 #include "capsula/run/SceneRun.hpp"
-
-#include <capsula/fastsum/SummationParameters.hpp>
-#include <capsula/operators/KernelRegistry.hpp>
 
 #include <string>
 
@@ -12,22 +10,26 @@ namespace capsula::run {
 
 int runSceneApplication(int argc, char** argv, const core::AppDescription& app, int cellsWhenNoneGiven)
 {
+  return runSceneApplication(argc, argv, app, standardOperatorLibraries(), cellsWhenNoneGiven);
+}
+
+int runSceneApplication(int argc, char** argv, const core::AppDescription& app, const OperatorLibraries& libraries,
+                        int cellsWhenNoneGiven)
+{
   const std::string name = app.name;
-  const auto run = [name](core::RunContext& context) {
+  const auto run = [name, &libraries](core::RunContext& context) {
     SceneRunOptions options;
     options.application = name;
     options.deckSource = context.deckName;
     options.outputDirectory = context.options.outputDirectory;
     options.restartDirectory = context.options.restartDirectory;
     options.log = context.out;
-    auto kernels = operators::builtInKernels();
-    kernels.setFarField(fastsum::readFarFieldBackEnd(context.deck->sublist("Operator")));
-    runScene(*context.deck, context.comm, options, kernels);
+    runScene(*context.deck, context.comm, options, kernelsForDeck(libraries, *context.deck));
   };
   return core::runApplication(
       argc, argv, app,
-      [name, cellsWhenNoneGiven](const Teuchos::ParameterList& deck) {
-        return validSceneRunParameters(deck, name, cellsWhenNoneGiven);
+      [name, cellsWhenNoneGiven, &libraries](const Teuchos::ParameterList& deck) {
+        return validSceneRunParameters(deck, name, libraries, cellsWhenNoneGiven);
       },
       run);
 }

@@ -3,7 +3,6 @@
 #include "capsula/run/SceneOutputSettings.hpp"
 
 #include <capsula/core/ParameterDeclaration.hpp>
-#include <capsula/fastsum/SummationParameters.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/scene/SceneParameters.hpp>
 #include <capsula/scene/StiffSolverParameters.hpp>
@@ -14,14 +13,21 @@ namespace capsula::run {
 Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos::ParameterList& deck,
                                                                    const std::string& appName, int cellsWhenNoneGiven)
 {
+  return validSceneRunParameters(deck, appName, standardOperatorLibraries(), cellsWhenNoneGiven);
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos::ParameterList& deck,
+                                                                   const std::string& appName,
+                                                                   const OperatorLibraries& libraries,
+                                                                   int cellsWhenNoneGiven)
+{
   auto valid = Teuchos::rcp(new Teuchos::ParameterList(appName));
   scene::declareSceneParameters(*valid, deck, cellsWhenNoneGiven);
   timeint::declareTimeIntegrationParameters(
       core::declareSublist(*valid, "Time integration", "Time stepping (Section 3.10; docs/stiff-integration.md)."),
       /*stabilityLimitDefault=*/true);
   operators::declareOperatorParameters(*valid);
-  fastsum::declareSummationParameters(core::declareSublist(
-      *valid, "Operator", "The far-field sums of the boundary-integral operators (docs/fastsum.md)."));
+  declareOperatorLibraryParameters(*valid, libraries);
   scene::declareStiffSolverParameters(core::declareSublist(
       valid->sublist("Solver"), "Stiff",
       "The linear solves of the stiff time integrators (Time integration/Method ROS34PW2, ROS2, Auto)."));

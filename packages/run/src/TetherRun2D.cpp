@@ -62,7 +62,7 @@ TetherRun2D::TetherRun2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, con
       tether_(scene2d::readTetherSettings2D(deck.sublist("Tether"))),
       output_(readOutputSettings2D(deck.sublist("Output"))),
       model_(comm, scene2d::readCellSettings2D(deck.sublist("Cell")),
-             scene2d::readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall")),
+             scene2d::readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall"), deck.sublist("Operator")),
              operators::readContourDiscretisation2D(deck.sublist("Discretisation")),
              operators::readSolverParameters(deck.sublist("Solver")))
 {

@@ -12,6 +12,7 @@
 #include <capsula/mesh/MeshQuality.hpp>
 #include <capsula/mesh/NodeRedistribution.hpp>
 #include <capsula/operators/CellSurfaces.hpp>
+#include <capsula/operators/KernelChoice.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 
 #include <algorithm>
@@ -154,9 +155,12 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   // The boundary-integral operator for the kernel the geometry needs.
   operators::CellSurfaces surfaces(cells_, description_.viscosityRatio);
   initialPositions_ = surfaces.positions();
-  const std::string kernel = description_.wall ? "Wall" : "FreeSpace";
-  kernelKey_ = kernel;
-  solver_ = kernels.create(kernel, comm_, std::move(surfaces), discretisation, solverParameters);
+  // Decks of the scene tests carry no "Operator" list: Auto, as in a validated deck.
+  const Teuchos::ParameterList noOperatorList;
+  kernel_ = operators::readKernelChoice(deck.isSublist("Operator") ? deck.sublist("Operator") : noOperatorList,
+                                        kernels.infos(), description_.wall);
+  const std::string& kernel = kernel_.name;
+  solver_ = kernels.create(kernel, comm_, std::move(surfaces), discretisation, solverParameters, kernel_.parameters);
   if (solverParameters.warmStart) {
     warmStart_.emplace();
   }

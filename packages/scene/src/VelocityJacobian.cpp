@@ -55,7 +55,7 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   }
   frozen_ = kernels.create(scene.kernelKey(), scene.comm(),
                            operators::CellSurfaces(std::move(cells), description.viscosityRatio), discretisation,
-                           operators::readSolverParameters(deck.sublist("Solver")));
+                           operators::readSolverParameters(deck.sublist("Solver")), scene.kernelParameters());
   const int numNodes = scene.numNodes();
   map_ = Teuchos::rcp(
       new Tpetra::Map<>(3 * static_cast<Tpetra::global_size_t>(numNodes), 0, scene.comm(), Tpetra::LocallyReplicated));

@@ -38,7 +38,7 @@ std::unique_ptr<elasticity::ElasticMembrane2D> CapsuleModel2D::makeMembrane(cons
 
 CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const CellSettings2D& cell,
                                const FlowSettings2D& flow, const operators::ContourDiscretisation2D& discretisation,
-                               const operators::SolverParameters& solver)
+                               const operators::SolverParameters& solver, operators::KernelRegistry2D kernels)
     : cell_(cell),
       flow_(flow),
       discretisation_(discretisation),
@@ -52,10 +52,19 @@ CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& com
   referenceLength_ = initial.length();
   referenceArea_ = contour::enclosedArea(initial);
   membrane_ = makeMembrane(contour::Contour(freeReference_));
-  velocity_ = operators::makeInterfaceVelocity2D(flow.wall, comm, numberOfNodes(), discretisation, solver);
+  kernels_ = std::move(kernels);
+  velocity_ = makeInterfaceVelocity(comm, numberOfNodes(), discretisation, solver);
   if (solver.warmStart && flow.conditions.viscosityRatio != 1.0) {
     warmStart_.emplace();
   }
+}
+
+std::unique_ptr<operators::InterfaceVelocity2D>
+CapsuleModel2D::makeInterfaceVelocity(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes,
+                                      const operators::ContourDiscretisation2D& discretisation,
+                                      const operators::SolverParameters& solver) const
+{
+  return kernels_.create(flow_.kernel.name, comm, numNodes, discretisation, solver, flow_.kernel.parameters);
 }
 
 void CapsuleModel2D::restoreGmresWarmStart(const std::vector<double>& rightHandSides,

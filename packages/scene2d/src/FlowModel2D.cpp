@@ -27,7 +27,9 @@ void declareWallParameters2D(Teuchos::ParameterList& wall)
                              "false: unbounded shear flow.");
 }
 
-FlowSettings2D readFlowSettings2D(const Teuchos::ParameterList& flow, const Teuchos::ParameterList& wall)
+FlowSettings2D readFlowSettings2D(const Teuchos::ParameterList& flow, const Teuchos::ParameterList& wall,
+                                  const Teuchos::ParameterList& operatorList,
+                                  const operators::KernelRegistry2D& kernels)
 {
   FlowSettings2D s;
   s.conditions.capillaryNumber = flow.get<double>("Capillary number");
@@ -37,6 +39,7 @@ FlowSettings2D readFlowSettings2D(const Teuchos::ParameterList& flow, const Teuc
     s.shearRate = operators::readShearRate(flow.sublist("Shear rate"), "Flow/Shear rate");
   }
   s.wall = wall.get<bool>("Enabled");
+  s.kernel = operators::readKernelChoice(operatorList, kernels.infos(), s.wall);
   return s;
 }
 

@@ -7,15 +7,19 @@
 
 #include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/operators/ContourDiscretisation2D.hpp>
+#include <capsula/operators/KernelChoice.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 
 namespace capsula::scene2d {
 
-void declareModelParameters2D(Teuchos::ParameterList& valid)
+void declareModelParameters2D(Teuchos::ParameterList& valid, const operators::KernelRegistry2D& kernels)
 {
   using core::declareSublist;
   declareFlowParameters2D(declareSublist(valid, "Flow", "The shear flow (thesis eq A.13)."));
   declareWallParameters2D(declareSublist(valid, "Wall", "The plane wall y = 0."));
+  operators::declareKernelParameters(
+      declareSublist(valid, "Operator", "The Green's function of the contour integrals (docs/extending.md)."),
+      kernels.infos());
   declareCellParameters2D(declareSublist(valid, "Cell", "The initial cell contour (thesis Fig. 4.1)."));
   declareTetherParameters2D(declareSublist(valid, "Tether", "The tether procedure (thesis Section 4.1)."));
   operators::declareContourDiscretisation2D(

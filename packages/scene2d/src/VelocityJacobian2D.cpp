@@ -48,8 +48,8 @@ VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP
     discretisation.gaussLegendrePoints = settings_.gaussLegendrePoints;
   }
   const int n = model.numberOfNodes();
-  velocity_ = operators::makeInterfaceVelocity2D(model.flow().wall, comm, n, discretisation,
-                                                 operators::readSolverParameters(deck.sublist("Solver")));
+  velocity_ =
+      model.makeInterfaceVelocity(comm, n, discretisation, operators::readSolverParameters(deck.sublist("Solver")));
   map_ = Teuchos::rcp(new Tpetra::Map<>(2 * static_cast<Tpetra::global_size_t>(n), 0, comm, Tpetra::LocallyReplicated));
   if (settings_.preconditioner != StiffPreconditioner2D::None) {
     preconditioner_ = Teuchos::rcp(new StagePreconditioner2D(map_));

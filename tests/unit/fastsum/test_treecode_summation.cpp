@@ -4,7 +4,7 @@
 // corrections are the same in both), the deck keys select the back-end, and a kernel the
 // back-end does not support is refused naming the key.
 #include <capsula/core/Error.hpp>
-#include <capsula/fastsum/SummationParameters.hpp>
+#include <capsula/fastsum/TreecodeRegistration.hpp>
 #include <capsula/fastsum/TreecodeBackEnd.hpp>
 #include <capsula/fastsum/TreecodeSummation.hpp>
 #include <capsula/operators/ContractedKernels.hpp>
@@ -195,24 +195,40 @@ TEST(TreecodeSummation, UnsupportedKernelIsRefusedNamingTheKey)
   }
 }
 
-TEST(SummationParameters, DeckSelectsTheBackEnd)
+TEST(SummationParameters, DeckSelectsTheBackEndFromTheRegistry)
 {
+  operators::SummationRegistry summations = operators::builtInSummations();
+  fastsum::registerTreecodeSummation(summations);
+  EXPECT_EQ(summations.names(), (std::vector<std::string>{"Direct", "Treecode"}));
   Teuchos::ParameterList valid("Operator");
-  fastsum::declareSummationParameters(valid);
+  operators::declareSummationParameters(valid, summations);
   Teuchos::ParameterList deck("Operator");
   deck.validateParametersAndSetDefaults(valid);
-  EXPECT_EQ(fastsum::readFarFieldBackEnd(deck), nullptr); // Direct by default
+  EXPECT_EQ(deck.get<std::string>("Summation"), "Direct");
+  EXPECT_EQ(deck.sublist("Treecode").get<double>("Tolerance"), 1e-5);
+  EXPECT_EQ(operators::readFarFieldBackEnd(deck, summations), nullptr); // Direct by default
 
   deck.set("Summation", "Treecode");
   deck.sublist("Treecode").set("Tolerance", 1e-3);
   deck.validateParametersAndSetDefaults(valid);
-  const auto backEnd = fastsum::readFarFieldBackEnd(deck);
+  const auto backEnd = operators::readFarFieldBackEnd(deck, summations);
   ASSERT_NE(backEnd, nullptr);
   EXPECT_EQ(backEnd->name(), "Treecode");
   const auto& parameters = dynamic_cast<const fastsum::TreecodeBackEnd&>(*backEnd).parameters();
   EXPECT_EQ(parameters.degree, fastsum::treecodeParametersForTolerance(1e-3).degree);
+  EXPECT_EQ(parameters.leafSize, fastsum::TreecodeParameters().leafSize);
 
   Teuchos::ParameterList wrong("Operator");
   wrong.set("Summation", "FMM");
   EXPECT_ANY_THROW(wrong.validateParametersAndSetDefaults(valid));
+  // Unvalidated, the registry itself names what there is.
+  try {
+    operators::readFarFieldBackEnd(wrong, summations);
+    FAIL() << "an unknown summation was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no summation back-end named 'FMM'; registered: Direct, Treecode."),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(fastsum::registerTreecodeSummation(summations), core::InputError); // taken
 }

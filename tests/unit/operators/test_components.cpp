@@ -344,6 +344,10 @@ TEST(KernelRegistry, BuiltInsAndUnknownNames)
   }
   KernelRegistry copy = registry;
   EXPECT_THROW(copy.add("Wall", "again", solverFactory<Wall3DKernel>()), core::InputError);
+  // "Auto" is the deck's automatic choice (KernelChoice.hpp), never a kernel.
+  EXPECT_THROW(copy.add("Auto", "automatic", solverFactory<FreeSpace3DKernel>()), core::InputError);
+  EXPECT_EQ(registry.infos().at("Wall").domain, FluidDomain::AboveWall);
+  EXPECT_EQ(registry.infos().at("FreeSpace").domain, FluidDomain::Unbounded);
 }
 
 TEST(CellSurfaces, NumbersCellsConsecutivelyAndRejectsBadRatios)

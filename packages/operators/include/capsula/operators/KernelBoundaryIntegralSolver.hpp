@@ -66,12 +66,13 @@ private:
   Teuchos::RCP<Teuchos::Time> singleLayerTimer_, solveTimer_, flowTimer_;
 };
 
-/// The factory a KernelRegistry stores for `Kernel`.
+/// The factory a KernelRegistry stores for `Kernel` (a policy has no settings of its own).
 template <class Kernel>
 SolverFactory solverFactory()
 {
   return [](const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
-            const DiscretisationParameters& discretisation, const SolverParameters& solver) {
+            const DiscretisationParameters& discretisation, const SolverParameters& solver,
+            const Teuchos::ParameterList& /*kernelParameters*/) {
     return std::unique_ptr<BoundaryIntegralSolver>(
         new KernelBoundaryIntegralSolver<Kernel>(comm, std::move(surfaces), discretisation, solver));
   };

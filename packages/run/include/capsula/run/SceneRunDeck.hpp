@@ -4,8 +4,11 @@
 //   Flow, Wall, Cells          scene/SceneParameters.hpp
 //   Time integration           timeint/TimeIntegrationParameters.hpp
 //   Discretisation, Solver     operators/OperatorParameters.hpp
+//   Operator                   OperatorLibraries.hpp (the registries' kernels and back-ends)
 //   Mesh regularisation, Mesh adaption   scene/SceneParameters.hpp (capsula::mesh)
 //   Output                     SceneOutputSettings.hpp
+#include <capsula/run/OperatorLibraries.hpp>
+
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
@@ -14,7 +17,14 @@
 namespace capsula::run {
 
 /// The complete valid parameter list for `deck` (one "Cells/Cell k" sublist for every one
-/// the deck has, `cellsWhenNoneGiven` for a deck without cells), named `appName`.
+/// the deck has, `cellsWhenNoneGiven` for a deck without cells), named `appName`, with
+/// the kernels and summation back-ends of `libraries`.
+Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos::ParameterList& deck,
+                                                                   const std::string& appName,
+                                                                   const OperatorLibraries& libraries,
+                                                                   int cellsWhenNoneGiven = 1);
+
+/// The same with standardOperatorLibraries().
 Teuchos::RCP<const Teuchos::ParameterList>
 validSceneRunParameters(const Teuchos::ParameterList& deck, const std::string& appName, int cellsWhenNoneGiven = 1);
 

@@ -3,7 +3,8 @@
 // validated deck. Building decides which terms exist, and only those are created:
 //   - one membrane law per cell (NeoHookean or Skalak), with a prestressed reference
 //     shape only where Prestress > 0;
-//   - the free-space or the wall Green's function (from an operators::KernelRegistry);
+//   - the Green's function 'Operator/Kernel' names, by default free space or the wall
+//     (from an operators::KernelRegistry);
 //   - the double layer and the GMRES solve only if the viscosity ratio is not 1 (the
 //     operators skip both when every lambda = 1);
 //   - the fixed-height stage constraint only if some cell asks for it.
@@ -19,6 +20,7 @@
 #include <capsula/elasticity/MembraneMechanics.hpp>
 #include <capsula/mesh/SurfaceMesh.hpp>
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
+#include <capsula/operators/KernelChoice.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/operators/LinearFlow.hpp>
 #include <capsula/operators/WarmStartHistory.hpp>
@@ -70,8 +72,9 @@ struct MeshRegularisation {
 
 class Scene {
 public:
-  /// Builds the scene `description` asks for; `deck` supplies the "Discretisation" and
-  /// "Solver" sublists, `kernels` the Green's functions by name ("FreeSpace", "Wall").
+  /// Builds the scene `description` asks for; `deck` supplies the "Discretisation",
+  /// "Solver" and "Operator" sublists, `kernels` the Green's function 'Operator/Kernel'
+  /// names (KernelChoice.hpp; a deck without "Operator": Auto).
   /// Throws core::InputError for cells crossing the wall or overlapping, and for
   /// settings the deck validators cannot check.
   Scene(const SceneDescription& description, const Teuchos::ParameterList& deck,
@@ -100,8 +103,11 @@ public:
   /// The same at time t: u_inf = (k(t) y, 0, 0) ('Flow/Shear rate', operators/ShearRate.hpp).
   operators::FlowConditions flowAt(double t) const;
   std::string kernelName() const { return solver_->kernelName(); }
-  /// The name the kernel registry knows the Green's function by ("Wall", "FreeSpace").
-  const std::string& kernelKey() const { return kernelKey_; }
+  /// The name the kernel registry knows the Green's function by ("Wall", "FreeSpace"):
+  /// 'Operator/Kernel', Auto resolved.
+  const std::string& kernelKey() const { return kernel_.name; }
+  /// The kernel's own settings ('Operator/<kernelKey()>'; empty for the built-in kernels).
+  const Teuchos::ParameterList& kernelParameters() const { return kernel_.parameters; }
 
   /// The positions of all nodes the scene was built with (the state at t = 0, or where an
   /// adaption or a restart rebuilt it).
@@ -180,7 +186,7 @@ private:
   std::vector<double> loadDensity_;
   std::vector<std::vector<double>> contactForces_; // per cell, with 'Contact/Enabled' only
   std::vector<std::string> terms_;
-  std::string kernelKey_;
+  operators::KernelChoice kernel_;
   std::optional<operators::WarmStartHistory> warmStart_; // with 'Solver/Warm start'
   Teuchos::RCP<Teuchos::Time> membraneTimer_, velocityTimer_, constraintTimer_;
 };

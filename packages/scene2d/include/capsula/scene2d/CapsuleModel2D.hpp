@@ -24,6 +24,7 @@
 #include <capsula/io/CheckpointSection.hpp>
 #include <capsula/operators/ContourDiscretisation2D.hpp>
 #include <capsula/operators/InterfaceVelocity2D.hpp>
+#include <capsula/operators/KernelRegistry2D.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 
 #include <Eigen/Core>
@@ -41,7 +42,8 @@ class CapsuleModel2D final : public io::CheckpointSection {
 public:
   CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const CellSettings2D& cell,
                  const FlowSettings2D& flow, const operators::ContourDiscretisation2D& discretisation,
-                 const operators::SolverParameters& solver);
+                 const operators::SolverParameters& solver,
+                 operators::KernelRegistry2D kernels = operators::builtInKernels2D());
 
   int numberOfNodes() const { return static_cast<int>(referenceNodes_.cols()); }
   const CellSettings2D& cell() const { return cell_; }
@@ -50,6 +52,12 @@ public:
   operators::FlowConditions2D flowAt(double t) const;
   const operators::ContourDiscretisation2D& discretisation() const { return discretisation_; }
   std::string kernelName() const { return velocity_->kernelName(); }
+  /// An evaluator of the model's Green's function (FlowSettings2D::kernel) for contours of
+  /// `numNodes` nodes, e.g. the stiff solver's on a frozen contour.
+  std::unique_ptr<operators::InterfaceVelocity2D>
+  makeInterfaceVelocity(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes,
+                        const operators::ContourDiscretisation2D& discretisation,
+                        const operators::SolverParameters& solver) const;
   /// The terms built, one line each (the run log and summary.json print them).
   std::vector<std::string> terms() const;
 
@@ -124,6 +132,7 @@ private:
   Eigen::Matrix2Xd freeReference_;
   bool freeRegridded_ = false;
   std::unique_ptr<elasticity::ElasticMembrane2D> membrane_;
+  operators::KernelRegistry2D kernels_;
   std::unique_ptr<operators::InterfaceVelocity2D> velocity_;
   std::optional<operators::WarmStartHistory> warmStart_;
   int lastIterations_ = 0;

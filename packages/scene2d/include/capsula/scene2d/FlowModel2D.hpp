@@ -1,8 +1,11 @@
 #pragma once
 // What drives the 2D cell: the shear flow (Flow/Capillary number, Flow/Viscosity ratio,
 // Flow/Shear rate: k(t) over its mean, operators/ShearRate.hpp) and whether the wall y = 0 bounds it (Wall/Enabled: Blake's 2D Green's function, thesis
-// App. B.1, or free space). Dimensionless as in the thesis: u_inf = (y, 0), time in 1/k.
+// App. B.1, or free space), and the Green's function that describes it ('Operator/Kernel',
+// operators/KernelChoice.hpp: Auto follows Wall/Enabled). Dimensionless as in the thesis: u_inf = (y, 0), time in 1/k.
 #include <capsula/operators/InterfaceVelocity2D.hpp>
+#include <capsula/operators/KernelChoice.hpp>
+#include <capsula/operators/KernelRegistry2D.hpp>
 #include <capsula/operators/ShearRate.hpp>
 
 #include <Teuchos_ParameterList.hpp>
@@ -13,6 +16,7 @@ struct FlowSettings2D {
   operators::FlowConditions2D conditions; ///< Ca, lambda, u_inf = (y, 0) at the mean shear rate
   operators::ShearRate shearRate;         ///< k(t) over its mean: u_inf = (k(t) y, 0) at time t
   bool wall = true;
+  operators::KernelChoice kernel{"Wall", {}}; ///< the registry name (Auto resolved) and settings
 };
 
 /// Declares Capillary number, Viscosity ratio and the Shear rate sublist in `flow`.
@@ -20,7 +24,11 @@ void declareFlowParameters2D(Teuchos::ParameterList& flow);
 /// Declares Enabled in `wall`.
 void declareWallParameters2D(Teuchos::ParameterList& wall);
 
-/// Reads the validated "Flow" and "Wall" sublists.
-FlowSettings2D readFlowSettings2D(const Teuchos::ParameterList& flow, const Teuchos::ParameterList& wall);
+/// Reads the validated "Flow", "Wall" and "Operator" sublists; the kernel is one of
+/// `kernels` (an "Operator" list without 'Kernel': Auto). Throws core::InputError for an
+/// unknown kernel or one for the other fluid domain (KernelChoice.hpp).
+FlowSettings2D readFlowSettings2D(const Teuchos::ParameterList& flow, const Teuchos::ParameterList& wall,
+                                  const Teuchos::ParameterList& operatorList = {},
+                                  const operators::KernelRegistry2D& kernels = operators::builtInKernels2D());
 
 } // namespace capsula::scene2d

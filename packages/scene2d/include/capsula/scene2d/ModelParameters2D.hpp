@@ -1,17 +1,22 @@
 #pragma once
 // The deck keys of the 2D tethered-cell model, declared by the components that read them:
 //   Flow, Wall                 FlowModel2D.hpp
+//   Operator                   operators/KernelChoice.hpp (Kernel, from a KernelRegistry2D)
 //   Cell                       CellContour2D.hpp
 //   Tether                     TetherProcedure2D.hpp
 //   Discretisation             operators/ContourDiscretisation2D.hpp
 //   Solver                     operators/OperatorParameters.hpp (GMRES, lambda != 1)
 // The run adds Time integration and Output (run/Tether2DDeck.hpp assembles the deck of
 // tether2d).
+#include <capsula/operators/KernelRegistry2D.hpp>
+
 #include <Teuchos_ParameterList.hpp>
 
 namespace capsula::scene2d {
 
-/// Declares the sublists above in `valid`, in that order.
-void declareModelParameters2D(Teuchos::ParameterList& valid);
+/// Declares the sublists above in `valid`, in that order; 'Operator/Kernel' chooses among
+/// `kernels`.
+void declareModelParameters2D(Teuchos::ParameterList& valid,
+                              const operators::KernelRegistry2D& kernels = operators::builtInKernels2D());
 
 } // namespace capsula::scene2d

@@ -1,0 +1,39 @@
+#include "capsula/fastsum/TreecodeRegistration.hpp"
+
+#include "capsula/fastsum/TreecodeBackEnd.hpp"
+
+#include <capsula/core/ParameterDeclaration.hpp>
+
+namespace capsula::fastsum {
+
+Teuchos::RCP<const Teuchos::ParameterList> validTreecodeParameters()
+{
+  auto treecode = Teuchos::rcp(new Teuchos::ParameterList("Treecode"));
+  const TreecodeParameters defaults;
+  core::declareReal(*treecode, "Tolerance", 1e-5,
+                    "Relative error (2-norm over the targets) allowed in the regular sums; sets the "
+                    "interpolation degree and the acceptance parameter theta from a measured table "
+                    "(docs/fastsum.md). 1e-5 keeps it below the discretisation error at level 3 "
+                    "(~1e-4).",
+                    core::atLeast(1e-7), core::atMost(1e-1));
+  core::declareInt(*treecode, "Leaf size", defaults.leafSize,
+                   "Most quadrature points in a leaf cluster of the source tree; smaller leaves mean "
+                   "more proxy interactions and fewer direct ones. Only the speed depends on it.",
+                   1, 100000);
+  return treecode;
+}
+
+void registerTreecodeSummation(operators::SummationRegistry& summations)
+{
+  summations.add(
+      "Treecode",
+      "a barycentric Lagrange treecode (Wang, Tlupova & Krasny 2020) to 'Operator/Treecode/Tolerance', O(M log N).",
+      [](const Teuchos::ParameterList& treecode) -> std::shared_ptr<const operators::FarFieldBackEnd> {
+        TreecodeParameters parameters = treecodeParametersForTolerance(treecode.get<double>("Tolerance"));
+        parameters.leafSize = treecode.get<int>("Leaf size");
+        return std::make_shared<TreecodeBackEnd>(parameters);
+      },
+      validTreecodeParameters());
+}
+
+} // namespace capsula::fastsum
