@@ -52,10 +52,6 @@ std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMes
   return line.str();
 }
 
-} // namespace
-
-namespace {
-
 // The cells' surfaces as the deck describes them (the state at t = 0), clear of the wall.
 std::vector<mesh::SurfaceMesh> initialSurfaces(const SceneDescription& description)
 {
@@ -141,25 +137,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     terms_.push_back(describeMembrane(cell, surface));
   }
 
-  if (description_.contact.enabled || description_.adhesion.enabled) {
-    for (const mesh::SurfaceMesh& cell : cells_) {
-      externalForces_.emplace_back(3 * static_cast<std::size_t>(cell.numNodes()), 0.0);
-    }
-  }
-  if (description_.adhesion.enabled) {
-    std::vector<std::vector<double>> unstressed;
-    for (const auto& membrane : membranes_) {
-      unstressed.push_back(membrane->referencePositions());
-    }
-    bonds_.emplace(description_.adhesion, cells_, unstressed);
-    terms_.push_back(bonds_->describe());
-  }
-  if (description_.contact.enabled) {
-    std::ostringstream line;
-    line << "contact repulsion (" << (description_.wall ? "wall and " : "") << "cells): range "
-         << description_.contact.range << " a, strength " << description_.contact.strength << " G/a";
-    terms_.push_back(line.str());
-  }
+  buildExternalForces();
 
   // The boundary-integral operator for the kernel the geometry needs.
   operators::CellSurfaces surfaces(cells_, description_.viscosityRatio);
@@ -348,6 +326,30 @@ void Scene::setReferencePositions(int c, std::vector<double> reference)
 {
   auto& membrane = membranes_[static_cast<std::size_t>(c)];
   membrane = std::make_unique<elasticity::MembraneMechanics>(membrane->withReference(std::move(reference)));
+}
+
+// The forces from outside the membranes, only those the deck enables: storage, the bonds, terms.
+void Scene::buildExternalForces()
+{
+  if (description_.contact.enabled || description_.adhesion.enabled) {
+    for (const mesh::SurfaceMesh& cell : cells_) {
+      externalForces_.emplace_back(3 * static_cast<std::size_t>(cell.numNodes()), 0.0);
+    }
+  }
+  if (description_.adhesion.enabled) {
+    std::vector<std::vector<double>> unstressed;
+    for (const auto& membrane : membranes_) {
+      unstressed.push_back(membrane->referencePositions());
+    }
+    bonds_.emplace(description_.adhesion, cells_, unstressed);
+    terms_.push_back(bonds_->describe());
+  }
+  if (description_.contact.enabled) {
+    std::ostringstream line;
+    line << "contact repulsion (" << (description_.wall ? "wall and " : "") << "cells): range "
+         << description_.contact.range << " a, strength " << description_.contact.strength << " G/a";
+    terms_.push_back(line.str());
+  }
 }
 
 void Scene::computeExternalForces()

@@ -184,6 +184,7 @@ public:
 
 private:
   void computeLoads(double t, elasticity::MembraneEvaluation what);
+  void buildExternalForces();
   void computeExternalForces();
   std::string nonFiniteCause(double t) const;
 
