@@ -110,6 +110,49 @@ set_tests_properties(regression_cell3d_restart_snapshots PROPERTIES
 add_test(NAME regression_cell3d_snapshot_count COMMAND check_snapshots count ${_out}/two_ranks/snapshots.h5 2)
 set_tests_properties(regression_cell3d_snapshot_count PROPERTIES FIXTURES_REQUIRED cell3d_ranks LABELS "mpi;regression")
 
+# Adhesion (input/cell3d/adhesion): the capsule above the ligand wall, RK4 steps of 0.01 to
+# t = 0.2 on 2 ranks, on 1 rank, and on 2 ranks stopped at t = 0.1 and restarted. Goldens
+# (measured; 39 bonds at t = 0.2): the tolerance of the others, 1e-8, and `bonds`, a count,
+# exactly. The bonds are stochastic but drawn per (seed, cell, receptor, step), so they do
+# not depend on the ranks: the 1-rank run agrees with the 2-rank one to round-off (1e-12, as
+# regression_cell3d_ranks_agree; a single bond more or less would change `bonds` by 1 and
+# `bond_force` by ~0.1), the restart to the bit (tolerance 0).
+set(_adhesion_deck ${_decks}/adhesion/sphere-ligand-wall.xml)
+set(_adhesion_run --set "Time integration/Method=RK4" --set "Time integration/Initial step=0.01"
+    --set "Output/Interval=0.1")
+cell3d_regression(adhesion adhesion/sphere-ligand-wall.xml 0.01 0.2
+  bonds=39:0 bond_force=5.182371498155052:1e-8 bond_force_y=-5.16823076864946:1e-8 y_c=1.0287367322142886:1e-8
+  min_gap=0.025785960044121963:1e-8 contact_area=0.16226920323315103:1e-8)
+add_test(NAME regression_cell3d_adhesion_one_rank
+  COMMAND cell3d ${_adhesion_deck} --output ${_out}/adhesion_one_rank ${_adhesion_run}
+          --set "Time integration/End time=0.2")
+set_tests_properties(regression_cell3d_adhesion_one_rank PROPERTIES
+  FIXTURES_SETUP cell3d_adhesion_one_rank LABELS "mpi;regression")
+add_test(NAME regression_cell3d_adhesion_ranks_agree
+  COMMAND check_metrics same ${_out}/adhesion_one_rank/metrics.csv ${_out}/adhesion_two_ranks/metrics.csv 1e-12)
+set_tests_properties(regression_cell3d_adhesion_ranks_agree PROPERTIES
+  FIXTURES_REQUIRED "cell3d_adhesion_one_rank;cell3d_adhesion_two_ranks" LABELS "mpi;regression")
+capsula_add_mpi_command_test(regression_cell3d_adhesion_two_ranks
+  COMMAND $<TARGET_FILE:cell3d> ${_adhesion_deck} --output ${_out}/adhesion_two_ranks ${_adhesion_run}
+          --set "Time integration/End time=0.2"
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_cell3d_adhesion_two_ranks PROPERTIES FIXTURES_SETUP cell3d_adhesion_two_ranks)
+capsula_add_mpi_command_test(regression_cell3d_adhesion_first_half
+  COMMAND $<TARGET_FILE:cell3d> ${_adhesion_deck} --output ${_out}/adhesion_restarted ${_adhesion_run}
+          --set "Time integration/End time=0.1"
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_cell3d_adhesion_first_half PROPERTIES FIXTURES_SETUP cell3d_adhesion_half)
+capsula_add_mpi_command_test(regression_cell3d_adhesion_second_half
+  COMMAND $<TARGET_FILE:cell3d> ${_adhesion_deck} --restart ${_out}/adhesion_restarted ${_adhesion_run}
+          --set "Time integration/End time=0.2"
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_cell3d_adhesion_second_half PROPERTIES
+  FIXTURES_REQUIRED cell3d_adhesion_half FIXTURES_SETUP cell3d_adhesion_restart)
+add_test(NAME regression_cell3d_adhesion_restart_reproduces
+  COMMAND check_metrics same ${_out}/adhesion_two_ranks/metrics.csv ${_out}/adhesion_restarted/metrics.csv 0)
+set_tests_properties(regression_cell3d_adhesion_restart_reproduces PROPERTIES
+  FIXTURES_REQUIRED "cell3d_adhesion_restart;cell3d_adhesion_two_ranks" LABELS "mpi;regression")
+
 # Inputs that must stop before any work, naming the cause (label app).
 function(cell3d_rejects name expected)
   add_test(NAME app_cell3d_rejects_${name} COMMAND cell3d ${ARGN})
@@ -130,6 +173,12 @@ cell3d_rejects(mesh_level_out_of_range "'Cells/Cell 0/Mesh level' = 6 is invalid
   ${_demo} --set "Cells/Cell 0/Mesh level=6")
 cell3d_rejects(overlapping_cells "'Cells/Cell 0' and 'Cells/Cell 1' overlap"
   ${CMAKE_CURRENT_SOURCE_DIR}/decks/overlapping-cells.xml --output ${_out}/rejected)
+cell3d_rejects(adhesion_without_wall "'Adhesion/Enabled' is true but 'Wall/Enabled' is false"
+  ${_decks}/adhesion/sphere-ligand-wall.xml --output ${_out}/rejected --set "Wall/Enabled=false")
+cell3d_rejects(adhesion_without_spring "'Adhesion/Spring constant' = 0 with adhesion enabled"
+  ${_decks}/adhesion/sphere-ligand-wall.xml --output ${_out}/rejected --set "Adhesion/Spring constant=0")
+cell3d_rejects(adhesion_negative_density "'Adhesion/Receptor density' = -1 is invalid"
+  ${_decks}/adhesion/sphere-ligand-wall.xml --output ${_out}/rejected --set "Adhesion/Receptor density=-1")
 cell3d_rejects(unwritable_output_directory "The output directory '.*CMakeLists.txt/out' cannot be used"
   ${_decks}/demo.xml --output ${CMAKE_CURRENT_SOURCE_DIR}/CMakeLists.txt/out ${_level1})
 

@@ -21,6 +21,7 @@ def g(x):
 #   unbounded/     the same cells in unbounded shear (top rows of Figs 5.5, 5.6, 5.9)
 #   validation/    free shear against Lac et al. (2004) and Lac & Barthes-Biesel (2005); a nearly
 #                  rigid capsule against Goldman, Cox & Brenner (1967)
+#   adhesion/      a level-1 capsule released 0.03 a above a ligand-coated wall, stochastic bonds
 # The thesis used mesh level 3 (1280 elements), N_Q = 7 and RKF45; its eps = 1e-10 is replaced
 # by 1e-6 (positions in cell radii: a millionth of a radius per step, far below the mesh error).
 # Runs end at t = 15, where the thesis reports mesh degradation, or at steady shape.
@@ -28,7 +29,7 @@ def g(x):
 def cell3d_deck(path, comment, *, ca, height, wall="true", law="Skalak", c="2.5", prestress="0.0",
                 fixed="false", level="3", end="15", tolerance="1e-6", steady="0", interval="0.1",
                 wall_stress="true", stride="10", near_singular="1", directory=None, spacing="0.25",
-                lam="1.0", method="RKF45", shape=()):
+                lam="1.0", method="RKF45", shape=(), extra=()):
     directory = directory or f"out/cell3d/{os.path.basename(os.path.dirname(path))}/" \
                              f"{os.path.splitext(os.path.basename(path))[0]}"
     cell = "Cells/Cell 0/"
@@ -48,6 +49,7 @@ def cell3d_deck(path, comment, *, ca, height, wall="true", law="Skalak", c="2.5"
         ("Output/Directory", directory), ("Output/Interval", interval), ("Output/Snapshot stride", stride),
         (wss + "Enabled", wall_stress), (wss + "Upstream extent", "6.0"), (wss + "Downstream extent", "6.0"),
         (wss + "Half width", "4.0"), (wss + "Spacing", spacing), (wss + "Threshold", "1.05"),
+        *extra,
     ])
 
 
@@ -225,6 +227,25 @@ def cell3d():
                 f"     lambda = {lam}, {where}.",
                 ca=ca, lam=lam, c="10", shape=red, directory=f"out/cell3d/red-cell/{setting}/Ca{ca}-lambda{lam}",
                 **placement, **study)
+
+
+    # Adhesion (docs/cell3d.md, "Adhesion"): a level-1 sphere released 0.03 a above a wall
+    # coated with ligands everywhere, Ca = 0.3, Skalak C = 2.5; stochastic Bell slip bonds,
+    # 200 receptors per a^2, k_on0 n_L = 100 k, k_off0 = k, k_B T = 4e-3 G a^2 (a bond formed
+    # 0.02 a stretched keeps exp(-0.5) of the on-rate), gamma = 0.01 a (a bond stretched by
+    # 0.1 a breaks 12 times faster); the contact repulsion within 0.03 a. A short run to t = 2,
+    # outputs every 0.1, no wall stress map.
+    adhesion = "Adhesion/"
+    yield cell3d_deck(
+        f"{root}/adhesion/sphere-ligand-wall.xml",
+        "Adhesion: a Skalak capsule (C = 2.5, Ca = 0.3, level 1) released 0.03 a above a ligand-coated\n"
+        "     wall; stochastic Bell slip bonds form within 0.05 a of the wall, slow it down and break.",
+        ca="0.3", height="1.03", level="1", end="2", tolerance="1e-4", wall_stress="false", stride="5",
+        extra=[("Contact/Enabled", "true"), ("Contact/Range", "0.03"), (adhesion + "Enabled", "true"),
+               (adhesion + "Receptor density", "200"), (adhesion + "On-rate", "1.0"),
+               (adhesion + "Off-rate", "1.0"), (adhesion + "Reactive compliance", "1e-2"),
+               (adhesion + "Thermal energy", "4e-3"), (adhesion + "Kinetics", "Stochastic"),
+               (adhesion + "Seed", "1")])
 
 
 # --- twocell3d: thesis Chapter 6, Section 6.1 ------------------------------------------------

@@ -90,9 +90,35 @@ std::vector<double> stabilityValues(const CellSample& s)
           s.stability.wallGapPerElementSize, s.stability.maxDistortion};
 }
 
-} // namespace
+// The adhesion of one cell (adhesion/AdhesionOutputs.hpp), in the order of adhesionValues;
+// the last columns of every table.
+const std::vector<std::string>& adhesionMetricNames()
+{
+  static const std::vector<std::string> names{"bonds",        "bond_force",   "bond_force_x",
+                                              "bond_force_y", "contact_area", "min_gap"};
+  return names;
+}
 
-std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange)
+std::vector<double> adhesionValues(const adhesion::AdhesionSummary& a)
+{
+  return {a.bonds, a.bondForce.norm(), a.bondForce[0], a.bondForce[1], a.contactArea, a.minimumGap};
+}
+
+// Appends `names`: as they are for one cell, NAME_c for every cell of several.
+void appendPerCell(std::vector<std::string>& columns, const std::vector<std::string>& names, int numCells)
+{
+  for (const auto& name : names) {
+    if (numCells <= 1) {
+      columns.push_back(name);
+      continue;
+    }
+    for (int c = 0; c < numCells; ++c) {
+      columns.push_back(name + "_" + std::to_string(c));
+    }
+  }
+}
+
+std::vector<std::string> columnsWithoutAdhesion(bool wallShearStress, int numCells, bool isolatedRange)
 {
   if (numCells <= 1) {
     const auto& names = cellMetricNames();
@@ -136,6 +162,17 @@ std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool
     for (int j = i + 1; j < numCells; ++j) {
       columns.push_back("gap_per_h_" + std::to_string(i) + "_" + std::to_string(j));
     }
+  }
+  return columns;
+}
+
+} // namespace
+
+std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange, bool adhesion)
+{
+  std::vector<std::string> columns = columnsWithoutAdhesion(wallShearStress, numCells, isolatedRange);
+  if (adhesion) {
+    appendPerCell(columns, adhesionMetricNames(), numCells);
   }
   return columns;
 }
@@ -184,6 +221,13 @@ std::vector<double> metricsRow(double time, std::int64_t acceptedSteps, double l
     }
     for (const auto& pair : pairs) {
       row.push_back(pair.gapPerElementSize);
+    }
+  }
+  if (samples.front().adhesion) { // metric by metric, cell by cell, as appendPerCell names them
+    for (std::size_t m = 0; m < adhesionMetricNames().size(); ++m) {
+      for (const auto& s : samples) {
+        row.push_back(adhesionValues(*s.adhesion)[m]);
+      }
     }
   }
   return row;

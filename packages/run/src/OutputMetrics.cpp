@@ -62,6 +62,9 @@ std::vector<CellSample> OutputMetrics::record(double t, const scene::Scene& scen
     s.gmresIterations = fields.gmresIterations;
     s.shearRate = scene.description().shearRate.factor(t);
     s.stability = measureStability(cell, scene.membrane(c));
+    if (scene.hasBonds()) {
+      s.adhesion = scene.bonds().summary(c, cell, cell.positionData());
+    }
 
     auto& history = centroids_[static_cast<std::size_t>(c)];
     for (int d = 0; d < 3; ++d) {

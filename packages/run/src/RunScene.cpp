@@ -27,11 +27,27 @@ void RunScene::build()
   }
 }
 
-timeint::ObserverVerdict RunScene::afterStep(timeint::IntegrationState& state, const timeint::StepReport&, bool)
+timeint::ObserverVerdict RunScene::afterStep(timeint::IntegrationState& state, const timeint::StepReport& report, bool)
 {
   regulariseMeshes(state);
   adaptMeshes(state);
+  updateBonds(state, report.stepSize);
   return timeint::ObserverVerdict::Continue;
+}
+
+void RunScene::updateBonds(timeint::IntegrationState& state, double step)
+{
+  if (!scene_->hasBonds()) {
+    return;
+  }
+  {
+    Teuchos::TimeMonitor guard(*core::timer("Bond kinetics"));
+    // Numbered by the accepted steps so far: the same number after a restart.
+    scene_->updateBonds(state.y, step, static_cast<std::uint64_t>(state.statistics.acceptedSteps));
+  }
+  // The positions did not move, so the stability limit still holds (it is estimated again
+  // every 'Stability interval' steps anyway); only the slope of the old bond set is stale.
+  state.firstStageDerivative.clear();
 }
 
 void RunScene::regulariseMeshes(timeint::IntegrationState& state)
@@ -98,6 +114,11 @@ void RunScene::save(io::Checkpoint& checkpoint) const
     checkpoint.arrays["scene.gmresWarmStart.rhs"] = warm->rightHandSides();
     checkpoint.arrays["scene.gmresWarmStart.solutions"] = warm->solutions();
   }
+  if (scene_->hasBonds()) { // which receptor is bound, and where its ligand is
+    for (int c = 0; c < scene_->numCells(); ++c) {
+      checkpoint.arrays["scene.bonds." + std::to_string(c)] = scene_->bonds().states(c);
+    }
+  }
   if (!scene_->regularisesMeshes() && !scene_->adaptsMeshes()) {
     return;
   }
@@ -129,6 +150,15 @@ void RunScene::load(const io::Checkpoint& checkpoint, const std::string& source)
   const auto* solutions = io::optionalArray(checkpoint, "scene.gmresWarmStart.solutions");
   if (rhs && solutions) { // lambda != 1: the next solve starts where the interrupted run's would
     scene_->restoreGmresWarmStart(*rhs, *solutions);
+  }
+  if (scene_->hasBonds()) {
+    for (int c = 0; c < scene_->numCells(); ++c) {
+      const std::string name = "scene.bonds." + std::to_string(c);
+      const auto* states = io::optionalArray(checkpoint, name);
+      core::require<core::InputError>(states != nullptr, "The checkpoint '", source, "' lacks '", name,
+                                      "': it was written without 'Adhesion'.");
+      scene_->bonds().restoreStates(c, *states, source);
+    }
   }
   const auto count = [&](const char* name) {
     const auto it = checkpoint.integers.find(name);

@@ -1,6 +1,7 @@
 #include "capsula/run/SceneOutputs.hpp"
 
 #include "capsula/run/MetricsTable.hpp"
+#include "capsula/run/RollingStatistics.hpp"
 #include "capsula/run/SceneSnapshot.hpp"
 #include "capsula/run/SummaryJson.hpp"
 
@@ -21,6 +22,11 @@ using mesh::Vec3;
 namespace {
 
 constexpr const char* kSnapshotBase = "snapshots"; // snapshots.h5 + snapshots.xdmf
+
+// An adhering cell slower than this along the flow (a k: a hundredth of the undisturbed flow
+// one radius above the wall) counts as paused (RollingStatistics.hpp); a free cell near the
+// wall moves at ~0.5 a k, a firmly adhered one at ~0.
+constexpr double kPauseVelocity = 0.01;
 
 std::vector<std::string> probeColumns(std::size_t probes)
 {
@@ -75,8 +81,10 @@ std::vector<std::string> SceneOutputs::terms() const
 void SceneOutputs::open(std::optional<double> resumeAfter)
 {
   const auto& wall = settings_.wallShearStress;
-  files_.openTable("metrics.csv", metricsColumns(wall.enabled, description_.numCells(), wall.isolatedRange),
-                   resumeAfter);
+  files_.openTable(
+      "metrics.csv",
+      metricsColumns(wall.enabled, description_.numCells(), wall.isolatedRange, description_.adhesion.enabled),
+      resumeAfter);
   if (!settings_.flowProbes.empty()) {
     files_.openTable("probes.csv", probeColumns(settings_.flowProbes.size()), resumeAfter);
   }
@@ -281,6 +289,17 @@ void SceneOutputs::addResults(io::JsonValue& summary) const
     cell["final"] = sampleJson(lastSamples_[c], description_.wall);
     if (!steadySamples_.empty()) {
       cell["steady"] = sampleJson(steadySamples_[c], description_.wall);
+    }
+    if (scene.hasBonds()) { // over all outputs so far, those before a restart included
+      const RollingStatistics rolling =
+          rollingStatistics(metrics_.times(), metrics_.centroidHistory(static_cast<int>(c)), kPauseVelocity);
+      io::JsonValue& motion = cell["adhesion"];
+      motion["observed time"] = rolling.observedTime;
+      motion["mean velocity along the flow"] = rolling.meanVelocity;
+      motion["pause threshold (velocity)"] = kPauseVelocity;
+      motion["pause fraction"] = rolling.pauseFraction;
+      motion["pauses"] = rolling.pauses;
+      motion["longest pause"] = rolling.longestPause;
     }
     summary["cells"].append(cell);
   }

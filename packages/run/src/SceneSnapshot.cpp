@@ -1,6 +1,8 @@
 #include "capsula/run/SceneSnapshot.hpp"
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 namespace capsula::run {
 
@@ -20,6 +22,33 @@ std::vector<double> component(const std::vector<double>& pairs, std::size_t firs
     values[i] = pairs[2 * (first + i) + static_cast<std::size_t>(which)];
   }
   return values;
+}
+
+// The bonds of cell c as segments from the receptor to its ligand, or nothing without bonds
+// (an empty block would give ParaView an empty topology).
+std::optional<io::SnapshotBlock> bondBlock(const scene::Scene& scene, int c, const double* positions)
+{
+  const auto records = scene.bonds().bonds(c).records(scene.cell(c), scene.bonds().receptors(c), positions);
+  if (records.empty()) {
+    return std::nullopt;
+  }
+  io::SnapshotBlock block;
+  block.name = "bonds" + std::to_string(c);
+  block.topology = io::Topology::Polylines;
+  block.nodesPerPolyline = 2;
+  block.dimension = 3;
+  io::Field force{"force", 3, {}}, occupancy{"occupancy", 1, {}}, receptor{"receptor", 1, {}};
+  for (const auto& bond : records) {
+    const auto first = static_cast<std::int64_t>(block.positions.size() / 3);
+    block.positions.insert(block.positions.end(), {bond.position[0], bond.position[1], bond.position[2]});
+    block.positions.insert(block.positions.end(), {bond.anchor[0], bond.anchor[1], bond.anchor[2]});
+    block.connectivity.insert(block.connectivity.end(), {first, first + 1});
+    force.values.insert(force.values.end(), {bond.force[0], bond.force[1], bond.force[2]});
+    occupancy.values.push_back(bond.occupancy);
+    receptor.values.push_back(static_cast<double>(bond.receptor));
+  }
+  block.cellFields = {std::move(force), std::move(occupancy), std::move(receptor)};
+  return block;
 }
 
 } // namespace
@@ -59,6 +88,12 @@ io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& 
     block.cellFields.push_back({"load", 3, loads});
     block.cellFields.push_back({"shear_stress", 1, magnitude});
     snapshot.blocks.push_back(std::move(block));
+  }
+  for (int c = 0; scene.hasBonds() && c < scene.numCells(); ++c) {
+    const double* positions = fields.positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(c));
+    if (auto bonds = bondBlock(scene, c, positions)) {
+      snapshot.blocks.push_back(std::move(*bonds));
+    }
   }
   return snapshot;
 }

@@ -35,6 +35,13 @@ io::JsonValue sampleJson(const CellSample& s, bool wall)
   if (wall) { // measured from the plane y = 0, meaningless without the wall
     v["wall gap per element size"] = s.stability.wallGapPerElementSize;
   }
+  if (s.adhesion) {
+    const adhesion::AdhesionSummary& a = *s.adhesion;
+    v["bonds"] = a.bonds;
+    v["bond force"] = io::JsonValue::array({a.bondForce[0], a.bondForce[1], a.bondForce[2]});
+    v["contact area"] = a.contactArea;
+    v["minimum gap"] = a.minimumGap;
+  }
   return v;
 }
 

@@ -56,6 +56,34 @@ void requireConsistentBending(const CellDescription& cell)
                                   "moments: keep one of them.");
 }
 
+// What bonds need of the rest of the scene (the adhesion keys alone are checked by
+// readAdhesionParameters).
+void requireUsableAdhesion(const SceneDescription& scene)
+{
+  if (!scene.adhesion.enabled) {
+    return;
+  }
+  core::require<core::InputError>(scene.wall,
+                                  "'Adhesion/Enabled' is true but 'Wall/Enabled' is false: the "
+                                  "bonds tie the membrane to ligands on the wall y = 0, which needs the wall.");
+  for (const auto& cell : scene.cells) {
+    core::require<core::InputError>(cell.membraneForces == "Virtual work", "'Adhesion/Enabled' is true but '",
+                                    cell.path,
+                                    "/Membrane forces' is 'Contour integral': the bond forces enter "
+                                    "as nodal forces, which need 'Virtual work'.");
+  }
+  // A receptor is a fixed (element, xi, eta) of the mesh: a redistribution or a refinement
+  // would move it to another material point under its bond.
+  core::require<core::InputError>(!scene.meshRegularisation.enabled,
+                                  "'Adhesion/Enabled' and 'Mesh regularisation/Enabled' are both true: the "
+                                  "receptors are material points of the mesh, which a redistribution moves. "
+                                  "Turn one of them off.");
+  core::require<core::InputError>(!scene.meshAdaption.enabled,
+                                  "'Adhesion/Enabled' and 'Mesh adaption/Enabled' are both true: the receptors "
+                                  "are material points of the mesh, which a refinement renumbers. Turn one of "
+                                  "them off.");
+}
+
 } // namespace
 
 SceneDescription describeScene(const Teuchos::ParameterList& deck)
@@ -103,6 +131,10 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
   scene.meshAdaption = mesh::readAdaptionParameters(deck.sublist("Mesh adaption"));
   if (deck.isSublist("Contact")) {
     scene.contact = adhesion::readContactParameters(deck.sublist("Contact"), "Contact");
+  }
+  if (deck.isSublist("Adhesion")) {
+    scene.adhesion = adhesion::readAdhesionParameters(deck.sublist("Adhesion"), "Adhesion");
+    requireUsableAdhesion(scene);
   }
   for (const auto& cell : scene.cells) {
     core::require<core::InputError>(!scene.contact.enabled || cell.membraneForces == "Virtual work",

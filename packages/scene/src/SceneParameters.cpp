@@ -1,5 +1,6 @@
 #include "capsula/scene/SceneParameters.hpp"
 
+#include <capsula/adhesion/AdhesionParameters.hpp>
 #include <capsula/adhesion/ContactParameters.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
@@ -133,6 +134,10 @@ void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::Parame
       valid, "Contact",
       "Short-range repulsion that keeps membranes off the wall and off each other (packages/adhesion "
       "ContactRepulsion.hpp); off by default."));
+  adhesion::declareAdhesionParameters(core::declareSublist(
+      valid, "Adhesion",
+      "Receptor-ligand bonds between each membrane and a ligand-coated wall y = 0 (packages/adhesion, "
+      "docs/cell3d.md); off by default. Needs the wall and 'Membrane forces' = 'Virtual work'."));
 
   auto& cells = core::declareSublist(valid, "Cells", "One sublist per cell: Cell 0, Cell 1, ...");
   declareMinimumGap(cells);

@@ -4,8 +4,9 @@
 // after the first 13 (the layout predates the others), gmres_iterations, the wall stress
 // columns, the stability diagnostics last. Several cells: a column "NAME_c" per metric and
 // cell, the pair columns, the wall stress, the stability diagnostics per cell and each
-// pair's gap per element size. Columns are only ever appended, so readers of the leading
-// ones keep working.
+// pair's gap per element size; with adhesion, last, each cell's bonds, bond_force (the
+// magnitude of their total force), bond_force_x, bond_force_y, contact_area and min_gap.
+// Columns are only ever appended, so readers of the leading ones keep working.
 #include "capsula/run/OutputMetrics.hpp"
 #include "capsula/run/PairMetrics.hpp"
 
@@ -20,11 +21,14 @@ namespace capsula::run {
 std::vector<std::string> metricsColumns(bool wallShearStress);
 /// The metrics.csv columns of `numCells` cells (the one-cell layout for numCells = 1); with
 /// `isolatedRange` (and the wall stress) also wall_area_below_isolated,
-/// wall_area_above_isolated ('Output/Wall shear stress/Isolated range').
-std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange = false);
+/// wall_area_above_isolated ('Output/Wall shear stress/Isolated range'); with `adhesion` the
+/// adhesion columns (suffixed _c with several cells).
+std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange = false,
+                                        bool adhesion = false);
 
 /// One row in the order of metricsColumns: time, accepted steps, last step size, the cells'
-/// samples, their pairs, and `wallValues` (the wall stress columns in force, possibly none).
+/// samples, their pairs, and `wallValues` (the wall stress columns in force, possibly none);
+/// the adhesion columns if the samples carry adhesion.
 std::vector<double> metricsRow(double time, std::int64_t acceptedSteps, double lastStep,
                                const std::vector<CellSample>& samples, const std::vector<PairSample>& pairs,
                                const std::vector<double>& wallValues);

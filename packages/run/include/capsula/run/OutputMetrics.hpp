@@ -3,11 +3,13 @@
 // the memory they need across outputs: the centroid history for the spline velocity
 // (Section 3.11.2) and the values at t = 0 for the drifts and the stress increase
 // (eq 3.58). The memory goes into checkpoints, so a restarted run writes the same rows.
+#include <capsula/adhesion/AdhesionOutputs.hpp>
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/scene/CellMetrics.hpp>
 #include <capsula/scene/CellStability.hpp>
 #include <capsula/scene/Scene.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,8 @@ struct CellSample {
   int gmresIterations = 0;
   double shearRate = 1.0;         ///< k(t) over its mean at this output ('Flow/Shear rate')
   scene::CellStability stability; ///< mesh quality, compression, wall gap (CellStability.hpp)
+  /// Bonds, their force, contact area and gap; only in a scene with 'Adhesion' enabled.
+  std::optional<adhesion::AdhesionSummary> adhesion;
 
   /// u_slip = k y_c - dx_c/dt (eq 3.55, k = k(t) of this instant, 1 in steady shear), and
   /// u_migr = dy_c/dt, with dx_c/dt the centroid velocity of this instant (the mean surface
@@ -54,6 +58,9 @@ public:
   std::vector<CellSample> record(double t, const scene::Scene& scene, const scene::SceneFields& fields);
 
   int numOutputs() const { return static_cast<int>(times_.size()); }
+  /// The output times so far, and cell c's centroids there (x, y, z per output).
+  const std::vector<double>& times() const { return times_; }
+  const std::vector<double>& centroidHistory(int c) const { return centroids_[static_cast<std::size_t>(c)]; }
 
   /// Adds the history and references to a checkpoint (names prefixed "metrics.").
   void save(io::Checkpoint& checkpoint) const;

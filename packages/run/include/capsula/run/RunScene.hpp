@@ -10,12 +10,18 @@
 //                      Mesh adaption: the cells whose shape curves more than their elements
 //                      resolve are refined (Scene::adaptedCells) and the run goes on with a
 //                      scene built on the refined meshes (new operators and maps).
+//   after every accepted step
+//                      Adhesion: the bonds form and break over the step just taken
+//                      (Scene::updateBonds, Monte Carlo or mean field, keyed by the step's
+//                      number); the right-hand side changes with them, so a
+//                      first-same-as-last slope no longer belongs to the state.
 //
 // Each event is a line in the log. Its checkpoint section holds what the deck alone cannot
 // rebuild: GMRES's warm start (the next solve's start), and after regularisations or
 // adaptions the reference shapes, the meshes' connectivity and the event counts:
 //   scene.gmresWarmStart.rhs, scene.gmresWarmStart.solutions, scene.reference.<c>,
-//   scene.connectivity.<c>, scene.regularisations, scene.adaptions; and a tabulated shear
+//   scene.connectivity.<c>, scene.regularisations, scene.adaptions; with adhesion the bond
+//   states, occupancy and anchor per receptor, scene.bonds.<c>; and a tabulated shear
 // rate's samples, flow.shearRate.waveform, so that a restart whose waveform file changed is
 // refused.
 // Loading it rebuilds the scene on the checkpoint's meshes, at the positions of the
@@ -61,6 +67,7 @@ public:
 private:
   void regulariseMeshes(timeint::IntegrationState& state);
   void adaptMeshes(timeint::IntegrationState& state);
+  void updateBonds(timeint::IntegrationState& state, double step);
   std::unique_ptr<scene::Scene> restoredScene(const io::Checkpoint& checkpoint, const std::string& source) const;
 
   const scene::SceneDescription& description_;

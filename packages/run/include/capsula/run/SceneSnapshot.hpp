@@ -5,7 +5,10 @@
 //                stretch_minor
 //   cell fields  load <Delta f>_m (3), shear_stress |<Delta f>_m| (eq 3.57)
 // and, when the wall shear stress is computed, a block "wall" (2DSMesh) with the fields
-// shear_stress (eq 3.63), dudy and dwdy.
+// shear_stress (eq 3.63), dudy and dwdy; with adhesion, for every cell with bonds a block
+// "bonds0", "bonds1", ... (Polyline, two nodes per bond: the receptor and its ligand on the
+// wall) with the cell fields force (on the membrane, 3), occupancy and receptor (its index).
+// The block, and so the mesh version, changes with the number of bonds.
 #include <capsula/io/Snapshot.hpp>
 #include <capsula/operators/WallShearStress.hpp>
 #include <capsula/scene/Scene.hpp>

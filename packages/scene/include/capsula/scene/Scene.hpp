@@ -7,7 +7,9 @@
 //     (from an operators::KernelRegistry);
 //   - the double layer and the GMRES solve only if the viscosity ratio is not 1 (the
 //     operators skip both when every lambda = 1);
-//   - the fixed-height stage constraint only if some cell asks for it.
+//   - the fixed-height stage constraint only if some cell asks for it;
+//   - contact repulsion and receptor-ligand bonds (SceneBonds.hpp) only if 'Contact' and
+//     'Adhesion' enable them: their nodal forces on each membrane enter its load.
 // terms() lists what was built; the run log prints it.
 //
 // The state the time integrator advances is the positions of all nodes of all cells,
@@ -16,7 +18,8 @@
 // 'Solver/Warm start' GMRES starts from a combination of the last solutions
 // (gmresWarmStart(), operators/WarmStartHistory.hpp); the checkpoint carries them, so a
 // restarted run still repeats the uninterrupted one bit for bit. evaluate() (outputs)
-// always starts cold.
+// always starts cold. With adhesion the right-hand side also depends on the bond set, which
+// only updateBonds() changes, between steps.
 #include <capsula/elasticity/MembraneMechanics.hpp>
 #include <capsula/mesh/SurfaceMesh.hpp>
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
@@ -25,6 +28,7 @@
 #include <capsula/operators/LinearFlow.hpp>
 #include <capsula/operators/WarmStartHistory.hpp>
 #include <capsula/scene/FixedHeightConstraint.hpp>
+#include <capsula/scene/SceneBonds.hpp>
 #include <capsula/scene/SceneDescription.hpp>
 
 #include <Teuchos_Comm.hpp>
@@ -163,6 +167,21 @@ public:
   /// Throws core::InputError if they do not fit this scene's nodes.
   void restoreGmresWarmStart(const std::vector<double>& rightHandSides, const std::vector<double>& solutions);
 
+  /// True if the deck enables 'Adhesion': the cells carry receptors and bonds.
+  bool hasBonds() const { return bonds_.has_value(); }
+  /// The bonds (only with hasBonds()).
+  const SceneBonds& bonds() const { return *bonds_; }
+  SceneBonds& bonds() { return *bonds_; }
+  /// Bond formation and breakage over the accepted step numbered `step` of length dt that
+  /// ended at `positions` (SceneBonds::update for every cell). Collective.
+  adhesion::BondEvents updateBonds(const std::vector<double>& positions, double dt, std::uint64_t step);
+  /// The forces from outside on cell c's nodes at the latest evaluation (contact and bonds,
+  /// 3 per node), or null when neither is enabled.
+  const std::vector<double>* externalForces(int c) const
+  {
+    return externalForces_.empty() ? nullptr : &externalForces_[static_cast<std::size_t>(c)];
+  }
+
   /// Element loads of the latest evaluation (3 per element, global numbering): the
   /// average of Delta f over each element.
   const std::vector<double>& elementLoads() const { return loads_; }
@@ -171,7 +190,8 @@ public:
 
 private:
   void computeLoads(double t, elasticity::MembraneEvaluation what);
-  void computeContactForces();
+  void buildExternalForces();
+  void computeExternalForces();
   std::string nonFiniteCause(double t) const;
 
   SceneDescription description_;
@@ -184,7 +204,8 @@ private:
   std::vector<double> initialPositions_;
   std::vector<double> loads_;
   std::vector<double> loadDensity_;
-  std::vector<std::vector<double>> contactForces_; // per cell, with 'Contact/Enabled' only
+  std::vector<std::vector<double>> externalForces_; // per cell, with 'Contact' or 'Adhesion' only
+  std::optional<SceneBonds> bonds_;                 // with 'Adhesion/Enabled'
   std::vector<std::string> terms_;
   operators::KernelChoice kernel_;
   std::optional<operators::WarmStartHistory> warmStart_; // with 'Solver/Warm start'

@@ -1,7 +1,9 @@
 #pragma once
 // The physical model a validated deck asks for, in plain values (SceneParameters.hpp lists
 // the keys). Reading it checks what the validators cannot see alone: cells numbered 0..N-1
-// without gaps, a fixed height that needs the wall.
+// without gaps, a fixed height that needs the wall, contact and adhesion forces that need the
+// virtual-work load, bonds that need the wall and meshes whose material points stay put.
+#include <capsula/adhesion/AdhesionParameters.hpp>
 #include <capsula/adhesion/ContactParameters.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/RedistributionParameters.hpp>
@@ -40,6 +42,7 @@ struct SceneDescription {
   mesh::RedistributionSettings meshRegularisation; ///< 'Mesh regularisation'
   mesh::AdaptionSettings meshAdaption;             ///< 'Mesh adaption'
   adhesion::ContactSettings contact;               ///< 'Contact': the short-range repulsion
+  adhesion::AdhesionSettings adhesion;             ///< 'Adhesion': receptor-ligand bonds to the wall
 
   int numCells() const { return static_cast<int>(cells.size()); }
   bool anyFixedHeight() const;

@@ -10,6 +10,8 @@
 //   Cells/Cell 1/     ... one sublist per cell, numbered from 0
 //   Cells/            Minimum gap (between cell surfaces: touching at the start, stop of a run)
 //   Contact/          Enabled, Range, Strength (capsula::adhesion: the short-range repulsion)
+//   Adhesion/         Enabled, Receptor density, Ligand density, Ligand patch, Spring constant,
+//                     ..., Kinetics, Seed (capsula::adhesion: receptor-ligand bonds to the wall)
 //   Mesh regularisation/, Mesh adaption/   (capsula::mesh)
 //
 // The run adds Time integration (capsula::timeint), Discretisation and Solver
