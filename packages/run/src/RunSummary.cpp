@@ -98,10 +98,7 @@ io::JsonValue RunSummary::json(const std::string& status, const std::string& not
     summary["timings"][timer.name] = timer.seconds;
   }
   if (!peakMemoryMiB_.empty()) {
-    summary["peak memory (MiB) per rank"] = io::JsonValue::array();
-    for (const double mib : peakMemoryMiB_) {
-      summary["peak memory (MiB) per rank"].append(mib);
-    }
+    summary["peak memory (MiB) per rank"] = io::JsonValue::array(peakMemoryMiB_);
   }
   summary["deck"] = deckXml_;
   return summary;
