@@ -15,9 +15,12 @@
 //   velocity   one node-velocity evaluation (singular and near-singular corrections, the
 //              sums, and for lambda != 1 the GMRES solve, with its iterations);
 //   direct sum the bare vectorised regular sum of the Stokeslet over every quadrature point
-//              for the owned nodes (no corrections): the floor the evaluation is compared to.
+//              for the owned nodes (no corrections): the floor the evaluation is compared to;
+//   memory     the peak resident memory of every rank (MiB) after the evaluations with
+//              --summation, before a Treecode run builds its Direct reference.
 #include <capsula/core/Error.hpp>
 #include <capsula/core/MpiSessionDirectory.hpp>
+#include <capsula/core/PeakMemory.hpp>
 #include <capsula/fastsum/TreecodeBackEnd.hpp>
 #include <capsula/fastsum/TreecodeSummation.hpp>
 #include <capsula/mesh/Shapes.hpp>
@@ -194,6 +197,7 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
   });
   velocity.wall -= geometry.wall;
   velocity.cpu -= geometry.cpu;
+  const std::vector<double> memory = core::peakResidentMiBPerRank(*comm);
   std::vector<double> direct;
   double sink = 0.0;
   Timing directTime;
@@ -230,6 +234,11 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
     std::printf("\n");
     std::printf("  near-singular (target, element) pairs: %lld (%.1f per node)\n", nearTotal,
                 static_cast<double>(nearTotal) / surfaces.numNodes());
+    std::printf("  peak resident memory per rank (MiB):");
+    for (const double mib : memory) {
+      std::printf(" %.1f", mib);
+    }
+    std::printf("\n");
     std::printf("                           wall ms   cpu ms (slowest rank, best of %d)\n", repeat);
     std::printf("  geometry update          %8.1f  %8.1f\n", geometry.wall, geometry.cpu);
     std::printf("  velocity evaluation      %8.1f  %8.1f", velocity.wall, velocity.cpu);

@@ -330,6 +330,28 @@ def twocell3d():
                 f"{root}/isolated/h{h}-{mode}.xml",
                 f"Thesis Chapter 6 reference: the isolated cell at h/a = {h} ({mode} height), the same settings.",
                 h=h, fixed=fixed, steady=steady)
+    yield suspension(f"{root}/suspension/ten-cells-wall.xml")
+
+
+# --- twocell3d suspensions: N cells at random above the wall (utils/decks/random_suspension.py)
+#   suspension/ten-cells-wall.xml  ten free level-3 cells of the isolated h/a = 1.25 deck's
+#                  settings in a 16 x 5 x 10 box, gaps >= 0.25 a, Treecode far field, to t = 1,
+#                  a wall shear stress map over the box
+
+def suspension(path):
+    import random_suspension
+    template = "input/twocell3d/isolated/h1.25-free.xml"
+    box = random_suspension.Box(16.0, 10.0, 5.0)
+    overrides = ["Operator/Summation=Treecode", "Time integration/End time=1",
+                 "Output/Directory=out/twocell3d/suspension/ten-cells-wall",
+                 "Output/Wall shear stress/Upstream extent=12", "Output/Wall shear stress/Downstream extent=12",
+                 "Output/Wall shear stress/Half width=9"]
+    settings = dict(cells=10, seed=7, gap=0.25, box=box, level=3)
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    command = random_suspension.command_line(template, settings["cells"], settings["seed"], settings["gap"], box,
+                                             settings["level"], None, 10000, overrides, path)
+    return (path, random_suspension.describe(settings["cells"], settings["seed"], settings["gap"], box, command),
+            random_suspension.assignments(os.path.join(root, template), overrides=overrides, **settings))
 
 
 # --- tether2d: thesis Chapter 4 ----------------------------------------------------------------

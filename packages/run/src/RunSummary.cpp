@@ -1,6 +1,7 @@
 #include "capsula/run/RunSummary.hpp"
 
 #include <capsula/core/Deck.hpp>
+#include <capsula/core/PeakMemory.hpp>
 #include <capsula/core/RunInfo.hpp>
 #include <capsula/core/Timers.hpp>
 
@@ -59,6 +60,11 @@ double RunSummary::wallSeconds() const
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart_).count();
 }
 
+void RunSummary::recordPeakMemory(const Teuchos::Comm<int>& comm)
+{
+  peakMemoryMiB_ = core::peakResidentMiBPerRank(comm);
+}
+
 io::JsonValue RunSummary::json(const std::string& status, const std::string& note, double time,
                                const timeint::IntegrationStatistics& statistics,
                                const std::function<void(io::JsonValue&)>& results) const
@@ -90,6 +96,9 @@ io::JsonValue RunSummary::json(const std::string& status, const std::string& not
       wall / static_cast<double>(std::max<std::int64_t>(1, evaluations));
   for (const auto& timer : core::timerTotals()) {
     summary["timings"][timer.name] = timer.seconds;
+  }
+  if (!peakMemoryMiB_.empty()) {
+    summary["peak memory (MiB) per rank"] = io::JsonValue::array(peakMemoryMiB_);
   }
   summary["deck"] = deckXml_;
   return summary;

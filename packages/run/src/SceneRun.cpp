@@ -228,6 +228,7 @@ bool SceneRunner::cellsTooClose(const timeint::IntegrationState& state)
   stopReason_ = reason.str();
   outputs_.observe(state);
   progress(state);
+  summary_.recordPeakMemory(*comm_);
   files_.writeSummary([&] { return summary("too close", stopReason_); });
   log() << stopReason_ << "\n";
   return true;
@@ -254,6 +255,7 @@ timeint::ObserverVerdict SceneRunner::afterStep(timeint::IntegrationState& state
 // After the outputs (SceneOutputs observes first): summary.json and a progress line.
 timeint::ObserverVerdict SceneRunner::atOutput(const timeint::IntegrationState& state, timeint::OutputReason)
 {
+  summary_.recordPeakMemory(*comm_);
   files_.writeSummary([&] { return summary(outputs_.steady() ? "steady" : "running", ""); });
   progress(state);
   return timeint::ObserverVerdict::Continue;
@@ -313,6 +315,7 @@ SceneRunResult SceneRunner::execute()
   outputs_.open(restarted_ ? std::optional<double>(state_.time) : std::nullopt);
   // From the start: the status is never missing, and the file holds the space a failure on
   // a full disk rewrites it in (RunOutputs::writeSummaryAfterFailure).
+  summary_.recordPeakMemory(*comm_);
   files_.writeSummary([&] { return summary("running", "", state_.time); });
 
   timeint::OutputSchedule schedule;
@@ -336,6 +339,7 @@ SceneRunResult SceneRunner::execute()
     stopInterrupted(watch_.signal());
   }
   const std::string status = tooClose_ ? "too close" : outputs_.steady() ? "steady" : "finished";
+  summary_.recordPeakMemory(*comm_);
   files_.writeSummary([&] { return summary(status, stopReason_); });
   report(status);
   SceneRunResult result;

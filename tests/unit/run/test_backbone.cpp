@@ -123,6 +123,23 @@ TEST(RunSummary, OneLayoutForEveryApp)
   EXPECT_EQ(early["stop reason"].asString(), "they met");
 }
 
+TEST(RunSummary, PeakMemoryOnceRecordedHasOnePositiveEntryPerRank)
+{
+  Teuchos::ParameterList deck("app");
+  const Teuchos::SerialComm<int> comm;
+  run::RunSummary summary("app", deck, comm.getSize());
+  ti::IntegrationStatistics statistics;
+  summary.begin(statistics, false);
+  summary.recordPeakMemory(comm);
+  io::JsonValue json = summary.json("running", "", 0.0, statistics, {});
+  const std::vector<std::string> names = keys(json);
+  ASSERT_GE(names.size(), 2u);
+  EXPECT_EQ(names[names.size() - 2], "peak memory (MiB) per rank"); // just before the deck
+  const auto& perRank = json["peak memory (MiB) per rank"].items();
+  ASSERT_EQ(perRank.size(), static_cast<std::size_t>(comm.getSize()));
+  EXPECT_GT(perRank[0].asNumber(), 0.0);
+}
+
 TEST(RunOutputs, WithoutADirectoryNothingIsWritten)
 {
   const fs::path cwd = fs::current_path();

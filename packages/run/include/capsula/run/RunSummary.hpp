@@ -13,10 +13,13 @@
 //   timings                    {wall seconds (this process), seconds per rhs evaluation
 //                              (this process), then every timer that ran, by the name its
 //                              owner gave it (core::timerTotals)}
+//   peak memory (MiB) per rank the peak resident memory of every rank, as last recorded
+//                              (recordPeakMemory; absent before)
 //   deck                       the validated deck (XML)
 #include <capsula/io/Json.hpp>
 #include <capsula/timeint/IntegrationState.hpp>
 
+#include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
 
 #include <chrono>
@@ -46,6 +49,10 @@ public:
   void printTerms(std::ostream& log) const;
   /// Wall seconds since begin().
   double wallSeconds() const;
+  /// Gathers every rank's peak resident memory for the next documents: collective, so the
+  /// runs call it where every rank is (the summaries themselves are made on rank 0 only).
+  void recordPeakMemory(const Teuchos::Comm<int>& comm);
+  const std::vector<double>& peakMemoryMiB() const { return peakMemoryMiB_; }
 
   /// The document: `note` is the failure (status "failed") or why the run stopped early (""
   /// for none); `results` adds the app's entries after "steps".
@@ -61,6 +68,7 @@ private:
   std::vector<std::string> terms_;
   std::chrono::steady_clock::time_point wallStart_ = std::chrono::steady_clock::now();
   std::int64_t evaluationsAtStart_ = 0;
+  std::vector<double> peakMemoryMiB_;
 };
 
 } // namespace capsula::run
