@@ -2,10 +2,10 @@
 
 #include "capsula/scene/CellPlacement.hpp"
 
+#include <capsula/adhesion/ContactRepulsion.hpp>
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
 #include <capsula/elasticity/MembraneLawFactory.hpp>
-#include <capsula/adhesion/ContactRepulsion.hpp>
 #include <capsula/elasticity/Prestress.hpp>
 #include <capsula/mesh/Adaption.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
@@ -24,7 +24,6 @@ namespace capsula::scene {
 namespace core = capsula::core;
 
 namespace {
-
 std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMesh& surface)
 {
   std::ostringstream line;
