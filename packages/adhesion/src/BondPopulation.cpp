@@ -148,6 +148,42 @@ mesh::Vec3 BondPopulation::addNodalForces(const mesh::SurfaceMesh& mesh, const R
   return total;
 }
 
+void BondPopulation::addStiffness(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors, const double* positions,
+                                  LoadStiffness& stiffness) const
+{
+  for (int r = 0; r < size(); ++r) {
+    const BondState& s = state(r);
+    if (s.occupancy <= 0.0) {
+      continue;
+    }
+    const mesh::Vec3 d = receptors.position(mesh, positions, r) - s.anchor;
+    const double length = d.norm();
+    const double k = s.occupancy * settings_.springConstant;
+    // d/dx of (L - lambda) e is (1 - lambda/L)(I - e e^T) + e e^T. A bond of zero length
+    // pushes along e_y (force()): only its stretch along e_y is kept.
+    mesh::Mat3 bond = k * mesh::Vec3::UnitY() * mesh::Vec3::UnitY().transpose();
+    if (length > 0.0) {
+      const mesh::Vec3 e = d / length;
+      const double ratio = settings_.equilibriumLength / length;
+      bond = k * ((1.0 - ratio) * mesh::Mat3::Identity() + ratio * e * e.transpose());
+    }
+    double phi[6];
+    receptors.shapeFunctions(r, phi);
+    const auto& nodes = mesh.element(receptors[r].element);
+    for (int a = 0; a < 6; ++a) {
+      for (int b = 0; b < 6; ++b) {
+        const double weight = phi[a] * phi[b];
+        for (int i = 0; i < 3; ++i) {
+          for (int j = 0; j < 3; ++j) {
+            stiffness.add(3 * nodes[static_cast<std::size_t>(a)] + i, 3 * nodes[static_cast<std::size_t>(b)] + j,
+                          weight * bond(i, j));
+          }
+        }
+      }
+    }
+  }
+}
+
 std::vector<BondRecord> BondPopulation::records(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors,
                                                 const double* positions) const
 {

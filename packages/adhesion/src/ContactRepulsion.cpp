@@ -19,6 +19,12 @@ double steric(double s)
 {
   return 1.0 / std::expm1(s);
 }
+// g'(s) = -e^s / (e^s - 1)^2.
+double stericSlope(double s)
+{
+  const double m = std::expm1(s);
+  return -(m + 1.0) / (m * m);
+}
 const double stericAtRange = steric(1.0);
 const double stericSlopeAtRange = -std::exp(1.0) / ((std::exp(1.0) - 1.0) * (std::exp(1.0) - 1.0));
 
@@ -117,6 +123,15 @@ double repulsionPressure(const ContactSettings& contact, double gap)
   return contact.strength * (steric(s) - stericAtRange - (s - 1.0) * stericSlopeAtRange);
 }
 
+double repulsionPressureSlope(const ContactSettings& contact, double gap)
+{
+  if (gap >= contact.range || gap <= 1e-6 * contact.range) {
+    return 0.0;
+  }
+  const double s = gap / contact.range;
+  return contact.strength * (stericSlope(s) - stericSlopeAtRange) / contact.range;
+}
+
 std::vector<double> nodalAreaShares(const mesh::SurfaceMesh& mesh, const double* positions)
 {
   const std::vector<double> elementAreas = mesh::elementAreas(mesh, positions);
@@ -139,6 +154,17 @@ mesh::Vec3 addWallContactForces(const ContactSettings& contact, const mesh::Surf
     total += f;
   }
   return mesh::Vec3(0.0, total, 0.0);
+}
+
+void addWallContactStiffness(const ContactSettings& contact, const mesh::SurfaceMesh& mesh, const double* positions,
+                             const std::vector<double>& areas, LoadStiffness& stiffness)
+{
+  for (int k = 0; k < mesh.numNodes(); ++k) {
+    const double slope = repulsionPressureSlope(contact, positions[3 * k + 1]);
+    if (slope != 0.0) {
+      stiffness.add(3 * k + 1, 3 * k + 1, -slope * areas[static_cast<std::size_t>(k)]);
+    }
+  }
 }
 
 mesh::Vec3 addCellContactForces(const ContactSettings& contact, const mesh::SurfaceMesh& a, const double* xa,

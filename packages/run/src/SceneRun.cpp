@@ -17,6 +17,7 @@
 #include <capsula/core/Timers.hpp>
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/operators/ShearRate.hpp>
+#include <capsula/scene/NodesAboveWall.hpp>
 #include <capsula/scene/SceneDescription.hpp>
 #include <capsula/scene/VelocityJacobian.hpp>
 #include <capsula/timeint/TimeIntegrationParameters.hpp>
@@ -152,6 +153,8 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
   }
   live_.build();
   outputs_.setCheckpointSections({&stateSection_, &outputs_, &live_});
+  // A stage state with a node through the wall rejects the attempt (NodesAboveWall.hpp).
+  integrator_.setDomainCheck([this](const std::vector<double>& y) { scene::requireNodesAboveWall(live_.scene(), y); });
   if (live_.scene().hasConstraints()) {
     integrator_.setStageConstraint(
         [this](double, const std::vector<double>& y, std::vector<double>& dydt) { live_.scene().constrain(y, dydt); });

@@ -12,7 +12,7 @@ LocalMobilityPreconditioner::LocalMobilityPreconditioner(Teuchos::RCP<const Map>
 }
 
 void LocalMobilityPreconditioner::setCell(int cell, int firstNode, const elasticity::TangentStiffness& stiffness,
-                                          std::vector<double> mobility)
+                                          std::vector<double> mobility, const adhesion::LoadStiffness* external)
 {
   core::require(cell >= 0, "LocalMobilityPreconditioner: negative cell");
   core::require(mobility.size() == static_cast<std::size_t>(stiffness.numNodes()),
@@ -24,7 +24,11 @@ void LocalMobilityPreconditioner::setCell(int cell, int firstNode, const elastic
   const int n = 3 * stiffness.numNodes();
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(stiffness.elements().size() * 18 * 18);
-  stiffness.forEachEntry([&entries](int row, int column, double value) { entries.emplace_back(row, column, value); });
+  const auto add = [&entries](int row, int column, double value) { entries.emplace_back(row, column, value); };
+  stiffness.forEachEntry(add);
+  if (external != nullptr) { // within the element pattern of H: the pattern stays the same
+    external->forEachEntry(add);
+  }
   SparseMatrix H(n, n);
   H.setFromTriplets(entries.begin(), entries.end()); // sums the element contributions
   const bool samePattern = block.patternAnalysed && block.firstNode == firstNode && block.stiffness.rows() == n &&

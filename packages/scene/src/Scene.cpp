@@ -250,8 +250,8 @@ void Scene::setPositions(double t, const std::vector<double>& positions)
       core::require<core::NumericalError>(
           !description_.wall || p[1] > 0.0, "At t = ", t, " node ", i, " of '",
           description_.cells[static_cast<std::size_t>(c)].path, "' reached the wall (y = ", p[1],
-          "). The boundary-integral model has no contact force; start the cell higher or "
-          "stop earlier.");
+          description_.contact.enabled ? "). The contact repulsion did not hold it: raise 'Contact/Strength'."
+                                       : "). Without 'Contact/Enabled' the model has no contact force.");
     }
     surface.setPositions(x);
   }

@@ -1,5 +1,6 @@
 #include "capsula/scene/VelocityJacobian.hpp"
 
+#include "capsula/scene/ExternalLoadStiffness.hpp"
 #include "capsula/scene/Scene.hpp"
 
 #include <capsula/core/Error.hpp>
@@ -75,6 +76,9 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
     bendingLoad_.push_back(std::make_unique<elasticity::LinearLumpedLoad>(scene.cell(c)));
     nodalAreas_.emplace_back(static_cast<std::size_t>(scene.cell(c).numNodes()), 0.0);
   }
+  if (hasExternalLoadStiffness(scene)) {
+    external_.resize(static_cast<std::size_t>(scene.numCells()));
+  }
 }
 
 void VelocityJacobian::linearise(double t, const std::vector<double>& y)
@@ -92,6 +96,11 @@ void VelocityJacobian::linearise(double t, const std::vector<double>& y)
     } catch (const core::NumericalError& e) {
       throw core::NumericalError(core::message("The membrane of '", description.cells[static_cast<std::size_t>(c)].path,
                                                "' failed: ", e.what()));
+    }
+    const adhesion::LoadStiffness* external = nullptr;
+    if (!external_.empty()) { // the bonds as they are over the step (they change between steps)
+      externalLoadStiffness(scene_, c, positions, external_[static_cast<std::size_t>(c)]);
+      external = &external_[static_cast<std::size_t>(c)];
     }
     mass_[static_cast<std::size_t>(c)]->assemble(positions);
     mass_[static_cast<std::size_t>(c)]->nodalAreas(nodalAreas_[static_cast<std::size_t>(c)].data());
@@ -113,7 +122,7 @@ void VelocityJacobian::linearise(double t, const std::vector<double>& y)
     for (std::size_t i = 0; i < share.size(); ++i) {
       mobility[i] = c0 * settings_.mobilityFactor / std::sqrt(share[i] / M_PI);
     }
-    preconditioner_->setCell(c, scene_.nodeOffset(c), stiffness_.back(), std::move(mobility));
+    preconditioner_->setCell(c, scene_.nodeOffset(c), stiffness_.back(), std::move(mobility), external);
   }
 }
 
@@ -128,6 +137,9 @@ void VelocityJacobian::apply(const double* x, double* y)
     const std::size_t first = 3 * static_cast<std::size_t>(scene_.nodeOffset(c));
     const elasticity::TangentStiffness& stiffness = stiffness_[static_cast<std::size_t>(c)];
     stiffness.apply(x + first, forces_.data() + first, elasticity::TangentStiffness::Part::Strain);
+    if (!external_.empty()) {
+      external_[static_cast<std::size_t>(c)].addProduct(x + first, forces_.data() + first);
+    }
     mass_[static_cast<std::size_t>(c)]->solve(forces_.data() + first, loads_.data() + first, kMassSolveTolerance);
     if (stiffness.hasBending()) { // the bending forces' density, as the membrane makes it
       stiffness.apply(x + first, forces_.data() + first, elasticity::TangentStiffness::Part::Bending);
@@ -183,6 +195,10 @@ std::string VelocityJacobian::describe() const
       line << " (with the bending stiffness on the normal modes)";
       break;
     }
+  }
+  if (!external_.empty()) {
+    line << (scene_.hasBonds() ? " and of the bonds" : "")
+         << (scene_.description().contact.enabled && scene_.description().wall ? " and of the wall contact" : "");
   }
   line << ", frozen each step";
   if (scene_.description().viscosityRatio != 1.0) {

@@ -5,8 +5,10 @@
 #include <capsula/mesh/Measures.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/scene/CellKinematics.hpp>
+#include <capsula/scene/NodesAboveWall.hpp>
 #include <capsula/scene/Scene.hpp>
 #include <capsula/scene/SceneDescription.hpp>
+#include <capsula/timeint/TimeIntegrator.hpp>
 
 #include <Tpetra_Core.hpp>
 #include <gtest/gtest.h>
@@ -171,6 +173,39 @@ TEST(Scene, ReportsANodeReachingTheWallDuringTheRun)
   }
   x[1] = NAN;
   EXPECT_THROW(s.velocity(1.25, x, u), core::NumericalError);
+}
+
+// The runs' domain check (NodesAboveWall.hpp): a stage state with a node on or below the wall
+// (or a NaN height) is outside the model, named by cell and node, with the hint that fits the
+// deck; a state above it, or any state without a wall, passes.
+TEST(Scene, DomainCheckNamesTheNodeThroughTheWall)
+{
+  for (const bool contact : {false, true}) {
+    auto s = makeScene(*smallDeck(1, 2.0, true, [&](Teuchos::ParameterList& d) {
+      d.sublist("Cells").sublist("Cell 1").set("Center", scene::testing::realArray({3.0, 2.0, 0.0}));
+      d.sublist("Cells").sublist("Cell 1").set("Mesh level", 1);
+      d.sublist("Contact").set("Enabled", contact);
+    }));
+    std::vector<double> x = s.initialPositions();
+    EXPECT_NO_THROW(scene::requireNodesAboveWall(s, x));
+    const std::size_t node = 7;
+    for (const double y : {0.0, -0.2, static_cast<double>(NAN)}) {
+      x[3 * (static_cast<std::size_t>(s.nodeOffset(1)) + node) + 1] = y;
+      try {
+        scene::requireNodesAboveWall(s, x);
+        ADD_FAILURE() << "y = " << y << " must be outside";
+      } catch (const capsula::timeint::StateOutsideDomain& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("node 7 of 'Cells/Cell 1' reached the wall"), std::string::npos) << what;
+        EXPECT_NE(what.find(contact ? "'Contact/Strength'" : "unless 'Contact/Enabled' is true"), std::string::npos)
+            << what;
+      }
+    }
+  }
+  auto free = makeScene(*smallDeck(1, 0.8, false));
+  std::vector<double> x = free.initialPositions();
+  x[1] = -5.0;
+  EXPECT_NO_THROW(scene::requireNodesAboveWall(free, x));
 }
 
 } // namespace

@@ -100,6 +100,55 @@ TEST(VelocityJacobian, IsTheDerivativeOfTheVelocityAtRest)
   }
 }
 
+// With bonds, J~ carries their stiffness (ExternalLoadStiffness.hpp). Bonds set by hand at
+// their equilibrium length pull with zero force, so the load still vanishes and J~ must
+// still be the exact derivative; their stiffness sigma e e^T (sigma = 50 G, 10-20 bonds
+// under the cell) then is most of the derivative's size: leaving it out, or its sign
+// wrong, misses by O(1). Tolerance as above.
+TEST(VelocityJacobian, CarriesTheBondStiffness)
+{
+  auto deck = smallDeck(1, 1.04, true, [](Teuchos::ParameterList& d) {
+    d.sublist("Flow").set("Capillary number", 0.05);
+    d.sublist("Solver").sublist("Stiff").set("Quadrature points", 0);
+    auto& adhesion = d.sublist("Adhesion");
+    adhesion.set("Enabled", true);
+    adhesion.set("Spring constant", 50.0);
+    adhesion.set("Equilibrium length", 0.05);
+  });
+  auto s = makeScene(*deck);
+  const std::vector<double> x = s.initialPositions();
+  auto& bonds = s.bonds().bonds(0);
+  int count = 0;
+  for (int r = 0; r < bonds.size(); ++r) {
+    const capsula::mesh::Vec3 p = s.bonds().receptors(0).position(s.cell(0), x.data(), r);
+    if (p[1] < 0.2) { // tilted bonds: a stiffness along x, y and z
+      const capsula::mesh::Vec3 e = capsula::mesh::Vec3(0.4 * std::sin(r), 1.0, 0.3 * std::cos(r)).normalized();
+      bonds.setState(r, {1.0, p - 0.05 * e});
+      ++count;
+    }
+  }
+  ASSERT_GE(count, 5);
+  scene::VelocityJacobian jacobian(s, *deck, kernels());
+  EXPECT_NE(jacobian.describe().find("and of the bonds"), std::string::npos) << jacobian.describe();
+  jacobian.linearise(0.0, x);
+  const std::vector<double> v = direction(x.size());
+  std::vector<double> Jv(x.size());
+  jacobian.apply(v.data(), Jv.data());
+  const double e = 1e-5;
+  std::vector<double> plus(x), minus(x), up, um;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    plus[i] += e * v[i];
+    minus[i] -= e * v[i];
+  }
+  s.velocity(0.0, plus, up);
+  s.velocity(0.0, minus, um);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    worst = std::max(worst, std::abs(Jv[i] - (up[i] - um[i]) / (2 * e)));
+  }
+  EXPECT_LT(worst, 1e-6 * maxAbs(Jv));
+}
+
 // The stage solve of a stiff membrane (Ca = 0.002, a level-2 neo-Hookean capsule, shift
 // 0.05: shift * rho ~ 1e3) reaches its RMS target; the preconditioner cuts the iterations
 // at least fivefold.

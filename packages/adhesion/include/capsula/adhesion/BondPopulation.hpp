@@ -21,6 +21,7 @@
 // rates frozen over the step. The anchor is the occupancy-weighted mean of the surviving
 // bonds' anchor (weight p exp(-k_off dt)) and the new bonds' (the point below the receptor).
 #include "capsula/adhesion/AdhesionParameters.hpp"
+#include "capsula/adhesion/LoadStiffness.hpp"
 #include "capsula/adhesion/Receptors.hpp"
 
 #include <capsula/mesh/SurfaceMesh.hpp>
@@ -91,6 +92,12 @@ public:
   {
     return addNodalForces(mesh, receptors, positions, nodalForces, 0, size());
   }
+
+  /// Adds the stiffness -dF_k/dx_l of the bonds' nodal forces F_k = phi_k F(x), x = sum_l
+  /// phi_l x_l, to `stiffness`: phi_k phi_l occupancy sigma [(1 - lambda/L) I + (lambda/L) e e^T]
+  /// per bond of length L along e, the Hessian of its energy sigma (L - lambda)^2 / 2.
+  void addStiffness(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors, const double* positions,
+                    LoadStiffness& stiffness) const;
 
   /// The bonds with occupancy > 0, in receptor order.
   std::vector<BondRecord> records(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors,

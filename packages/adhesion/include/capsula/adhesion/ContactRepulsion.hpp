@@ -25,6 +25,7 @@
 //          nodes, so the pair's total force and torque vanish to round-off.
 // A gap <= 0 (a node through the wall) is evaluated at 1e-6 delta: a huge, finite push back.
 #include "capsula/adhesion/ContactParameters.hpp"
+#include "capsula/adhesion/LoadStiffness.hpp"
 
 #include <capsula/mesh/SurfaceMesh.hpp>
 #include <capsula/mesh/Vec3.hpp>
@@ -37,6 +38,10 @@ namespace capsula::adhesion {
 /// p(gap) in units of G / a.
 double repulsionPressure(const ContactSettings& contact, double gap);
 
+/// dp/d(gap), G / a^2: negative below the range, 0 at and beyond it (and below the gap
+/// 1e-6 delta, where the pressure is held constant).
+double repulsionPressureSlope(const ContactSettings& contact, double gap);
+
 /// a_k = sum over the elements of node k of A_e / 6, at `positions` (3 per node).
 std::vector<double> nodalAreaShares(const mesh::SurfaceMesh& mesh, const double* positions);
 
@@ -44,6 +49,12 @@ std::vector<double> nodalAreaShares(const mesh::SurfaceMesh& mesh, const double*
 /// total. `areas` from nodalAreaShares at the same positions.
 mesh::Vec3 addWallContactForces(const ContactSettings& contact, const mesh::SurfaceMesh& mesh, const double* positions,
                                 const std::vector<double>& areas, double* nodalForces);
+
+/// Adds the stiffness of the wall repulsion at fixed area shares, -dF_k,y/dy_k = -p'(y_k) a_k
+/// (>= 0, on the diagonal), to `stiffness`. How a_k changes with the nodes is left out: it is
+/// of the size of the force itself and does not make the motion stiff.
+void addWallContactStiffness(const ContactSettings& contact, const mesh::SurfaceMesh& mesh, const double* positions,
+                             const std::vector<double>& areas, LoadStiffness& stiffness);
 
 /// Adds the repulsion between cells A and B to their nodal forces (3 per node each); returns
 /// the total force on A (the one on B is its opposite). Nodes farther than the range from

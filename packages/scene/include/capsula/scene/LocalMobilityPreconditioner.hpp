@@ -14,7 +14,9 @@
 //
 // On the fast, grid-scale membrane modes S acts locally and P is close to W; the smooth
 // modes, where the nonlocal S is larger than any local mobility, are left to GMRES, a few
-// iterations. Every rank applies P to the whole (replicated) vector.
+// iterations. Every rank applies P to the whole (replicated) vector. The stiffness of the
+// forces from outside (bonds, wall contact: adhesion LoadStiffness.hpp) adds to H.
+#include <capsula/adhesion/LoadStiffness.hpp>
 #include <capsula/elasticity/TangentStiffness.hpp>
 
 #include <Eigen/Sparse>
@@ -36,9 +38,11 @@ public:
   /// `map`: locally replicated, 3 unknowns per node of the scene.
   explicit LocalMobilityPreconditioner(Teuchos::RCP<const Map> map);
 
-  /// The cell whose nodes start at `firstNode`: its stiffness H and mobilities b (one per
-  /// node). Replaces what an earlier call gave for the same cell.
-  void setCell(int cell, int firstNode, const elasticity::TangentStiffness& stiffness, std::vector<double> mobility);
+  /// The cell whose nodes start at `firstNode`: its stiffness H (plus `external`, if any,
+  /// numbered within the cell) and mobilities b (one per node). Replaces what an earlier
+  /// call gave for the same cell.
+  void setCell(int cell, int firstNode, const elasticity::TangentStiffness& stiffness, std::vector<double> mobility,
+               const adhesion::LoadStiffness* external = nullptr);
   /// Factorises B^-1 + shift H of every cell (nothing if the shift has not changed).
   void setShift(double shift);
 

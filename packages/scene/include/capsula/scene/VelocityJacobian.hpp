@@ -6,7 +6,9 @@
 //   J~ v = P [ -c_d S(x_n)[M(x_n)^-1 H(x_n) v] + 2/(1 + lambda_d) grad u_inf . v ],
 //
 // (with bending, H's bending part goes through the bending load's own density map,
-// elasticity::LinearLumpedLoad, as in the right-hand side),
+// elasticity::LinearLumpedLoad, as in the right-hand side; with bonds or wall contact, H
+// includes the stiffness K = -dF/dx of those forces, ExternalLoadStiffness.hpp, since the
+// membrane passes dE/dx - F to the fluid),
 //
 // frozen at the step's start x_n: H the membranes' tangent stiffness (second variation
 // of the strain energy, elasticity::TangentStiffness), M their mass matrices (the load is
@@ -70,6 +72,7 @@ private:
   operators::SolverParameters gmres_;
   std::unique_ptr<operators::BoundaryIntegralSolver> frozen_;              // the single layer at x_n
   std::vector<elasticity::TangentStiffness> stiffness_;                    // per cell, at x_n
+  std::vector<adhesion::LoadStiffness> external_;                          // per cell, at x_n (bonds, contact)
   std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_;             // per cell, at x_n
   std::vector<std::unique_ptr<elasticity::LinearLumpedLoad>> bendingLoad_; // per cell
   std::vector<std::vector<double>> nodalAreas_;                            // per cell, int phi_k dS at x_n

@@ -1,0 +1,22 @@
+#pragma once
+// The domain of a scene with a wall: every node above y = 0. The wall kernel meets its own
+// image there, and the contact repulsion diverges as a node approaches it, so a state with a
+// node on or below the wall is outside the model.
+//
+// requireNodesAboveWall is the 3D runs' domain check (timeint TimeIntegrator::setDomainCheck):
+// a stage state of a step too large for the fast motion near the wall (a node pulled down by
+// its bonds, pushed back by the repulsion) puts a node through the wall although smaller
+// steps stay above it, so the attempt is rejected and retried with half the step; the run
+// fails only when the step falls below 'Time integration/Minimum step'.
+#include "capsula/scene/Scene.hpp"
+
+#include <vector>
+
+namespace capsula::scene {
+
+/// Throws timeint::StateOutsideDomain naming the first node (its cell, its index, its
+/// height) of `positions` (3 per node, the scene's numbering) on or below the wall y = 0 or
+/// with a non-finite height. Nothing to check without a wall.
+void requireNodesAboveWall(const Scene& scene, const std::vector<double>& positions);
+
+} // namespace capsula::scene
