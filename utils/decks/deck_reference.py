@@ -41,6 +41,10 @@ def rows(element, path, out):
             out.append((path, name, child.get("type"), child.get("value"), doc))
         elif child.tag == "ParameterList":
             sub_docs[name] = doc
+            if len(child) == 0:
+                # A sublist without declared keys (one whose entries a library checks, such as
+                # Solver/Belos): its doc string says what goes in it.
+                out.append((path + [name], None, None, None, doc))
             rows(child, path + [name], out)
         doc = ""
     return sub_docs
@@ -56,6 +60,9 @@ def markdown_for(app, root):
         if section != current:
             lines += ["", f"### {section}", "", "| key | type | default | meaning |", "|---|---|---|---|"]
             current = section
+        if key is None:
+            lines[-2:] = [doc]  # no table: the doc string says what goes in it
+            continue
         doc = doc.replace("|", "\\|")
         lines.append(f"| `{key}` | {typ} | `{value}` | {doc} |")
     return "\n".join(lines) + "\n"

@@ -5,6 +5,7 @@
 
 #include "capsula/core/DeckValidators.hpp"
 #include "capsula/core/Error.hpp"
+#include "capsula/core/PassThroughSublist.hpp"
 
 #include <Teuchos_ParameterEntryXMLConverterDB.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
@@ -75,6 +76,9 @@ void checkAgainst(Teuchos::ParameterList& deck, const Teuchos::ParameterList& va
                                validEntry->isList() ? "a ParameterList (sublist)" : "a Parameter (value)", ", not a ",
                                entry.isList() ? "sublist" : "value", "."));
     }
+    if (isPassThroughSublist(*validEntry)) {
+      continue; // its reader checks its entries (PassThroughSublist.hpp)
+    }
     if (entry.isList()) {
       checkAgainst(Teuchos::getValue<Teuchos::ParameterList>(entry),
                    Teuchos::getValue<Teuchos::ParameterList>(*validEntry), keyPath, deckName);
@@ -117,6 +121,42 @@ const Teuchos::ParameterEntry* findEntry(const Teuchos::ParameterList& list, con
     current = &current->sublist(path[i]);
   }
   return current->getEntryPtr(path.back());
+}
+
+// Whether `path` names a key inside a pass-through sublist of `valid`.
+bool insidePassThroughSublist(const Teuchos::ParameterList& valid, const std::vector<std::string>& path)
+{
+  const Teuchos::ParameterList* current = &valid;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const Teuchos::ParameterEntry* entry = current->getEntryPtr(path[i]);
+    if (entry == nullptr || !entry->isList()) {
+      return false;
+    }
+    if (isPassThroughSublist(*entry)) {
+      return true;
+    }
+    current = &Teuchos::getValue<Teuchos::ParameterList>(*entry);
+  }
+  return false;
+}
+
+// A --set value for a key no list declares (inside a pass-through sublist): typed by how its
+// text reads, an integer, a real, true/false, otherwise a string. The reader's check
+// converts an integer where it takes a real.
+void setUntypedValue(Teuchos::ParameterList& list, const std::string& name, const std::string& text)
+{
+  int integer = 0;
+  double real = 0.0;
+  const std::string t = detail::trimmed(text);
+  if (detail::parseInteger(t, integer)) {
+    list.set(name, integer);
+  } else if (detail::parseFiniteReal(t, real)) {
+    list.set(name, real);
+  } else if (t == "true" || t == "false") {
+    list.set(name, t == "true");
+  } else {
+    list.set(name, text);
+  }
 }
 
 std::vector<std::string> splitPath(const std::string& key)
@@ -186,6 +226,14 @@ void applyOverride(Teuchos::ParameterList& deck, const Teuchos::ParameterList& v
   const Teuchos::ParameterEntry* target = findEntry(valid, path);
   if (target == nullptr) {
     target = findEntry(deck, path);
+  }
+  if (target == nullptr && insidePassThroughSublist(valid, path)) {
+    Teuchos::ParameterList* list = &deck;
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      list = &list->sublist(path[i]);
+    }
+    setUntypedValue(*list, path.back(), assignment.substr(eq + 1));
+    return;
   }
   if (target == nullptr || target->isList()) {
     std::string msg = "--set \"" + assignment + "\": '" + key + "' is not a parameter of this app.";

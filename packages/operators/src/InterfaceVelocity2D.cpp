@@ -1,6 +1,6 @@
 #include "capsula/operators/InterfaceVelocity2D.hpp"
 
-#include "capsula/operators/GmresSolve.hpp"
+#include "capsula/operators/KrylovSolve.hpp"
 #include "capsula/operators/LayerPotentials2D.hpp"
 #include "capsula/operators/SecondKindOperator.hpp"
 
@@ -105,11 +105,10 @@ public:
         std::copy(rhs.begin(), rhs.end(), xData.begin());
       }
     }
-    const GmresResult result = solveWithGmres(A, b, x, solver_);
-    core::require<core::NumericalError>(result.converged, "GMRES did not converge for the viscosity ratio ", lambda,
-                                        " after ", result.iterations, " iterations (relative residual ",
-                                        result.residual, ", Solver/Tolerance ", solver_.tolerance,
-                                        "): raise Solver/Maximum iterations or Solver/Tolerance.");
+    const KrylovResult result = solveLinearSystem(A, b, x, solver_);
+    core::require<core::NumericalError>(
+        result.converged,
+        stoppedShortMessage(core::message("the viscosity-ratio equation (lambda = ", lambda, ")"), solver_, result));
     std::vector<double> ownedVelocity(rhs.size());
     {
       const auto xData = x->getData(0);

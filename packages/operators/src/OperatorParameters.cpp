@@ -1,5 +1,7 @@
 #include "capsula/operators/OperatorParameters.hpp"
 
+#include "capsula/operators/KrylovMethod.hpp"
+
 #include <capsula/core/Error.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/quadrature/TriangleRule.hpp>
@@ -64,23 +66,25 @@ namespace {
 void declareSolverKeys(Teuchos::ParameterList& solver, double defaultTolerance, const std::string& toleranceDoc)
 {
   const SolverParameters defaults;
+  declareKrylovMethod(solver);
   core::declareReal(solver, "Tolerance", defaultTolerance,
-                    "GMRES stopping tolerance on the relative residual ||b - A u|| / ||b|| of the "
+                    "Stopping tolerance on the relative residual ||b - A u|| / ||b|| of the "
                     "viscosity-ratio equation (used only when some cell has lambda != 1)." +
                         toleranceDoc,
                     core::greaterThan(0.0), core::lessThan(1.0));
   core::declareInt(solver, "Restart", defaults.restart,
-                   "Krylov vectors GMRES keeps before it restarts (Belos 'Num Blocks').", 1, 1000);
+                   "Krylov vectors a GMRES method keeps before it restarts (Belos 'Num Blocks').", 1, 1000);
   core::declareInt(solver, "Maximum iterations", defaults.maximumIterations,
-                   "GMRES iterations before the solve is declared failed.", 1, 100000);
+                   "Iterations before the solve is declared failed (Belos 'Maximum Iterations').", 1, 100000);
   core::declareBool(solver, "Warm start", true,
-                    "Start each GMRES solve of a run from the combination of the last 6 solutions "
+                    "Start each solve of a run from the combination of the last 6 solutions "
                     "whose right-hand sides best reproduce the new one (least squares; "
                     "operators::WarmStartHistory) instead of from the right-hand side. RKF45's "
                     "stages are combinations of the same slopes, so the start is close and saves "
-                    "GMRES iterations. The stopping test is relative to ||b||, so its meaning does not change. The "
+                    "iterations. The stopping test is relative to ||b||, so its meaning does not change. The "
                     "checkpoint carries the history: a restarted run still repeats the uninterrupted "
                     "one bit for bit.");
+  declareBelosParameters(solver);
 }
 
 } // namespace
@@ -104,7 +108,7 @@ void declareOperatorParameters(Teuchos::ParameterList& deck)
   declareDiscretisationParameters(
       core::declareSublist(deck, "Discretisation", "Quadrature of the boundary integrals (thesis Section 3.6)."));
   declareSurfaceSolverParameters(
-      core::declareSublist(deck, "Solver", "GMRES for the viscosity-ratio equation (thesis Section 3.8)."));
+      core::declareSublist(deck, "Solver", "The Krylov solve of the viscosity-ratio equation (thesis Section 3.8)."));
 }
 
 DiscretisationParameters readDiscretisationParameters(const Teuchos::ParameterList& discretisation)
@@ -122,11 +126,19 @@ DiscretisationParameters readDiscretisationParameters(const Teuchos::ParameterLi
 SolverParameters readSolverParameters(const Teuchos::ParameterList& solver)
 {
   SolverParameters p;
+  if (solver.isParameter("Method")) {
+    p.method = solver.get<std::string>("Method");
+  }
+  if (solver.isSublist("Belos")) {
+    p.belos = solver.sublist("Belos");
+  }
   p.tolerance = solver.get<double>("Tolerance");
   p.restart = solver.get<int>("Restart");
   p.maximumIterations = solver.get<int>("Maximum iterations");
   p.warmStart = solver.isParameter("Warm start") && solver.get<bool>("Warm start");
   validate(p);
+  // As Belos takes them (an int where it takes a double converted).
+  p.belos = checkedBelosEntries(p.belos, p.method);
   return p;
 }
 
@@ -157,6 +169,7 @@ void validate(const SolverParameters& p)
   core::require<core::InputError>(p.restart >= 1, "'Solver/Restart' = ", p.restart, " must be >= 1, e.g. 50.");
   core::require<core::InputError>(p.maximumIterations >= 1, "'Solver/Maximum iterations' = ", p.maximumIterations,
                                   " must be >= 1.");
+  validateKrylovSettings(p);
 }
 
 } // namespace capsula::operators

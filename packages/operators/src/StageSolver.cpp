@@ -1,6 +1,6 @@
 #include "capsula/operators/StageSolver.hpp"
 
-#include <capsula/operators/GmresSolve.hpp>
+#include <capsula/operators/KrylovSolve.hpp>
 
 #include <Tpetra_MultiVector.hpp>
 
@@ -44,7 +44,7 @@ StageSolveResult StageSolver::solve(double shift, const std::vector<double>& r, 
   SolverParameters parameters = gmres_;
   parameters.tolerance = std::max(target / norm, 1e-14);
   const bool zeroGuess = std::all_of(x.begin(), x.end(), [](double v) { return v == 0.0; });
-  const GmresResult gmres = solveWithGmres(stage_, preconditioner_, b, solution, parameters, zeroGuess);
+  const KrylovResult gmres = solveWithFlexibleGmres(stage_, preconditioner_, b, solution, parameters, zeroGuess);
   const auto xData = solution->getData(0);
   x.assign(xData.begin(), xData.end());
   result.converged = gmres.converged;

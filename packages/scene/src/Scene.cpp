@@ -163,8 +163,9 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     if (description_.viscosityRatio == 1.0) {
       line << "viscosity ratio 1: explicit velocity (no double layer, no linear solve)";
     } else {
-      line << "viscosity ratio " << description_.viscosityRatio << ": double layer and Belos GMRES (tolerance "
-           << solverParameters.tolerance << (solverParameters.warmStart ? ", warm start" : "") << ")";
+      line << "viscosity ratio " << description_.viscosityRatio << ": double layer and Belos "
+           << solverParameters.method << " (tolerance " << solverParameters.tolerance
+           << (solverParameters.warmStart ? ", warm start" : "") << ")";
     }
     terms_.push_back(line.str());
   }
@@ -369,8 +370,7 @@ void Scene::computeExternalForces()
   if (!description_.contact.enabled) {
     return;
   }
-  // The repulsion of the wall and of the other cells on each membrane (adhesion
-  // ContactRepulsion.hpp), as physical nodal forces on it.
+  // The repulsion of the wall and of the other cells on each membrane, as nodal forces (adhesion ContactRepulsion.hpp).
   const adhesion::ContactSettings& contact = description_.contact;
   std::vector<std::vector<double>> areas(cells_.size());
   for (std::size_t c = 0; c < cells_.size(); ++c) {
@@ -421,7 +421,7 @@ void Scene::velocity(double t, const std::vector<double>& positions, std::vector
   setPositions(t, positions);
   computeLoads(t, elasticity::MembraneEvaluation::LoadOnly); // no output reads the tensions of a stage
   Teuchos::TimeMonitor guard(*velocityTimer_);
-  // Warm start: GMRES begins at a combination of the last solutions (O(step) away).
+  // Warm start: the Krylov solve begins at a combination of the last solutions (O(step) away).
   const operators::LoadDensity load(loadDensity_.data());
   const operators::FlowConditions flow = flowAt(t);
   operators::VelocitySolution solution =

@@ -113,7 +113,7 @@ void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::Parame
   core::declareReal(flow, "Viscosity ratio", 1.0,
                     "lambda = internal / external viscosity. 1 gives the explicit velocity (eq "
                     "3.38 without the double layer); any other value adds the double layer and a "
-                    "GMRES solve.",
+                    "Krylov solve ('Solver/Method').",
                     core::greaterThan(0.0));
   operators::declareShearRateParameters(core::declareSublist(
       flow, "Shear rate", "The shear rate k(t) over its mean: steady, pulsatile or a tabulated waveform."));

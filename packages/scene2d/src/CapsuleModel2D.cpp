@@ -42,6 +42,7 @@ CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& com
     : cell_(cell),
       flow_(flow),
       discretisation_(discretisation),
+      krylovMethod_(solver.method),
       referenceNodes_(initialCellNodes(cell)),
       freeReference_(elasticity::prestressedReference2D(referenceNodes_, cell.prestress))
 {
@@ -80,7 +81,7 @@ std::vector<std::string> CapsuleModel2D::terms() const
 {
   std::vector<std::string> terms{"single layer, " + kernelName() + " Green's function, log-singular rule"};
   if (flow_.conditions.viscosityRatio != 1.0) {
-    terms.emplace_back("double layer (subtracted) with Belos GMRES, lambda != 1");
+    terms.emplace_back("double layer (subtracted) with Belos " + krylovMethod_ + ", lambda != 1");
   }
   if (cell_.bendingModulus > 0.0) {
     std::ostringstream line;

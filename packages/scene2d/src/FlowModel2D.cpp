@@ -13,7 +13,7 @@ void declareFlowParameters2D(Teuchos::ParameterList& flow)
                     core::greaterThan(0.0));
   core::declareReal(flow, "Viscosity ratio", 1.0,
                     "lambda = inside / outside viscosity. 1 gives the velocity explicitly; otherwise "
-                    "GMRES solves for it (Solver sublist). The thesis studied 1 to 10; time is "
+                    "a Krylov method solves for it ('Solver/Method'). The thesis studied 1 to 10; time is "
                     "reported as k t / lambda.",
                     core::greaterThan(0.0));
   operators::declareShearRateParameters(core::declareSublist(

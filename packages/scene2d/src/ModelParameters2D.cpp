@@ -24,7 +24,7 @@ void declareModelParameters2D(Teuchos::ParameterList& valid, const operators::Ke
   declareTetherParameters2D(declareSublist(valid, "Tether", "The tether procedure (thesis Section 4.1)."));
   operators::declareContourDiscretisation2D(
       declareSublist(valid, "Discretisation", "Quadrature of the contour integrals (thesis App. A.6)."));
-  auto& solver = declareSublist(valid, "Solver", "GMRES for the viscosity-ratio equation (thesis App. A.7).");
+  auto& solver = declareSublist(valid, "Solver", "The Krylov solve of the viscosity-ratio equation (thesis App. A.7).");
   operators::declareSolverParameters(solver);
   declareStiffSolverParameters2D(declareSublist(
       solver, "Stiff",

@@ -295,6 +295,9 @@ TEST(OperatorParameters, DeclaredDefaultsReadBack)
   EXPECT_TRUE(s.warmStart);
   EXPECT_EQ(s.restart, sd.restart);
   EXPECT_EQ(s.maximumIterations, sd.maximumIterations);
+  EXPECT_EQ(s.method, "Block GMRES");
+  EXPECT_EQ(s.belos.numParams(), 0);
+  EXPECT_TRUE(deck.sublist("Solver").isSublist("Belos"));
   // The 2D contour's list keeps the struct's tolerance and has the warm start on too.
   Teuchos::ParameterList contour;
   declareSolverParameters(contour);
@@ -302,12 +305,16 @@ TEST(OperatorParameters, DeclaredDefaultsReadBack)
   const SolverParameters c = readSolverParameters(contour);
   EXPECT_EQ(c.tolerance, sd.tolerance);
   EXPECT_TRUE(c.warmStart);
-  // A list without the key (a caller that never declared it) reads as no warm start.
+  EXPECT_EQ(c.method, "Block GMRES");
+  EXPECT_TRUE(contour.isSublist("Belos"));
+  // A list without the keys (a caller that never declared them) reads as no warm start and
+  // the default method.
   Teuchos::ParameterList bare;
   bare.set("Tolerance", 1e-8);
   bare.set("Restart", 30);
   bare.set("Maximum iterations", 100);
   EXPECT_FALSE(readSolverParameters(bare).warmStart);
+  EXPECT_EQ(readSolverParameters(bare).method, "Block GMRES");
 }
 
 TEST(OperatorParameters, RuleWithoutTriangleRuleIsRejectedByName)

@@ -2,6 +2,7 @@
 // (StageSolver.hpp). A small dense J~ stands for the scene's Jacobian.
 #include <capsula/operators/StageSolver.hpp>
 
+#include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Core.hpp>
 
 #include <gtest/gtest.h>
@@ -63,6 +64,35 @@ double norm(const std::vector<double>& v)
   return std::sqrt(s);
 }
 
+// M = diag(W)^-1 at a fixed shift: a right preconditioner that leaves a few iterations.
+class StageDiagonalInverse final : public Tpetra::Operator<double> {
+public:
+  StageDiagonalInverse(Teuchos::RCP<const Tpetra::Map<>> map, double shift) : map_(std::move(map)), shift_(shift) {}
+  Teuchos::RCP<const Tpetra::Map<>> getDomainMap() const override { return map_; }
+  Teuchos::RCP<const Tpetra::Map<>> getRangeMap() const override { return map_; }
+  void apply(const Tpetra::MultiVector<double>& X, Tpetra::MultiVector<double>& Y, Teuchos::ETransp, double alpha,
+             double beta) const override
+  {
+    for (std::size_t v = 0; v < X.getNumVectors(); ++v) {
+      const auto x = X.getData(v);
+      auto y = Y.getDataNonConst(v);
+      for (std::size_t i = 0; i < kN; ++i) {
+        y[i] = (beta == 0.0 ? 0.0 : beta * y[i]) + alpha * x[i] / (1.0 - shift_ * jacobianEntry(i, i));
+      }
+    }
+  }
+
+private:
+  Teuchos::RCP<const Tpetra::Map<>> map_;
+  double shift_;
+};
+
+int blockGmresSolves()
+{
+  const auto timer = Teuchos::TimeMonitor::lookupCounter("Belos: BlockGmresSolMgr total solve time");
+  return timer.is_null() ? 0 : timer->numCalls();
+}
+
 } // namespace
 
 // Each solve reaches its RMS residual target in the true residual (W recomputed here); a
@@ -104,4 +134,42 @@ TEST(StageSolver, ReachesItsTargetFromZeroAndFromAGuess)
   EXPECT_TRUE(trivial.converged);
   EXPECT_EQ(trivial.iterations, 0);
   EXPECT_EQ(norm(x), 0.0);
+}
+
+// The stage solves keep flexible GMRES whatever 'Solver/Method' and 'Solver/Belos' say
+// (StageSolver.hpp): Belos's block GMRES solver runs, the Belos entry that would stop it
+// after one iteration does not apply, and W is applied once per iteration and no more (no
+// explicit residual to confirm the estimate: the flexible variant).
+TEST(StageSolver, KeepsFlexibleGmresWhateverTheViscosityRatioMethod)
+{
+  const auto comm = Tpetra::getDefaultComm();
+  auto map = Teuchos::rcp(new Tpetra::Map<>(kN, 0, comm, Tpetra::LocallyReplicated));
+  const double shift = 0.2;
+  capsula::operators::SolverParameters gmres;
+  gmres.restart = 20; // more than the iterations it takes: no restart, whose residual costs an application
+  gmres.maximumIterations = 200;
+  gmres.method = "TFQMR";
+  gmres.belos.set("Maximum Iterations", 1);
+  long long applications = 0;
+  const auto counted = [&](const double* x, double* y) {
+    ++applications;
+    applyJacobian(x, y);
+  };
+  StageSolver solver(map, counted, Teuchos::rcp(new StageDiagonalInverse(map, shift)), gmres);
+  std::vector<double> x(kN, 0.0);
+  const int before = blockGmresSolves();
+  const auto result = solver.solve(shift, pattern(0.4, 0.3), x, 1e-10);
+  EXPECT_EQ(blockGmresSolves(), before + 1);
+  ASSERT_TRUE(result.converged);
+  EXPECT_GT(result.iterations, 1);
+  EXPECT_LT(result.iterations, gmres.restart);
+  EXPECT_EQ(applications, result.iterations);
+  const std::vector<double> W = applyW(shift, x);
+  const std::vector<double> r = pattern(0.4, 0.3);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < kN; ++i) {
+    sum += (W[i] - r[i]) * (W[i] - r[i]);
+  }
+  // Flexible GMRES's residual is that of its iterate (1% margin for round-off).
+  EXPECT_LT(std::sqrt(sum / kN), 1.01e-10);
 }

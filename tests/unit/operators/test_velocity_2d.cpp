@@ -6,11 +6,14 @@
 #include <capsula/operators/InterfaceVelocity2D.hpp>
 
 #include <Eigen/LU>
+#include <Teuchos_TimeMonitor.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -207,6 +210,47 @@ TEST(InterfaceVelocity2D, WarmStartHistoryStartsCloserAndSolvesTheSameEquation)
   // a few times that of the largest velocity (different Krylov spaces: not bit for bit).
   EXPECT_LT(difference, 1e-8 * scale);
   EXPECT_GT(difference, 0.0);
+}
+
+// The 2D contour's solve takes 'Solver/Method' too (KrylovMethod.hpp): TFQMR and BiCGStab
+// reach Block GMRES's velocities on the lambda = 5 equation, tethered above the wall, and
+// Belos's solver of that name ran.
+TEST(InterfaceVelocity2D, ChosenKrylovMethodSolvesTheSameEquation)
+{
+  const auto c = ellipse(32, 1.0, {0.0, 1.2}, contour::Closure::Tethered);
+  const auto load = [](const contour::ContourPoint& p, int, double) -> Eigen::Vector2d {
+    return 0.3 * p.normal + 0.1 * p.tangent * p.position.y();
+  };
+  FlowConditions2D flow;
+  flow.capillaryNumber = 0.1;
+  flow.viscosityRatio = 5.0;
+  SolverParameters solver;
+  solver.tolerance = 1e-12;
+  const auto gmres = makeInterfaceVelocity2D(true, serialComm(), 32, {}, solver)->nodeVelocities(c, load, flow, {0});
+  double scale = 0.0;
+  for (const double u : gmres.velocities) {
+    scale = std::max(scale, std::abs(u));
+  }
+  for (const auto& [method, solverClass] : {std::pair<std::string, std::string>{"TFQMR", "TFQMRSolMgr"},
+                                            std::pair<std::string, std::string>{"BiCGStab", "BiCGStabSolMgr"}}) {
+    solver.method = method;
+    const auto solves = [&] {
+      const auto timer = Teuchos::TimeMonitor::lookupCounter("Belos: " + solverClass + " total solve time");
+      return timer.is_null() ? 0 : timer->numCalls();
+    };
+    const int before = solves();
+    const auto solution =
+        makeInterfaceVelocity2D(true, serialComm(), 32, {}, solver)->nodeVelocities(c, load, flow, {0});
+    EXPECT_EQ(solves(), before + 1) << method;
+    EXPECT_EQ(solution.velocities[0], 0.0) << method; // the tethered node
+    double difference = 0.0;
+    for (std::size_t k = 0; k < solution.velocities.size(); ++k) {
+      difference = std::max(difference, std::abs(solution.velocities[k] - gmres.velocities[k]));
+    }
+    // Both stop at the relative residual 1e-12 of a well-conditioned equation (a few units
+    // of conditioning, GmresSolutionSatisfiesTheEquation): 1e-10 of the largest velocity.
+    EXPECT_LT(difference, 1e-10 * scale) << method;
+  }
 }
 
 namespace {

@@ -20,7 +20,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <string>
+#include <typeindex>
 #include <vector>
 
 namespace capsula::run {
@@ -137,6 +139,38 @@ TEST(OperatorPlugins, UnknownNamesListTheRegisteredOnes)
                              "Wall."),
             std::string::npos)
       << unvalidated;
+}
+
+// A far-field back-end that supports no kernel.
+class NoKernelBackEnd final : public operators::FarFieldBackEnd {
+public:
+  std::string name() const override { return "NoKernels"; }
+  std::unique_ptr<operators::FarFieldSummation> forKernel(std::type_index, const std::string&) const override
+  {
+    return nullptr;
+  }
+};
+
+// A back-end without the kernel the deck names is refused when the scene is built, before
+// the first step, naming both keys; with lambda != 1 the double layer's sums, which it would
+// also have to do, never start.
+TEST(OperatorPlugins, SummationWithoutTheKernelIsRefusedAtStartUpNamingBothKeys)
+{
+  OperatorLibraries libraries = librariesWithToyKernel();
+  libraries.summations.add("NoKernels", "supports no kernel", [](const Teuchos::ParameterList&) {
+    return std::shared_ptr<const operators::FarFieldBackEnd>(std::make_shared<NoKernelBackEnd>());
+  });
+  for (const bool wall : {false, true}) {
+    auto deck = scene::testing::sphereDeck(1, wall ? 2.0 : 0.0, wall);
+    deck->sublist("Flow").set("Viscosity ratio", 5.0);
+    deck->sublist("Operator").set("Summation", "NoKernels");
+    core::validateDeck(*deck, *validSceneRunParameters(*deck, "test", libraries), "test deck");
+    const std::string error = inputErrorMessage([&] {
+      scene::Scene(scene::describeScene(*deck), *deck, Tpetra::getDefaultComm(), kernelsForDeck(libraries, *deck));
+    });
+    EXPECT_NE(error.find("'Operator/Summation' = NoKernels does not support the"), std::string::npos) << error;
+    EXPECT_NE(error.find("kernel ('Operator/Kernel')"), std::string::npos) << error;
+  }
 }
 
 TEST(OperatorPlugins, KernelSublistIsValidated)

@@ -72,7 +72,7 @@ TEST(Scene, WallAndViscosityContrastBuildTheWallKernelAndTheSolve)
   });
   auto s = makeScene(*deck);
   EXPECT_TRUE(anyTermContains(s, "kernel: Wall"));
-  EXPECT_TRUE(anyTermContains(s, "Belos GMRES"));
+  EXPECT_TRUE(anyTermContains(s, "Belos Block GMRES")); // the default 'Solver/Method'
   EXPECT_TRUE(anyTermContains(s, "constraint: fixed centroid height of Cells/Cell 0"));
   EXPECT_TRUE(s.hasConstraints());
   const auto gmres = core::timer("Viscosity-ratio GMRES solve");

@@ -54,4 +54,17 @@ void require(bool condition, Parts&&... parts)
   }
 }
 
+/// The last non-empty line of a library's exception message: Teuchos and Belos put the
+/// source location and the failed test above the sentence meant for the user.
+inline std::string lastLineOf(const std::string& what)
+{
+  const std::size_t end = what.find_last_not_of(" \n\t");
+  if (end == std::string::npos) {
+    return what;
+  }
+  const std::size_t newline = what.find_last_of('\n', end);
+  const std::size_t start = newline == std::string::npos ? 0 : newline + 1;
+  return what.substr(start, end - start + 1);
+}
+
 } // namespace capsula::core

@@ -10,7 +10,8 @@
 //   SL_d[f](x0) = sum_{m in d} <Delta f>_m,i int_Em G_ij(x, x0) dS   (eq 3.36),
 //   DL_d[u](x0) = PV int_Sd u_i T_ijk(x, x0) n_k dS                  (eq 3.44, ERRATA),
 // Delta f = (sigma_outside - sigma_inside) . n, n outward. With every lambda = 1 the
-// velocity is explicit; otherwise GMRES solves for it (Belos, SecondKindOperator.hpp).
+// velocity is explicit; otherwise the Belos solver of 'Solver/Method' solves for it
+// (KrylovSolve.hpp, on SecondKindOperator.hpp).
 //
 // Distribution: every rank holds the whole geometry and the loads (replicated) and
 // evaluates the rows of the nodes it owns (velocityMap()); results are gathered back to
@@ -33,7 +34,7 @@ namespace capsula::operators {
 /// Node velocities and how they were obtained.
 struct VelocitySolution {
   std::vector<double> velocities; ///< 3 per node, global numbering, on every rank
-  int iterations = 0;             ///< GMRES iterations (0: explicit, every lambda = 1)
+  int iterations = 0;             ///< Krylov iterations (0: explicit, every lambda = 1)
   double residual = 0.0;          ///< achieved ||b - A u|| / ||b|| (0 when explicit)
 };
 
@@ -57,11 +58,11 @@ public:
 
   /// The velocity of every node (eq above) for the membrane load `load` (LoadDensity.hpp:
   /// Delta f at the nodes of every element, global numbering). `initialGuess` (3 per node, or null: the right-hand
-  /// side) starts GMRES when some lambda != 1. Collective; throws core::NumericalError if
-  /// GMRES does not converge.
+  /// side) starts the Krylov solve when some lambda != 1. Collective; throws
+  /// core::NumericalError if the solve does not converge.
   virtual VelocitySolution nodeVelocities(const LoadDensity& load, const FlowConditions& flow,
                                           const double* initialGuess = nullptr) = 0;
-  /// The same, GMRES starting from history.initialGuess(b) (the warm start of a time
+  /// The same, the solve starting from history.initialGuess(b) (the warm start of a time
   /// integration, WarmStartHistory.hpp); the solved pair (b, u) joins `history`. With every
   /// lambda = 1 the velocity is explicit and `history` is left as it is. Collective.
   virtual VelocitySolution nodeVelocities(const LoadDensity& load, const FlowConditions& flow,

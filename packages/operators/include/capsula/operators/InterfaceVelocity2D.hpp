@@ -4,8 +4,9 @@
 //   u_j(x0) = 2/(1+lambda) u_inf,j(x0) - 1/(2 pi (1+lambda) Ca) SL_j[Delta f](x0)
 //             + (1-lambda)/(2 pi (1+lambda)) DL_j[u](x0)
 // with SL and DL as in LayerPotentials2D (DL subtracted: -2 pi u(x0) at a smooth point),
-// Delta f = (sigma_ext - sigma_int) . n, n outward. lambda = 1: explicit; otherwise Belos
-// GMRES on SecondKindOperator (App. A.7 used LAPACK's dense LU on one CPU).
+// Delta f = (sigma_ext - sigma_int) . n, n outward. lambda = 1: explicit; otherwise the
+// Belos solver of 'Solver/Method' on SecondKindOperator (App. A.7 used LAPACK's dense LU on
+// one CPU).
 // Nodes listed as fixed (the tether) get u = 0: their rows become u = 0, so the double
 // layer sees the constrained velocity.
 //
@@ -58,7 +59,7 @@ using ContourLoad2D = std::function<Eigen::Vector2d(const contour::ContourPoint&
 
 struct VelocitySolution2D {
   std::vector<double> velocities; ///< 2 per node, on every rank
-  int iterations = 0;             ///< GMRES iterations (0: lambda = 1, explicit)
+  int iterations = 0;             ///< Krylov iterations (0: lambda = 1, explicit)
   double residual = 0.0;          ///< achieved relative residual (0 when explicit)
 };
 
@@ -71,8 +72,8 @@ public:
   virtual const NodeDistribution& distribution() const = 0;
 
   /// Node velocities of `contour` under `load` (collective). Throws core::InputError if a
-  /// node lies below the wall, core::NumericalError if GMRES does not converge. With a
-  /// `history` (lambda != 1), GMRES starts from its least-squares guess
+  /// node lies below the wall, core::NumericalError if the Krylov solve does not converge.
+  /// With a `history` (lambda != 1), the solve starts from its least-squares guess
   /// (WarmStartHistory.hpp) instead of the lambda = 1 velocity, and the solved pair is
   /// added to it.
   virtual VelocitySolution2D nodeVelocities(const contour::Contour& contour, const ContourLoad2D& load,

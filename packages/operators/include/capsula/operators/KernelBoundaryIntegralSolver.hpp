@@ -3,7 +3,7 @@
 // instantiates this template with its policy and registers solverFactory<Policy>() in a
 // KernelRegistry (docs/extending.md); nothing in this package changes.
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
-#include <capsula/operators/GmresSolve.hpp>
+#include <capsula/operators/KrylovSolve.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/operators/LayerPotentials.hpp>
 #include <capsula/operators/NodeDistribution.hpp>
@@ -199,12 +199,9 @@ KernelBoundaryIntegralSolver<Kernel>::solveNodeVelocities(const LoadDensity& loa
         potentials_.doubleLayerAtNodes(density, DoubleLayerForm::Subtracted, rows);
       },
       std::move(densityScale), std::move(rowScale)));
-  const GmresResult result = solveWithGmres(A, b, x, solverParameters_);
-  core::require<core::NumericalError>(result.converged, "GMRES for the viscosity-ratio equation stopped after ",
-                                      result.iterations, " iterations at relative residual ", result.residual,
-                                      " > 'Solver/Tolerance' = ", solverParameters_.tolerance,
-                                      ". Raise 'Solver/Maximum iterations' or 'Solver/Restart', or relax "
-                                      "'Solver/Tolerance'.");
+  const KrylovResult result = solveLinearSystem(A, b, x, solverParameters_);
+  core::require<core::NumericalError>(result.converged,
+                                      stoppedShortMessage("the viscosity-ratio equation", solverParameters_, result));
   solution.iterations = result.iterations;
   solution.residual = result.residual;
   const auto xData = x->getData(0);

@@ -252,7 +252,8 @@ LayerPotentials<Kernel>::LayerPotentials(const DiscretisationParameters& paramet
     farField_ = parameters.farField->forKernel(typeid(Kernel), Kernel::name);
     core::require<core::InputError>(farField_ != nullptr, "'Operator/Summation' = ", parameters.farField->name(),
                                     " does not support the ", Kernel::name,
-                                    " kernel; use 'Operator/Summation' = Direct.");
+                                    " kernel ('Operator/Kernel'); use 'Operator/Summation' = Direct or another "
+                                    "kernel.");
   } else {
     farField_ = std::make_unique<DirectSummation<Kernel>>();
   }

@@ -1,11 +1,13 @@
 #pragma once
 // Deck parameters of the boundary-integral operators: the quadrature of the surface
-// integrals ("Discretisation") and the GMRES solve of the lambda != 1 equation ("Solver").
+// integrals ("Discretisation") and the Krylov solve of the lambda != 1 equation ("Solver";
+// its method and the Belos sublist: KrylovMethod.hpp).
 // Each knob trades accuracy for time; the defaults and their reasons are in the doc
 // strings (docs/operators.md has the measurements behind them).
 #include <Teuchos_ParameterList.hpp>
 
 #include <memory>
+#include <string>
 
 namespace capsula::operators {
 
@@ -30,18 +32,23 @@ struct DiscretisationParameters {
   std::shared_ptr<const FarFieldBackEnd> farField;
 };
 
-/// The GMRES solve of the second-kind equation for lambda != 1 (thesis Section 3.8).
+/// The Krylov solve of the second-kind equation for lambda != 1 (thesis Section 3.8).
 struct SolverParameters {
+  /// The Belos solver manager, by the name Belos's factory takes (KrylovMethod.hpp).
+  std::string method = "Block GMRES";
   /// On ||b - A u|| / ||b||. This struct default is the tight value the unit tests and the
   /// 2D contour use; the 3D deck declares kSurfaceSolverTolerance instead.
   double tolerance = 1e-10;
   int restart = 50; ///< Krylov vectors kept between restarts (Belos "Num Blocks")
   int maximumIterations = 300;
+  /// Belos parameters of `method` that replace those Capsula derives from the keys above
+  /// ('Solver/Belos'; empty: none).
+  Teuchos::ParameterList belos;
   /// Start each solve of a time integration from the last solutions (WarmStartHistory.hpp;
   /// scene::Scene keeps the history and its checkpoint carries it). The 3D deck's
   /// 'Solver/Warm start' defaults to true.
   bool warmStart = false;
-  /// Solve with GMRES even when every viscosity ratio is 1 (for tests; not a deck key).
+  /// Solve iteratively even when every viscosity ratio is 1 (for tests; not a deck key).
   bool alwaysIterate = false;
 };
 
@@ -56,12 +63,12 @@ void declareDiscretisationParameters(Teuchos::ParameterList& discretisation);
 /// and warm start").
 constexpr double kSurfaceSolverTolerance = 1e-9;
 
-/// Declares Tolerance (default: SolverParameters{}.tolerance), Restart and Maximum
-/// iterations in `solver` (the 2D contour's list).
+/// Declares Method, Tolerance (default: SolverParameters{}.tolerance), Restart, Maximum
+/// iterations, Warm start and the Belos sublist in `solver` (the 2D contour's list).
 void declareSolverParameters(Teuchos::ParameterList& solver);
 
 /// The 3D surfaces' list: as declareSolverParameters with Tolerance defaulting to
-/// kSurfaceSolverTolerance, and Warm start.
+/// kSurfaceSolverTolerance.
 void declareSurfaceSolverParameters(Teuchos::ParameterList& solver);
 
 /// Declares the 3D lists, in the sublists "Discretisation" (declareDiscretisationParameters)
@@ -72,10 +79,13 @@ void declareOperatorParameters(Teuchos::ParameterList& deck);
 /// validator cannot check (a triangle rule that does not exist), naming the key.
 DiscretisationParameters readDiscretisationParameters(const Teuchos::ParameterList& discretisation);
 
-/// Reads a validated "Solver" sublist (warmStart false where the list has no Warm start).
+/// Reads a validated "Solver" sublist (warmStart false where the list has no Warm start,
+/// the default method where it has no Method). Throws core::InputError naming
+/// 'Solver/Belos/<key>' for an entry the chosen method does not take.
 SolverParameters readSolverParameters(const Teuchos::ParameterList& solver);
 
-/// Throws core::InputError naming the offending field unless the values are usable.
+/// Throws core::InputError naming the offending field unless the values are usable (for the
+/// solver: also the method and its Belos entries, validateKrylovSettings in KrylovMethod.hpp).
 void validate(const DiscretisationParameters& parameters);
 void validate(const SolverParameters& parameters);
 

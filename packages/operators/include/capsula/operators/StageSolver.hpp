@@ -4,6 +4,14 @@
 // GMRES with a right preconditioner, to an RMS residual target. J~ comes as an action on
 // whole, locally replicated vectors: every rank takes the same Krylov steps and gets the
 // same bits.
+//
+// The method is fixed, not 'Solver/Method' (which chooses the viscosity-ratio equation's).
+// The preconditioner stays the same within a solve (its shift is set before each), so
+// flexibility itself is not needed; what flexible GMRES brings is that it keeps the
+// preconditioned vectors, so the residual it tests is that of its iterate and each solve
+// stops on the RMS residual the integrator asks for without an application of W to confirm
+// it (KrylovSolve.hpp). The other methods would test an estimate, or pay that application.
+// 'Solver/Stiff' sets only the restart length and the iteration cap.
 #include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/operators/StageOperator.hpp>
 

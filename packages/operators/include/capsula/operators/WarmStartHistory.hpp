@@ -1,5 +1,5 @@
 #pragma once
-// The initial guess of the next GMRES solve of the viscosity-ratio equation (I - K) u = b
+// The initial guess of the next Krylov solve of the viscosity-ratio equation (I - K) u = b
 // (SecondKindOperator.hpp) from the last few solves of a time integration.
 //
 // Consecutive right-hand sides of a Runge-Kutta step are O(step) apart, and so are their

@@ -5,7 +5,7 @@
 //     shape only where Prestress > 0;
 //   - the Green's function 'Operator/Kernel' names, by default free space or the wall
 //     (from an operators::KernelRegistry);
-//   - the double layer and the GMRES solve only if the viscosity ratio is not 1 (the
+//   - the double layer and the Krylov solve only if the viscosity ratio is not 1 (the
 //     operators skip both when every lambda = 1);
 //   - the fixed-height stage constraint only if some cell asks for it;
 //   - contact repulsion and receptor-ligand bonds (SceneBonds.hpp) only if 'Contact' and
@@ -15,7 +15,7 @@
 // The state the time integrator advances is the positions of all nodes of all cells,
 // cell after cell (operators::CellSurfaces numbering), the same on every rank. The
 // right-hand side is a pure function of the positions, except that with lambda != 1 and
-// 'Solver/Warm start' GMRES starts from a combination of the last solutions
+// 'Solver/Warm start' the Krylov solve starts from a combination of the last solutions
 // (gmresWarmStart(), operators/WarmStartHistory.hpp); the checkpoint carries them, so a
 // restarted run still repeats the uninterrupted one bit for bit. evaluate() (outputs)
 // always starts cold. With adhesion the right-hand side also depends on the bond set, which

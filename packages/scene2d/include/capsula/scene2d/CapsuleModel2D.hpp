@@ -124,6 +124,7 @@ private:
   CellSettings2D cell_;
   FlowSettings2D flow_;
   operators::ContourDiscretisation2D discretisation_;
+  std::string krylovMethod_; ///< 'Solver/Method', named in terms()
   Eigen::Matrix2Xd referenceNodes_;
   double referenceLength_ = 0.0;
   double referenceArea_ = 0.0;

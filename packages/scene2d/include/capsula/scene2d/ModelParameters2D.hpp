@@ -5,7 +5,7 @@
 //   Cell                       CellContour2D.hpp
 //   Tether                     TetherProcedure2D.hpp
 //   Discretisation             operators/ContourDiscretisation2D.hpp
-//   Solver                     operators/OperatorParameters.hpp (GMRES, lambda != 1)
+//   Solver                     operators/OperatorParameters.hpp (the Krylov solve, lambda != 1)
 // The run adds Time integration and Output (run/Tether2DDeck.hpp assembles the deck of
 // tether2d).
 #include <capsula/operators/KernelRegistry2D.hpp>
