@@ -54,6 +54,20 @@ double maxDifferenceFromBackground(const contour::Contour& c, const FlowConditio
   return error;
 }
 
+// A smooth load with normal and tangential parts, and the lambda = 5 flow of the solve tests.
+Eigen::Vector2d shearedLoad(const contour::ContourPoint& p, int, double)
+{
+  return 0.3 * p.normal + 0.1 * p.tangent * p.position.y();
+}
+
+FlowConditions2D lambda5Flow()
+{
+  FlowConditions2D flow;
+  flow.capillaryNumber = 0.1;
+  flow.viscosityRatio = 5.0;
+  return flow;
+}
+
 } // namespace
 
 TEST(InterfaceVelocity2D, RigidMotionIsExactForEveryViscosityRatio)
@@ -137,12 +151,8 @@ TEST(InterfaceVelocity2D, GmresSolutionSatisfiesTheEquation)
   // u - c DL[u] = 2/(1+lambda) u_inf - SL/(2 pi (1+lambda) Ca), checked with the raw
   // integrals evaluated separately, at lambda = 5 above the wall with a fixed node.
   const auto c = ellipse(32, 1.0, {0.0, 1.2}, contour::Closure::Tethered);
-  const auto load = [](const contour::ContourPoint& p, int, double) -> Eigen::Vector2d {
-    return 0.3 * p.normal + 0.1 * p.tangent * p.position.y();
-  };
-  FlowConditions2D flow;
-  flow.capillaryNumber = 0.1;
-  flow.viscosityRatio = 5.0;
+  const auto load = shearedLoad;
+  const FlowConditions2D flow = lambda5Flow();
   SolverParameters solver;
   solver.tolerance = 1e-12;
   auto velocity = makeInterfaceVelocity2D(true, serialComm(), 32, {}, solver);
@@ -218,12 +228,8 @@ TEST(InterfaceVelocity2D, WarmStartHistoryStartsCloserAndSolvesTheSameEquation)
 TEST(InterfaceVelocity2D, ChosenKrylovMethodSolvesTheSameEquation)
 {
   const auto c = ellipse(32, 1.0, {0.0, 1.2}, contour::Closure::Tethered);
-  const auto load = [](const contour::ContourPoint& p, int, double) -> Eigen::Vector2d {
-    return 0.3 * p.normal + 0.1 * p.tangent * p.position.y();
-  };
-  FlowConditions2D flow;
-  flow.capillaryNumber = 0.1;
-  flow.viscosityRatio = 5.0;
+  const auto load = shearedLoad;
+  const FlowConditions2D flow = lambda5Flow();
   SolverParameters solver;
   solver.tolerance = 1e-12;
   const auto gmres = makeInterfaceVelocity2D(true, serialComm(), 32, {}, solver)->nodeVelocities(c, load, flow, {0});
