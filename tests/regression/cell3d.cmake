@@ -169,6 +169,51 @@ add_test(NAME regression_cell3d_adhesion_restart_reproduces
 set_tests_properties(regression_cell3d_adhesion_restart_reproduces PROPERTIES
   FIXTURES_REQUIRED "cell3d_adhesion_restart;cell3d_adhesion_two_ranks" LABELS "mpi;regression")
 
+# Tether (input/cell3d/tether): the capsule tethered at its lowest point 0.05 a above the
+# wall, level 1, RK4 steps of 0.002 (the explicit stability limit of a level-1 mesh at Ca =
+# 0.1 is ~0.003) to t = 0.2. Goldens (measured, 2 ranks) to the tolerance of the others,
+# 1e-8: the force after 0.2 shear times, its components, the tether's angle to the wall and
+# the pivot angle. With outputs every 0.1, on 2 ranks, on 1 rank, and on 2 ranks stopped at
+# t = 0.1 and restarted: 1 and 2 ranks give the same tether history bit for bit (every rank
+# places the tether on the same initial shape and sums whole rows in the same order;
+# tolerance 0), and so does the restart (the tether has no state beyond the deck; its peak
+# record is in the checkpoint).
+set(_tether_deck ${_decks}/tether/sphere-Ca0.1.xml)
+set(_tether_run ${_level1} --set "Time integration/Method=RK4" --set "Time integration/Initial step=0.002"
+    --set "Output/Interval=0.1")
+cell3d_regression(tether tether/sphere-Ca0.1.xml 0.002 0.2
+  tether_force=0.24620877068427802:1e-8 tether_force_x=-0.10352913507501058:1e-8
+  tether_force_y=-0.2233841466006118:1e-8 tether_angle_deg=65.13426537704575:1e-8
+  pivot_angle_deg=79.38629597491239:1e-8 x_c=0.19670310536776836:1e-8)
+capsula_add_mpi_command_test(regression_cell3d_tether_two_ranks
+  COMMAND $<TARGET_FILE:cell3d> ${_tether_deck} --output ${_out}/tether_two_ranks ${_tether_run}
+          --set "Time integration/End time=0.2"
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_cell3d_tether_two_ranks PROPERTIES FIXTURES_SETUP cell3d_tether_two_ranks)
+add_test(NAME regression_cell3d_tether_one_rank
+  COMMAND cell3d ${_tether_deck} --output ${_out}/tether_one_rank ${_tether_run} --set "Time integration/End time=0.2")
+set_tests_properties(regression_cell3d_tether_one_rank PROPERTIES
+  FIXTURES_SETUP cell3d_tether_one_rank LABELS "mpi;regression")
+add_test(NAME regression_cell3d_tether_ranks_agree
+  COMMAND check_metrics same ${_out}/tether_one_rank/metrics.csv ${_out}/tether_two_ranks/metrics.csv 0)
+set_tests_properties(regression_cell3d_tether_ranks_agree PROPERTIES
+  FIXTURES_REQUIRED "cell3d_tether_one_rank;cell3d_tether_two_ranks" LABELS "mpi;regression")
+capsula_add_mpi_command_test(regression_cell3d_tether_first_half
+  COMMAND $<TARGET_FILE:cell3d> ${_tether_deck} --output ${_out}/tether_restarted ${_tether_run}
+          --set "Time integration/End time=0.1"
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_cell3d_tether_first_half PROPERTIES FIXTURES_SETUP cell3d_tether_half)
+capsula_add_mpi_command_test(regression_cell3d_tether_second_half
+  COMMAND $<TARGET_FILE:cell3d> ${_tether_deck} --restart ${_out}/tether_restarted ${_tether_run}
+          --set "Time integration/End time=0.2"
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_cell3d_tether_second_half PROPERTIES
+  FIXTURES_REQUIRED cell3d_tether_half FIXTURES_SETUP cell3d_tether_restart)
+add_test(NAME regression_cell3d_tether_restart_reproduces
+  COMMAND check_metrics same ${_out}/tether_two_ranks/metrics.csv ${_out}/tether_restarted/metrics.csv 0)
+set_tests_properties(regression_cell3d_tether_restart_reproduces PROPERTIES
+  FIXTURES_REQUIRED "cell3d_tether_restart;cell3d_tether_two_ranks" LABELS "mpi;regression")
+
 # Inputs that must stop before any work, naming the cause (label app).
 function(cell3d_rejects name expected)
   add_test(NAME app_cell3d_rejects_${name} COMMAND cell3d ${ARGN})
@@ -195,6 +240,14 @@ cell3d_rejects(adhesion_without_spring "'Adhesion/Spring constant' = 0 with adhe
   ${_decks}/adhesion/sphere-ligand-wall.xml --output ${_out}/rejected --set "Adhesion/Spring constant=0")
 cell3d_rejects(adhesion_negative_density "'Adhesion/Receptor density' = -1 is invalid"
   ${_decks}/adhesion/sphere-ligand-wall.xml --output ${_out}/rejected --set "Adhesion/Receptor density=-1")
+cell3d_rejects(tether_without_wall "'Tether/Enabled' is true but 'Wall/Enabled' is false"
+  ${_tether_deck} --output ${_out}/rejected --set "Wall/Enabled=false")
+cell3d_rejects(tether_anchor_off_the_wall "'Tether/Anchor' = {0, 0.1, 0} lies off the wall y = 0"
+  ${_tether_deck} --output ${_out}/rejected --set "Tether/Anchor={0, 0.1, 0}")
+cell3d_rejects(tether_negative_spring_constant "'Tether/Spring constant' = -5 is invalid"
+  ${_tether_deck} --output ${_out}/rejected --set "Tether/Spring constant=-5")
+cell3d_rejects(tether_on_a_missing_cell "'Tether/Cell' = 3 but the scene has 1 cell"
+  ${_tether_deck} --output ${_out}/rejected --set "Tether/Cell=3")
 cell3d_rejects(unwritable_output_directory "The output directory '.*CMakeLists.txt/out' cannot be used"
   ${_decks}/demo.xml --output ${CMAKE_CURRENT_SOURCE_DIR}/CMakeLists.txt/out ${_level1})
 

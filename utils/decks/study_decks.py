@@ -22,6 +22,8 @@ def g(x):
 #   validation/    free shear against Lac et al. (2004) and Lac & Barthes-Biesel (2005); a nearly
 #                  rigid capsule against Goldman, Cox & Brenner (1967)
 #   adhesion/      a level-1 capsule released 0.03 a above a ligand-coated wall, stochastic bonds
+#   tether/        a capsule tethered at its lowest point 0.05 a above the wall (the 3D
+#                  counterpart of the thesis's Chapter 4 a/b = 1, lambda = 1, Ca = 0.1 case)
 # The thesis used mesh level 3 (1280 elements), N_Q = 7 and RKF45; its eps = 1e-10 is replaced
 # by 1e-6 (positions in cell radii: a millionth of a radius per step, far below the mesh error).
 # Runs end at t = 15, where the thesis reports mesh degradation, or at steady shape.
@@ -246,6 +248,23 @@ def cell3d():
                (adhesion + "Off-rate", "1.0"), (adhesion + "Reactive compliance", "1e-2"),
                (adhesion + "Thermal energy", "4e-3"), (adhesion + "Kinetics", "Stochastic"),
                (adhesion + "Seed", "1")])
+
+
+    # Tether (docs/cell3d.md, "Tether"; docs/cell3d-tether-results.md): a sphere released with
+    # its lowest point 0.05 a above the wall, tethered there from t = 0 by a spring of rest
+    # length 0.05 a (its length at t = 0) and 100 G to the point of the wall below it; the
+    # tether's foot a patch of radius 0.17 a (a 2 um wide membrane tether on a 6 um leukocyte
+    # radius, thesis Chapter 4). The 2D study's a/b = 1, lambda = 1, Ca = 0.1 case in 3D:
+    # Skalak C = 2.5 (the thesis's 3D membrane), no prestress; the contact repulsion within
+    # 0.03 a keeps the membrane off the wall as the cell pivots down to it. Level 2, RKF45 at
+    # 1e-5, to t = 20, outputs every 0.1, no wall stress map.
+    yield cell3d_deck(
+        f"{root}/tether/sphere-Ca0.1.xml",
+        "Tether: a Skalak capsule (C = 2.5, Ca = 0.1, level 2) tethered at its lowest point, 0.05 a above\n"
+        "     the wall, to the wall below it (thesis Chapter 4's a/b = 1, lambda = 1, Ca = 0.1 case in 3D).",
+        ca="0.1", height="1.05", level="2", end="20", tolerance="1e-5", wall_stress="false", stride="10",
+        extra=[("Contact/Enabled", "true"), ("Contact/Range", "0.03"), ("Tether/Enabled", "true"),
+               ("Tether/Patch radius", "0.17"), ("Tether/Spring constant", "100")])
 
 
 # --- twocell3d: thesis Chapter 6, Section 6.1 ------------------------------------------------

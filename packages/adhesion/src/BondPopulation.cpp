@@ -1,6 +1,7 @@
 #include "capsula/adhesion/BondPopulation.hpp"
 
 #include "capsula/adhesion/BondKinetics.hpp"
+#include "capsula/adhesion/BondSpring.hpp"
 #include "capsula/adhesion/CounterRandom.hpp"
 #include "capsula/adhesion/PointForces.hpp"
 
@@ -124,11 +125,7 @@ mesh::Vec3 BondPopulation::force(int r, const mesh::Vec3& x) const
   if (s.occupancy <= 0.0) {
     return mesh::Vec3::Zero();
   }
-  const mesh::Vec3 d = x - s.anchor;
-  const double length = d.norm();
-  // A bond of zero length has no direction; it can only be compressed, so it pushes off the wall.
-  const mesh::Vec3 direction = length > 0.0 ? mesh::Vec3(d / length) : mesh::Vec3::UnitY();
-  return -s.occupancy * settings_.springConstant * (length - settings_.equilibriumLength) * direction;
+  return s.occupancy * springForce(x, s.anchor, settings_.springConstant, settings_.equilibriumLength);
 }
 
 mesh::Vec3 BondPopulation::addNodalForces(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors,

@@ -104,6 +104,21 @@ std::vector<double> adhesionValues(const adhesion::AdhesionSummary& a)
   return {a.bonds, a.bondForce.norm(), a.bondForce[0], a.bondForce[1], a.contactArea, a.minimumGap};
 }
 
+// The tether (adhesion/Tether.hpp), one set of columns whatever the number of cells (one
+// cell is tethered), after everything else.
+const std::vector<std::string>& tetherMetricNames()
+{
+  static const std::vector<std::string> names{"tether_force",  "tether_force_x",   "tether_force_y", "tether_force_z",
+                                              "tether_length", "tether_angle_deg", "pivot_angle_deg"};
+  return names;
+}
+
+std::vector<double> tetherValues(const TetherSample& t)
+{
+  const adhesion::TetherState& s = t.state;
+  return {s.force.norm(), s.force[0], s.force[1], s.force[2], s.length, s.inclinationDegrees, t.pivotAngleDegrees};
+}
+
 // Appends `names`: as they are for one cell, NAME_c for every cell of several.
 void appendPerCell(std::vector<std::string>& columns, const std::vector<std::string>& names, int numCells)
 {
@@ -168,11 +183,15 @@ std::vector<std::string> columnsWithoutAdhesion(bool wallShearStress, int numCel
 
 } // namespace
 
-std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange, bool adhesion)
+std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange, bool adhesion,
+                                        bool tether)
 {
   std::vector<std::string> columns = columnsWithoutAdhesion(wallShearStress, numCells, isolatedRange);
   if (adhesion) {
     appendPerCell(columns, adhesionMetricNames(), numCells);
+  }
+  if (tether) {
+    columns.insert(columns.end(), tetherMetricNames().begin(), tetherMetricNames().end());
   }
   return columns;
 }
@@ -228,6 +247,12 @@ std::vector<double> metricsRow(double time, std::int64_t acceptedSteps, double l
       for (const auto& s : samples) {
         row.push_back(adhesionValues(*s.adhesion)[m]);
       }
+    }
+  }
+  for (const auto& s : samples) { // the tethered cell's, if there is one
+    if (s.tether) {
+      const std::vector<double> values = tetherValues(*s.tether);
+      row.insert(row.end(), values.begin(), values.end());
     }
   }
   return row;

@@ -65,6 +65,10 @@ std::vector<CellSample> OutputMetrics::record(double t, const scene::Scene& scen
     if (scene.hasBonds()) {
       s.adhesion = scene.bonds().summary(c, cell, cell.positionData());
     }
+    if (scene.hasTether() && scene.tether().cell() == c) {
+      const adhesion::TetherState tether = scene.tether().state(cell, cell.positionData());
+      s.tether = TetherSample{tether, adhesion::pivotAngleDegrees(tether.anchor, s.shape.centroid)};
+    }
 
     auto& history = centroids_[static_cast<std::size_t>(c)];
     for (int d = 0; d < 3; ++d) {

@@ -81,10 +81,10 @@ std::vector<std::string> SceneOutputs::terms() const
 void SceneOutputs::open(std::optional<double> resumeAfter)
 {
   const auto& wall = settings_.wallShearStress;
-  files_.openTable(
-      "metrics.csv",
-      metricsColumns(wall.enabled, description_.numCells(), wall.isolatedRange, description_.adhesion.enabled),
-      resumeAfter);
+  files_.openTable("metrics.csv",
+                   metricsColumns(wall.enabled, description_.numCells(), wall.isolatedRange,
+                                  description_.adhesion.enabled, description_.tether.enabled),
+                   resumeAfter);
   if (!settings_.flowProbes.empty()) {
     files_.openTable("probes.csv", probeColumns(settings_.flowProbes.size()), resumeAfter);
   }

@@ -10,6 +10,7 @@
 #include "capsula/run/RunSummary.hpp"
 #include "capsula/run/SceneOutputSettings.hpp"
 #include "capsula/run/SceneOutputs.hpp"
+#include "capsula/run/TetherRecord.hpp"
 #include "capsula/run/WallClock.hpp"
 
 #include <capsula/core/Error.hpp>
@@ -112,6 +113,7 @@ private:
   RunOutputs files_;
   RunScene live_;
   SceneOutputs outputs_;
+  TetherRecord tether_;
   IntegrationStateSection stateSection_;
   RunSummary summary_;
   InterruptionWatch watch_;
@@ -143,6 +145,7 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
       files_(comm, outputDirectory(options, settings_), options.restartDirectory),
       live_(description_, deck, comm, kernels, state_, *log_),
       outputs_(live_, description_, settings_, files_, integrator_.settings().steadyTolerance),
+      tether_(live_, description_.capillaryNumber),
       stateSection_(state_, "timeint."),
       summary_(options.application, deck, comm->getSize()),
       watch_(*comm)
@@ -152,7 +155,7 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
     restore();
   }
   live_.build();
-  outputs_.setCheckpointSections({&stateSection_, &outputs_, &live_});
+  outputs_.setCheckpointSections({&stateSection_, &outputs_, &live_, &tether_});
   // A stage state with a node through the wall rejects the attempt (NodesAboveWall.hpp).
   integrator_.setDomainCheck([this](const std::vector<double>& y) { scene::requireNodesAboveWall(live_.scene(), y); });
   if (live_.scene().hasConstraints()) {
@@ -194,7 +197,7 @@ void SceneRunner::restore()
   }
   requireSameApplication(checkpoint, options_.application, path);
   requireSameRun(deck_, checkpoint.deckXml, path);
-  io::loadSections(checkpoint, path, {&stateSection_, &outputs_, &live_});
+  io::loadSections(checkpoint, path, {&stateSection_, &outputs_, &live_, &tether_});
   const double end = integrator_.settings().endTime;
   core::require<core::InputError>(!state_.steady, "--restart ", *options_.restartDirectory,
                                   ": the run reached a steady state at t = ", state_.time,
@@ -302,6 +305,7 @@ io::JsonValue SceneRunner::summary(const std::string& status, const std::string&
       json["time integration"]["switches"].append(change);
     }
     outputs_.addResults(json);
+    tether_.addResults(json, outputs_.steady());
   });
 }
 
@@ -332,7 +336,7 @@ SceneRunResult SceneRunner::execute()
     }
     // The start is observed (never steady: the test needs t > 0); the ETA counts from after it.
     simulatedStart_ = state_.time;
-    integrator_.integrate(state_, schedule, {&live_, &outputs_, this, &watch_});
+    integrator_.integrate(state_, schedule, {&live_, &tether_, &outputs_, this, &watch_});
   } catch (const std::exception& e) {
     // Record the failure next to the last good outputs, then let the app report it.
     files_.writeSummaryAfterFailure([&] { return summary("failed", e.what()); });
@@ -386,6 +390,13 @@ void SceneRunner::report(const std::string& status)
           << sample.shape.centroid[0] << ", " << sample.shape.centroid[1] << ", " << sample.shape.centroid[2]
           << "), u_slip " << sample.slipVelocity() << ", u_migr " << sample.migrationVelocity() << ", volume change "
           << sample.volumeChange << ", mean shear stress " << sample.stress.mean << "\n";
+    if (sample.tether) {
+      const double ca = description_.capillaryNumber, force = sample.tether->state.force.norm();
+      log() << "  tether: peak force " << tether_.peakForce() << " G a (" << tether_.peakForce() / ca
+            << " mu k a^2) at t = " << tether_.peakTime() << ", final " << force << " G a (" << force / ca
+            << " mu k a^2), angle to the wall " << sample.tether->state.inclinationDegrees << ", pivot angle "
+            << sample.tether->pivotAngleDegrees << " degrees\n";
+    }
   }
   log() << "  metrics.csv (one row per output), summary.json (final and steady values)";
   if (settings_.snapshots) {

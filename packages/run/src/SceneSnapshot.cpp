@@ -51,6 +51,23 @@ std::optional<io::SnapshotBlock> bondBlock(const scene::Scene& scene, int c, con
   return block;
 }
 
+// The tether as one segment from its attachment to its anchor, with its force on the membrane.
+io::SnapshotBlock tetherBlock(const scene::Scene& scene, const double* positions)
+{
+  const adhesion::Tether& tether = scene.tether();
+  const adhesion::TetherState state = tether.state(scene.cell(tether.cell()), positions);
+  io::SnapshotBlock block;
+  block.name = "tether";
+  block.topology = io::Topology::Polylines;
+  block.nodesPerPolyline = 2;
+  block.dimension = 3;
+  block.positions = {state.attachment[0], state.attachment[1], state.attachment[2],
+                     state.anchor[0],     state.anchor[1],     state.anchor[2]};
+  block.connectivity = {0, 1};
+  block.cellFields = {{"force", 3, {state.force[0], state.force[1], state.force[2]}}, {"length", 1, {state.length}}};
+  return block;
+}
+
 } // namespace
 
 io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& fields, double time, std::int64_t step)
@@ -94,6 +111,11 @@ io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& 
     if (auto bonds = bondBlock(scene, c, positions)) {
       snapshot.blocks.push_back(std::move(*bonds));
     }
+  }
+  if (scene.hasTether()) {
+    const int c = scene.tether().cell();
+    snapshot.blocks.push_back(
+        tetherBlock(scene, fields.positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(c))));
   }
   return snapshot;
 }

@@ -42,6 +42,14 @@ io::JsonValue sampleJson(const CellSample& s, bool wall)
     v["contact area"] = a.contactArea;
     v["minimum gap"] = a.minimumGap;
   }
+  if (s.tether) {
+    const adhesion::TetherState& t = s.tether->state;
+    v["tether force"] = io::JsonValue::array({t.force[0], t.force[1], t.force[2]});
+    v["tether attachment"] = io::JsonValue::array({t.attachment[0], t.attachment[1], t.attachment[2]});
+    v["tether length"] = t.length;
+    v["tether angle to the wall (degrees)"] = t.inclinationDegrees;
+    v["pivot angle (degrees)"] = s.tether->pivotAngleDegrees;
+  }
   return v;
 }
 

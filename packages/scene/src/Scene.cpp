@@ -2,7 +2,6 @@
 
 #include "capsula/scene/CellPlacement.hpp"
 
-#include <capsula/adhesion/ContactRepulsion.hpp>
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
 #include <capsula/elasticity/MembraneLawFactory.hpp>
@@ -332,72 +331,28 @@ void Scene::setReferencePositions(int c, std::vector<double> reference)
   membrane = std::make_unique<elasticity::MembraneMechanics>(membrane->withReference(std::move(reference)));
 }
 
-// The forces from outside the membranes, only those the deck enables: storage, the bonds, terms.
+// The forces from outside the membranes, only those the deck enables (ExternalForces.hpp).
 void Scene::buildExternalForces()
 {
-  if (description_.contact.enabled || description_.adhesion.enabled) {
-    for (const mesh::SurfaceMesh& cell : cells_) {
-      externalForces_.emplace_back(3 * static_cast<std::size_t>(cell.numNodes()), 0.0);
-    }
+  std::vector<std::vector<double>> unstressed;
+  for (const auto& membrane : membranes_) {
+    unstressed.push_back(membrane->referencePositions());
   }
-  if (description_.adhesion.enabled) {
-    std::vector<std::vector<double>> unstressed;
-    for (const auto& membrane : membranes_) {
-      unstressed.push_back(membrane->referencePositions());
-    }
-    bonds_.emplace(description_.adhesion, cells_, unstressed);
-    terms_.push_back(bonds_->describe());
-  }
-  if (description_.contact.enabled) {
-    std::ostringstream line;
-    line << "contact repulsion (" << (description_.wall ? "wall and " : "") << "cells): range "
-         << description_.contact.range << " a, strength " << description_.contact.strength << " G/a";
-    terms_.push_back(line.str());
-  }
-}
-
-void Scene::computeExternalForces()
-{
-  for (auto& forces : externalForces_) {
-    std::fill(forces.begin(), forces.end(), 0.0);
-  }
-  // The bonds as they are (frozen over the stages), spread onto the nodes by virtual work.
-  if (bonds_) {
-    for (std::size_t c = 0; c < cells_.size(); ++c) {
-      bonds_->addNodalForces(static_cast<int>(c), cells_[c], cells_[c].positionData(), externalForces_[c].data());
-    }
-  }
-  if (!description_.contact.enabled) {
-    return;
-  }
-  // The repulsion of the wall and of the other cells on each membrane, as nodal forces (adhesion ContactRepulsion.hpp).
-  const adhesion::ContactSettings& contact = description_.contact;
-  std::vector<std::vector<double>> areas(cells_.size());
-  for (std::size_t c = 0; c < cells_.size(); ++c) {
-    areas[c] = adhesion::nodalAreaShares(cells_[c], cells_[c].positionData());
-    if (description_.wall) {
-      adhesion::addWallContactForces(contact, cells_[c], cells_[c].positionData(), areas[c], externalForces_[c].data());
-    }
-  }
-  for (std::size_t a = 0; a < cells_.size(); ++a) {
-    for (std::size_t b = a + 1; b < cells_.size(); ++b) {
-      adhesion::addCellContactForces(contact, cells_[a], cells_[a].positionData(), areas[a], externalForces_[a].data(),
-                                     cells_[b], cells_[b].positionData(), areas[b], externalForces_[b].data());
-    }
-  }
+  external_.emplace(description_, cells_, unstressed);
+  terms_.insert(terms_.end(), external_->terms().begin(), external_->terms().end());
 }
 
 void Scene::computeLoads(double t, elasticity::MembraneEvaluation what)
 {
   Teuchos::TimeMonitor guard(*membraneTimer_);
-  if (!externalForces_.empty()) {
-    computeExternalForces();
+  if (external_->any()) {
+    external_->compute(cells_);
   }
   for (int c = 0; c < numCells(); ++c) {
     auto& membrane = *membranes_[static_cast<std::size_t>(c)];
     try {
       membrane.evaluate(cells_[static_cast<std::size_t>(c)].positionData(), what,
-                        externalForces_.empty() ? nullptr : externalForces_[static_cast<std::size_t>(c)].data());
+                        external_->any() ? external_->forces(c)->data() : nullptr);
     } catch (const core::NumericalError& e) {
       throw core::NumericalError(core::message("At t = ", t, ", the membrane of '",
                                                description_.cells[static_cast<std::size_t>(c)].path,
@@ -431,13 +386,14 @@ void Scene::velocity(double t, const std::vector<double>& positions, std::vector
 
 adhesion::BondEvents Scene::updateBonds(const std::vector<double>& positions, double dt, std::uint64_t step)
 {
-  core::require(bonds_.has_value(), "Scene::updateBonds: the scene has no bonds");
+  core::require(hasBonds(), "Scene::updateBonds: the scene has no bonds");
   core::require(positions.size() == 3 * static_cast<std::size_t>(numNodes()), "Scene: a state of ", positions.size(),
                 " numbers for ", numNodes(), " nodes");
   adhesion::BondEvents events;
   for (int c = 0; c < numCells(); ++c) {
     const double* x = positions.data() + 3 * static_cast<std::size_t>(nodeOffset(c));
-    const adhesion::BondEvents cell = bonds_->update(c, cells_[static_cast<std::size_t>(c)], x, dt, step, *comm_);
+    const adhesion::BondEvents cell =
+        external_->bonds().update(c, cells_[static_cast<std::size_t>(c)], x, dt, step, *comm_);
     events.formed += cell.formed;
     events.broken += cell.broken;
   }

@@ -84,6 +84,34 @@ void requireUsableAdhesion(const SceneDescription& scene)
                                   "them off.");
 }
 
+// What a tether needs of the rest of the scene (its keys alone are checked by
+// readTetherParameters).
+void requireUsableTether(const SceneDescription& scene)
+{
+  const adhesion::TetherSettings& tether = scene.tether;
+  if (!tether.enabled) {
+    return;
+  }
+  core::require<core::InputError>(scene.wall,
+                                  "'Tether/Enabled' is true but 'Wall/Enabled' is false: the tether "
+                                  "ties the membrane to an anchor on the wall y = 0, which needs the wall.");
+  core::require<core::InputError>(tether.cell < scene.numCells(), "'Tether/Cell' = ", tether.cell,
+                                  " but the scene has ", scene.numCells(), " cell(s), 'Cells/Cell 0' to 'Cells/Cell ",
+                                  scene.numCells() - 1, "': name one of them.");
+  const CellDescription& cell = scene.cells[static_cast<std::size_t>(tether.cell)];
+  core::require<core::InputError>(cell.membraneForces == "Virtual work", "'Tether/Enabled' is true but '", cell.path,
+                                  "/Membrane forces' is 'Contour integral': the tether's force enters as nodal "
+                                  "forces, which need 'Virtual work'.");
+  // The tether holds fixed material points (element, xi, eta) of the mesh.
+  core::require<core::InputError>(!scene.meshRegularisation.enabled,
+                                  "'Tether/Enabled' and 'Mesh regularisation/Enabled' are both true: the tether "
+                                  "holds material points of the mesh, which a redistribution moves. Turn one of "
+                                  "them off.");
+  core::require<core::InputError>(!scene.meshAdaption.enabled,
+                                  "'Tether/Enabled' and 'Mesh adaption/Enabled' are both true: the tether holds "
+                                  "material points of the mesh, which a refinement renumbers. Turn one of them off.");
+}
+
 } // namespace
 
 SceneDescription describeScene(const Teuchos::ParameterList& deck)
@@ -135,6 +163,10 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
   if (deck.isSublist("Adhesion")) {
     scene.adhesion = adhesion::readAdhesionParameters(deck.sublist("Adhesion"), "Adhesion");
     requireUsableAdhesion(scene);
+  }
+  if (deck.isSublist("Tether")) {
+    scene.tether = adhesion::readTetherParameters(deck.sublist("Tether"), "Tether");
+    requireUsableTether(scene);
   }
   for (const auto& cell : scene.cells) {
     core::require<core::InputError>(!scene.contact.enabled || cell.membraneForces == "Virtual work",

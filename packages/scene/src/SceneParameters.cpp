@@ -2,6 +2,7 @@
 
 #include <capsula/adhesion/AdhesionParameters.hpp>
 #include <capsula/adhesion/ContactParameters.hpp>
+#include <capsula/adhesion/TetherParameters.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
@@ -138,6 +139,12 @@ void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::Parame
       valid, "Adhesion",
       "Receptor-ligand bonds between each membrane and a ligand-coated wall y = 0 (packages/adhesion, "
       "docs/cell3d.md); off by default. Needs the wall and 'Membrane forces' = 'Virtual work'."));
+
+  adhesion::declareTetherParameters(core::declareSublist(
+      valid, "Tether",
+      "One permanent bond from a material point of a cell's membrane to a fixed anchor on the wall y = 0 "
+      "(packages/adhesion Tether.hpp, docs/cell3d.md); off by default. Needs the wall and 'Membrane forces' = "
+      "'Virtual work'."));
 
   auto& cells = core::declareSublist(valid, "Cells", "One sublist per cell: Cell 0, Cell 1, ...");
   declareMinimumGap(cells);

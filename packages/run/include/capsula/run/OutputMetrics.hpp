@@ -4,6 +4,7 @@
 // (Section 3.11.2) and the values at t = 0 for the drifts and the stress increase
 // (eq 3.58). The memory goes into checkpoints, so a restarted run writes the same rows.
 #include <capsula/adhesion/AdhesionOutputs.hpp>
+#include <capsula/adhesion/Tether.hpp>
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/scene/CellMetrics.hpp>
 #include <capsula/scene/CellStability.hpp>
@@ -14,6 +15,13 @@
 #include <vector>
 
 namespace capsula::run {
+
+/// The tether at one output time: its spring (adhesion/Tether.hpp) and the angle of the
+/// tethered cell's centroid about the anchor (adhesion::pivotAngleDegrees).
+struct TetherSample {
+  adhesion::TetherState state;
+  double pivotAngleDegrees = 0.0;
+};
 
 /// One cell at one output time.
 struct CellSample {
@@ -36,6 +44,8 @@ struct CellSample {
   scene::CellStability stability; ///< mesh quality, compression, wall gap (CellStability.hpp)
   /// Bonds, their force, contact area and gap; only in a scene with 'Adhesion' enabled.
   std::optional<adhesion::AdhesionSummary> adhesion;
+  /// The tether; only on the tethered cell of a scene with 'Tether' enabled.
+  std::optional<TetherSample> tether;
 
   /// u_slip = k y_c - dx_c/dt (eq 3.55, k = k(t) of this instant, 1 in steady shear), and
   /// u_migr = dy_c/dt, with dx_c/dt the centroid velocity of this instant (the mean surface

@@ -22,12 +22,13 @@
 //
 // The run is the time loop of timeint::TimeIntegrator::integrate with these observers:
 //   RunScene.hpp      after every step: mesh regularisation and adaption
+//   TetherRecord.hpp  after every step and output: the tether's peak force (with 'Tether')
 //   SceneOutputs.hpp  at every output: the metrics, probes, wall stress, snapshot and
 //                     checkpoint; steady state; a degraded mesh
 //   the run itself    after every step: the gap between the cells; progress lines; at every
 //                     output: summary.json
-// and the checkpoint sections of the integration state ("timeint."), the outputs and the
-// scene. Restart: the deck must equal the checkpoint's except for 'Time integration/End
+// and the checkpoint sections of the integration state ("timeint."), the outputs, the scene
+// and the tether record. Restart: the deck must equal the checkpoint's except for 'Time integration/End
 // time' and 'Output/Directory' (RestartDeck.hpp); the continued run writes the same rows,
 // bit for bit, as the uninterrupted one.
 //

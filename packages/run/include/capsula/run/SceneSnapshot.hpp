@@ -8,7 +8,9 @@
 // shear_stress (eq 3.63), dudy and dwdy; with adhesion, for every cell with bonds a block
 // "bonds0", "bonds1", ... (Polyline, two nodes per bond: the receptor and its ligand on the
 // wall) with the cell fields force (on the membrane, 3), occupancy and receptor (its index).
-// The block, and so the mesh version, changes with the number of bonds.
+// The block, and so the mesh version, changes with the number of bonds. With a tether, a
+// block "tether" (Polyline, one segment from the attachment point to the anchor) with the
+// cell fields force (on the membrane, 3) and length.
 #include <capsula/io/Snapshot.hpp>
 #include <capsula/operators/WallShearStress.hpp>
 #include <capsula/scene/Scene.hpp>

@@ -8,8 +8,9 @@
 //   - the double layer and the Krylov solve only if the viscosity ratio is not 1 (the
 //     operators skip both when every lambda = 1);
 //   - the fixed-height stage constraint only if some cell asks for it;
-//   - contact repulsion and receptor-ligand bonds (SceneBonds.hpp) only if 'Contact' and
-//     'Adhesion' enable them: their nodal forces on each membrane enter its load.
+//   - contact repulsion, receptor-ligand bonds (SceneBonds.hpp) and a tether only if
+//     'Contact', 'Adhesion' and 'Tether' enable them: their nodal forces on each membrane
+//     enter its load (ExternalForces.hpp).
 // terms() lists what was built; the run log prints it.
 //
 // The state the time integrator advances is the positions of all nodes of all cells,
@@ -27,6 +28,7 @@
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/operators/LinearFlow.hpp>
 #include <capsula/operators/WarmStartHistory.hpp>
+#include <capsula/scene/ExternalForces.hpp>
 #include <capsula/scene/FixedHeightConstraint.hpp>
 #include <capsula/scene/SceneBonds.hpp>
 #include <capsula/scene/SceneDescription.hpp>
@@ -168,19 +170,20 @@ public:
   void restoreGmresWarmStart(const std::vector<double>& rightHandSides, const std::vector<double>& solutions);
 
   /// True if the deck enables 'Adhesion': the cells carry receptors and bonds.
-  bool hasBonds() const { return bonds_.has_value(); }
+  bool hasBonds() const { return external_->hasBonds(); }
   /// The bonds (only with hasBonds()).
-  const SceneBonds& bonds() const { return *bonds_; }
-  SceneBonds& bonds() { return *bonds_; }
+  const SceneBonds& bonds() const { return external_->bonds(); }
+  SceneBonds& bonds() { return external_->bonds(); }
   /// Bond formation and breakage over the accepted step numbered `step` of length dt that
   /// ended at `positions` (SceneBonds::update for every cell). Collective.
   adhesion::BondEvents updateBonds(const std::vector<double>& positions, double dt, std::uint64_t step);
-  /// The forces from outside on cell c's nodes at the latest evaluation (contact and bonds,
-  /// 3 per node), or null when neither is enabled.
-  const std::vector<double>* externalForces(int c) const
-  {
-    return externalForces_.empty() ? nullptr : &externalForces_[static_cast<std::size_t>(c)];
-  }
+  /// True if the deck enables 'Tether': one cell is tied to an anchor on the wall.
+  bool hasTether() const { return external_->hasTether(); }
+  /// The tether (only with hasTether()).
+  const adhesion::Tether& tether() const { return external_->tether(); }
+  /// The forces from outside on cell c's nodes at the latest evaluation (contact, bonds and
+  /// tether, 3 per node), or null when none is enabled.
+  const std::vector<double>* externalForces(int c) const { return external_->forces(c); }
 
   /// Element loads of the latest evaluation (3 per element, global numbering): the
   /// average of Delta f over each element.
@@ -191,7 +194,6 @@ public:
 private:
   void computeLoads(double t, elasticity::MembraneEvaluation what);
   void buildExternalForces();
-  void computeExternalForces();
   std::string nonFiniteCause(double t) const;
 
   SceneDescription description_;
@@ -204,8 +206,7 @@ private:
   std::vector<double> initialPositions_;
   std::vector<double> loads_;
   std::vector<double> loadDensity_;
-  std::vector<std::vector<double>> externalForces_; // per cell, with 'Contact' or 'Adhesion' only
-  std::optional<SceneBonds> bonds_;                 // with 'Adhesion/Enabled'
+  std::optional<ExternalForces> external_; // built after the membranes, whose unstressed shapes it uses
   std::vector<std::string> terms_;
   operators::KernelChoice kernel_;
   std::optional<operators::WarmStartHistory> warmStart_; // with 'Solver/Warm start'

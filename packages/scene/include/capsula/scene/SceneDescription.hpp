@@ -1,10 +1,12 @@
 #pragma once
 // The physical model a validated deck asks for, in plain values (SceneParameters.hpp lists
 // the keys). Reading it checks what the validators cannot see alone: cells numbered 0..N-1
-// without gaps, a fixed height that needs the wall, contact and adhesion forces that need the
-// virtual-work load, bonds that need the wall and meshes whose material points stay put.
+// without gaps, a fixed height that needs the wall, contact, adhesion and tether forces that
+// need the virtual-work load, bonds and a tether that need the wall and meshes whose material
+// points stay put, a tether on a cell the scene has.
 #include <capsula/adhesion/AdhesionParameters.hpp>
 #include <capsula/adhesion/ContactParameters.hpp>
+#include <capsula/adhesion/TetherParameters.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/RedistributionParameters.hpp>
 #include <capsula/operators/ShearRate.hpp>
@@ -43,6 +45,7 @@ struct SceneDescription {
   mesh::AdaptionSettings meshAdaption;             ///< 'Mesh adaption'
   adhesion::ContactSettings contact;               ///< 'Contact': the short-range repulsion
   adhesion::AdhesionSettings adhesion;             ///< 'Adhesion': receptor-ligand bonds to the wall
+  adhesion::TetherSettings tether;                 ///< 'Tether': one permanent bond to an anchor on the wall
 
   int numCells() const { return static_cast<int>(cells.size()); }
   bool anyFixedHeight() const;

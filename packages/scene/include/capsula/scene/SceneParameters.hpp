@@ -12,6 +12,8 @@
 //   Contact/          Enabled, Range, Strength (capsula::adhesion: the short-range repulsion)
 //   Adhesion/         Enabled, Receptor density, Ligand density, Ligand patch, Spring constant,
 //                     ..., Kinetics, Seed (capsula::adhesion: receptor-ligand bonds to the wall)
+//   Tether/           Enabled, Cell, Polar angle, Azimuth, Anchor, Patch radius, Spring
+//                     constant, Rest length (capsula::adhesion: one permanent bond to the wall)
 //   Mesh regularisation/, Mesh adaption/   (capsula::mesh)
 //
 // The run adds Time integration (capsula::timeint), Discretisation and Solver
