@@ -153,17 +153,8 @@ void BondPopulation::addStiffness(const mesh::SurfaceMesh& mesh, const ReceptorS
     if (s.occupancy <= 0.0) {
       continue;
     }
-    const mesh::Vec3 d = receptors.position(mesh, positions, r) - s.anchor;
-    const double length = d.norm();
-    const double k = s.occupancy * settings_.springConstant;
-    // d/dx of (L - lambda) e is (1 - lambda/L)(I - e e^T) + e e^T. A bond of zero length
-    // pushes along e_y (force()): only its stretch along e_y is kept.
-    mesh::Mat3 bond = k * mesh::Vec3::UnitY() * mesh::Vec3::UnitY().transpose();
-    if (length > 0.0) {
-      const mesh::Vec3 e = d / length;
-      const double ratio = settings_.equilibriumLength / length;
-      bond = k * ((1.0 - ratio) * mesh::Mat3::Identity() + ratio * e * e.transpose());
-    }
+    const mesh::Mat3 bond = springStiffness(receptors.position(mesh, positions, r), s.anchor,
+                                            s.occupancy * settings_.springConstant, settings_.equilibriumLength);
     double phi[6];
     receptors.shapeFunctions(r, phi);
     const auto& nodes = mesh.element(receptors[r].element);

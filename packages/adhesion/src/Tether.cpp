@@ -7,6 +7,7 @@
 #include <capsula/core/Error.hpp>
 
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace capsula::adhesion {
@@ -78,6 +79,30 @@ mesh::Vec3 Tether::addNodalForces(const mesh::SurfaceMesh& cell, const double* p
     spreadPointForce(cell.element(points_[i].element), phi, weights_[static_cast<std::size_t>(i)] * force, nodalForces);
   }
   return force;
+}
+
+void Tether::addStiffness(const mesh::SurfaceMesh& cell, const double* positions, LoadStiffness& stiffness) const
+{
+  const mesh::Mat3 spring =
+      springStiffness(attachment(cell, positions), anchor_, settings_.springConstant, restLength_);
+  std::map<int, double> shares; // node -> c_k, the points of a patch share nodes
+  for (int i = 0; i < points_.size(); ++i) {
+    double phi[6];
+    points_.shapeFunctions(i, phi);
+    const auto& nodes = cell.element(points_[i].element);
+    for (std::size_t a = 0; a < 6; ++a) {
+      shares[nodes[a]] += weights_[static_cast<std::size_t>(i)] * phi[a];
+    }
+  }
+  for (const auto& [k, ck] : shares) {
+    for (const auto& [l, cl] : shares) {
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+          stiffness.add(3 * k + i, 3 * l + j, ck * cl * spring(i, j));
+        }
+      }
+    }
+  }
 }
 
 std::string Tether::describe() const

@@ -7,7 +7,7 @@ namespace capsula::scene {
 bool hasExternalLoadStiffness(const Scene& scene)
 {
   const SceneDescription& description = scene.description();
-  return scene.hasBonds() || (description.contact.enabled && description.wall);
+  return scene.hasBonds() || scene.hasTether() || (description.contact.enabled && description.wall);
 }
 
 void externalLoadStiffness(const Scene& scene, int c, const double* positions, adhesion::LoadStiffness& stiffness)
@@ -16,6 +16,9 @@ void externalLoadStiffness(const Scene& scene, int c, const double* positions, a
   const mesh::SurfaceMesh& cell = scene.cell(c);
   if (scene.hasBonds()) {
     scene.bonds().bonds(c).addStiffness(cell, scene.bonds().receptors(c), positions, stiffness);
+  }
+  if (scene.hasTether() && scene.tether().cell() == c) {
+    scene.tether().addStiffness(cell, positions, stiffness);
   }
   const SceneDescription& description = scene.description();
   if (description.contact.enabled && description.wall) {

@@ -197,7 +197,7 @@ std::string VelocityJacobian::describe() const
     }
   }
   if (!external_.empty()) {
-    line << (scene_.hasBonds() ? " and of the bonds" : "")
+    line << (scene_.hasBonds() ? " and of the bonds" : "") << (scene_.hasTether() ? " and of the tether" : "")
          << (scene_.description().contact.enabled && scene_.description().wall ? " and of the wall contact" : "");
   }
   line << ", frozen each step";

@@ -1,11 +1,13 @@
-// The stiffness K = -dF/dx of the bond and wall-contact nodal forces (LoadStiffness.hpp), what
-// the stiff Jacobian adds to the membrane's tangent stiffness: K x against central
-// differences of the nodal forces, for bonds stretched, compressed and of every direction on
-// a curved, deformed membrane, and for nodes at every height of the repulsion's range.
+// The stiffness K = -dF/dx of the bond, tether and wall-contact nodal forces
+// (LoadStiffness.hpp), what the stiff Jacobian adds to the membrane's tangent stiffness: K x
+// against central differences of the nodal forces, for bonds stretched, compressed and of
+// every direction on a curved, deformed membrane, a point and a patch tether, and for nodes
+// at every height of the repulsion's range.
 #include <capsula/adhesion/BondPopulation.hpp>
 #include <capsula/adhesion/ContactRepulsion.hpp>
 #include <capsula/adhesion/LoadStiffness.hpp>
 #include <capsula/adhesion/Receptors.hpp>
+#include <capsula/adhesion/Tether.hpp>
 #include <capsula/mesh/Icosphere.hpp>
 
 #include <gtest/gtest.h>
@@ -140,4 +142,40 @@ TEST(LoadStiffness, PressureSlopeIsTheDerivativeOfThePressure)
   }
   EXPECT_EQ(adhesion::repulsionPressureSlope(contact, 0.05), 0.0);
   EXPECT_EQ(adhesion::repulsionPressureSlope(contact, 0.2), 0.0);
+}
+
+// The tether pulls at the weighted mean X of its points, so every node of the patch is
+// coupled to every other (c_k c_l): a patch whose nodes were coupled only within an element
+// would miss most entries. Stretched (L > lambda) and compressed to an anchor off to the side
+// on a deformed egg; differences at e = 1e-6 of F(X) with |F'''| ~ sigma / L^2 (L ~ 0.5):
+// truncation ~1e-12 sigma, bound 1e-6 of |K v| as for the bonds.
+TEST(LoadStiffness, TetherIsTheDerivativeOfItsNodalForces)
+{
+  mesh::SurfaceMesh egg = mesh::makeIcosphere(2);
+  const std::vector<double> reference = egg.positions();
+  for (int n = 0; n < egg.numNodes(); ++n) {
+    const Vec3 p = egg.position(n);
+    egg.setPosition(n, Vec3(1.3 * p[0] + 0.1 * p[1], p[1] + 1.2, 0.8 * p[2]));
+  }
+  std::vector<double> x = egg.positions();
+  for (std::size_t i = 0; i < x.size(); i += 3) {
+    x[i] += 0.05 * std::sin(3.0 * x[i + 1]);
+  }
+  for (const double radius : {0.0, 0.3}) {
+    for (const double restLength : {0.05, 1.0}) {
+      adhesion::TetherSettings s;
+      s.enabled = true;
+      s.patchRadius = radius;
+      s.anchor = Vec3(0.4, 0.0, -0.2);
+      s.restLength = restLength;
+      s.springConstant = 30.0;
+      const adhesion::Tether tether(s, egg, egg.positionData(), reference);
+      adhesion::LoadStiffness K;
+      tether.addStiffness(egg, x.data(), K);
+      const auto [worst, size] = mismatch(K, x, [&](const double* y, double* f) { tether.addNodalForces(egg, y, f); });
+      EXPECT_GT(size, 0.1) << radius; // not empty: sigma = 30 spread over the patch's nodes
+      EXPECT_LT(worst, 1e-6 * size) << "patch " << radius << ", rest length " << restLength << ": " << worst << " of "
+                                    << size;
+    }
+  }
 }

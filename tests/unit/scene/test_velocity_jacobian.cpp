@@ -144,6 +144,27 @@ TEST(VelocityJacobian, CarriesTheBondStiffness)
   EXPECT_LT(worst, 1e-6 * size);
 }
 
+// With a tether, J~ carries its stiffness. The default rest length is the tether's length at
+// t = 0, so the unstressed cell's load vanishes there and J~ must be the exact derivative;
+// the spring (100 G along the vertical, spread over a patch of 0.3 a) is then most of it:
+// leaving it out misses by O(1). Tolerance as above.
+TEST(VelocityJacobian, CarriesTheTetherStiffness)
+{
+  auto deck = smallDeck(1, 1.04, true, [](Teuchos::ParameterList& d) {
+    d.sublist("Flow").set("Capillary number", 0.05);
+    d.sublist("Solver").sublist("Stiff").set("Quadrature points", 0);
+    auto& tether = d.sublist("Tether");
+    tether.set("Enabled", true);
+    tether.set("Patch radius", 0.3);
+  });
+  auto s = makeScene(*deck);
+  const std::vector<double> x = s.initialPositions();
+  scene::VelocityJacobian jacobian(s, *deck, kernels());
+  EXPECT_NE(jacobian.describe().find("and of the tether"), std::string::npos) << jacobian.describe();
+  const auto [worst, size] = mismatchWithDifferences(s, jacobian, 0.0, x);
+  EXPECT_LT(worst, 1e-6 * size);
+}
+
 // The stage solve of a stiff membrane (Ca = 0.002, a level-2 neo-Hookean capsule, shift
 // 0.05: shift * rho ~ 1e3) reaches its RMS target; the preconditioner cuts the iterations
 // at least fivefold.

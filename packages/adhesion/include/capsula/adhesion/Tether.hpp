@@ -16,6 +16,7 @@
 // the given one or the point of the wall below X at t = 0; its rest length the given one or
 // L at t = 0. Everything is fixed by the deck and the initial shape: the tether has no state
 // of its own, and a restart that rebuilds it from the deck gets it bit for bit.
+#include "capsula/adhesion/LoadStiffness.hpp"
 #include "capsula/adhesion/Receptors.hpp"
 #include "capsula/adhesion/TetherParameters.hpp"
 
@@ -60,6 +61,10 @@ public:
   TetherState state(const mesh::SurfaceMesh& cell, const double* positions) const;
   /// Adds the tether's nodal forces on the cell to `nodalForces` (3 per node); returns F.
   mesh::Vec3 addNodalForces(const mesh::SurfaceMesh& cell, const double* positions, double* nodalForces) const;
+  /// Adds the stiffness -dF_k/dx_l of those nodal forces at `positions` to `stiffness`: with
+  /// X = sum_k c_k x_k (c_k the nodes' shares of the weighted shape functions), node k takes
+  /// c_k F(X), so the entries are c_k c_l times the spring's stiffness (BondSpring.hpp).
+  void addStiffness(const mesh::SurfaceMesh& cell, const double* positions, LoadStiffness& stiffness) const;
 
   /// The term line of the run log.
   std::string describe() const;
