@@ -2,6 +2,7 @@
 // Small validated decks for the scene tests (level-0/1 spheres), and the scene one of them
 // describes. The run tests add the keys of a run (run/SceneRunFixture.hpp).
 #include <capsula/core/Deck.hpp>
+#include <capsula/core/Error.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
@@ -73,6 +74,19 @@ inline Scene makeScene(const Teuchos::ParameterList& deck)
 {
   static const auto kernels = operators::builtInKernels();
   return Scene(describeScene(deck), deck, Tpetra::getDefaultComm(), kernels);
+}
+
+/// The message of the core::InputError that building the scene of a level-1 sphere at height
+/// 1.6 with `tweak` throws, or "" if it builds.
+template <typename Tweak>
+std::string sceneRefusal(Tweak&& tweak, bool wall = true)
+{
+  try {
+    makeScene(*smallDeck(1, 1.6, wall, tweak));
+  } catch (const core::InputError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 } // namespace capsula::scene::testing

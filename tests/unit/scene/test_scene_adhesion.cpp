@@ -22,6 +22,7 @@ namespace mesh = capsula::mesh;
 namespace scene = capsula::scene;
 using scene::testing::makeScene;
 using scene::testing::realArray;
+using scene::testing::sceneRefusal;
 using scene::testing::smallDeck;
 
 // Rates that make bonds form at once within reach: k_on0 n_L = 100 k at k_B T = 1e-2 G a^2,
@@ -152,47 +153,35 @@ TEST(SceneAdhesion, BondsFormWithinReachAndNotBeyond)
   }
 }
 
-// The message of the core::InputError that building `tweak`'s deck throws, or "".
-std::string refusal(const std::function<void(Teuchos::ParameterList&)>& tweak, bool wall = true)
-{
-  try {
-    auto deck = smallDeck(1, 1.6, wall, tweak);
-    makeScene(*deck);
-  } catch (const core::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(SceneAdhesion, RefusesInputsThatCannotWork)
 {
   const auto enable = [](Teuchos::ParameterList& d) -> Teuchos::ParameterList& {
     d.sublist("Adhesion").set("Enabled", true);
     return d.sublist("Adhesion");
   };
-  EXPECT_NE(refusal([&](auto& d) { enable(d).set("Receptor density", -1.0); }).find("'Adhesion/Receptor density'"),
+  EXPECT_NE(sceneRefusal([&](auto& d) { enable(d).set("Receptor density", -1.0); }).find("'Adhesion/Receptor density'"),
             std::string::npos);
-  EXPECT_NE(refusal([&](auto& d) { enable(d).set("Ligand density", -5.0); }).find("'Adhesion/Ligand density'"),
+  EXPECT_NE(sceneRefusal([&](auto& d) { enable(d).set("Ligand density", -5.0); }).find("'Adhesion/Ligand density'"),
             std::string::npos);
-  EXPECT_NE(refusal([&](auto& d) { enable(d).set("Spring constant", 0.0); }).find("'Adhesion/Spring constant'"),
+  EXPECT_NE(sceneRefusal([&](auto& d) { enable(d).set("Spring constant", 0.0); }).find("'Adhesion/Spring constant'"),
             std::string::npos);
   // Off, a zero spring constant builds nothing and is no error.
-  EXPECT_EQ(refusal([](auto& d) { d.sublist("Adhesion").set("Spring constant", 0.0); }), "");
-  EXPECT_NE(refusal([&](auto& d) {
+  EXPECT_EQ(sceneRefusal([](auto& d) { d.sublist("Adhesion").set("Spring constant", 0.0); }), "");
+  EXPECT_NE(sceneRefusal([&](auto& d) {
               enable(d).set("Ligand patch", realArray({1.0, -1.0, -1.0, 1.0}));
             }).find("'Adhesion/Ligand patch'"),
             std::string::npos);
-  EXPECT_NE(refusal([&](auto& d) {
+  EXPECT_NE(sceneRefusal([&](auto& d) {
               enable(d).set("Ligand patch", realArray({-1.0, 1.0}));
             }).find("'Adhesion/Ligand patch'"),
             std::string::npos);
-  EXPECT_NE(refusal([&](auto& d) { enable(d); }, false).find("'Wall/Enabled' is false"), std::string::npos);
-  EXPECT_NE(refusal([&](auto& d) {
+  EXPECT_NE(sceneRefusal([&](auto& d) { enable(d); }, false).find("'Wall/Enabled' is false"), std::string::npos);
+  EXPECT_NE(sceneRefusal([&](auto& d) {
               enable(d);
               d.sublist("Cells").sublist("Cell 0").set("Membrane forces", "Contour integral");
             }).find("'Adhesion/Enabled' is true but 'Cells/Cell 0/Membrane forces'"),
             std::string::npos);
-  EXPECT_NE(refusal([&](auto& d) {
+  EXPECT_NE(sceneRefusal([&](auto& d) {
               enable(d);
               d.sublist("Mesh regularisation").set("Enabled", true);
             }).find("'Mesh regularisation/Enabled'"),

@@ -22,6 +22,7 @@ namespace mesh = capsula::mesh;
 namespace scene = capsula::scene;
 using scene::testing::makeScene;
 using scene::testing::realArray;
+using scene::testing::sceneRefusal;
 using scene::testing::smallDeck;
 
 // A level-1 sphere 0.05 a above the wall tethered at its lowest point (0, 0.05, 0) to an
@@ -33,18 +34,6 @@ void stretchedTether(Teuchos::ParameterList& deck)
   tether.set("Spring constant", 20.0);
   tether.set("Anchor", realArray({-0.3, 0.0, 0.0}));
   tether.set("Rest length", realArray({0.0}));
-}
-
-// The message of the core::InputError that building `tweak`'s deck throws, or "".
-std::string tetherSceneRefusal(const std::function<void(Teuchos::ParameterList&)>& tweak, bool wall = true)
-{
-  try {
-    auto deck = smallDeck(1, 1.6, wall, tweak);
-    makeScene(*deck);
-  } catch (const core::InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(SceneTether, BuiltOnlyWhenEnabled)
@@ -133,32 +122,30 @@ TEST(SceneTether, RefusesInputsThatCannotWork)
     d.sublist("Tether").set("Enabled", true);
     return d.sublist("Tether");
   };
-  EXPECT_NE(tetherSceneRefusal([&](auto& d) { enable(d); }, false)
+  EXPECT_NE(sceneRefusal([&](auto& d) { enable(d); }, false)
                 .find("'Tether/Enabled' is true but 'Wall/Enabled' "
                       "is false"),
             std::string::npos);
-  EXPECT_NE(
-      tetherSceneRefusal([&](auto& d) { enable(d).set("Cell", 1); }).find("'Tether/Cell' = 1 but the scene has 1"),
-      std::string::npos);
-  EXPECT_NE(tetherSceneRefusal([&](auto& d) {
+  EXPECT_NE(sceneRefusal([&](auto& d) { enable(d).set("Cell", 1); }).find("'Tether/Cell' = 1 but the scene has 1"),
+            std::string::npos);
+  EXPECT_NE(sceneRefusal([&](auto& d) {
               enable(d).set("Anchor", realArray({0.0, -0.1, 0.0}));
             }).find("'Tether/Anchor' = {0, -0.1, 0} lies off the wall"),
             std::string::npos);
-  EXPECT_NE(
-      tetherSceneRefusal([&](auto& d) { enable(d).set("Spring constant", 0.0); }).find("'Tether/Spring constant'"),
-      std::string::npos);
-  EXPECT_NE(tetherSceneRefusal([&](auto& d) {
+  EXPECT_NE(sceneRefusal([&](auto& d) { enable(d).set("Spring constant", 0.0); }).find("'Tether/Spring constant'"),
+            std::string::npos);
+  EXPECT_NE(sceneRefusal([&](auto& d) {
               enable(d);
               d.sublist("Cells").sublist("Cell 0").set("Membrane forces", "Contour integral");
             }).find("'Tether/Enabled' is true but 'Cells/Cell 0/Membrane forces'"),
             std::string::npos);
-  EXPECT_NE(tetherSceneRefusal([&](auto& d) {
+  EXPECT_NE(sceneRefusal([&](auto& d) {
               enable(d);
               d.sublist("Mesh adaption").set("Enabled", true);
             }).find("'Mesh adaption/Enabled'"),
             std::string::npos);
   // The tether and the receptor-ligand bonds together: both forces reach the membrane.
-  EXPECT_EQ(tetherSceneRefusal([&](auto& d) {
+  EXPECT_EQ(sceneRefusal([&](auto& d) {
               enable(d);
               d.sublist("Adhesion").set("Enabled", true);
             }),
