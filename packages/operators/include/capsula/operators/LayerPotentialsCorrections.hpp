@@ -1,0 +1,196 @@
+#pragma once
+// Part of LayerPotentials.hpp, included at its end: the element rules and the singular and
+// near-singular corrections. The class and what it computes are described there.
+
+namespace capsula::operators {
+
+template <class Kernel>
+template <class Integrand>
+typename Integrand::Value LayerPotentials<Kernel>::regularRule(int m, const Integrand& integrand) const
+{
+  const QuadraturePoints& p = quadrature_.points();
+  typename Integrand::Value sum{}, term;
+  const int nq = quadrature_.pointsPerElement();
+  for (int k = 0; k < nq; ++k) {
+    const std::size_t q = static_cast<std::size_t>(m) * nq + k;
+    ElementSample s;
+    s.x[0] = p.x[q];
+    s.x[1] = p.y[q];
+    s.x[2] = p.z[q];
+    s.weight = p.weight[q];
+    s.weightedNormal[0] = p.nx[q];
+    s.weightedNormal[1] = p.ny[q];
+    s.weightedNormal[2] = p.nz[q];
+    std::copy(&p.phi[6 * q], &p.phi[6 * q] + 6, s.phi);
+    integrand.evaluate(s, term);
+    for (int c = 0; c < Integrand::size; ++c) {
+      sum[c] += term[c];
+    }
+  }
+  return sum;
+}
+
+template <class Kernel>
+template <class Integrand>
+typename Integrand::Value LayerPotentials<Kernel>::nearCorrection(int m, const Integrand& integrand) const
+{
+  const ElementMap& element = elementMaps_[m];
+  double poles[KernelTraits<Kernel>::maxImages + 1][3];
+  for (int i = 0; i < 3; ++i) {
+    poles[0][i] = integrand.x0[i];
+  }
+  const int numPoles = 1 + KernelTraits<Kernel>::images(integrand.x0, poles + 1);
+  auto value = AdaptiveElementQuadrature<Integrand>(element, integrand, quadrature_.rule(),
+                                                    parameters_.nearSingularTolerance, poles, numPoles)
+                   .integrate();
+  const auto regular = regularRule(m, integrand);
+  for (int c = 0; c < Integrand::size; ++c) {
+    value[c] -= regular[c];
+  }
+  return value;
+}
+
+template <class Kernel>
+template <class Integrand>
+typename Integrand::Value LayerPotentials<Kernel>::singularCorrection(int m, int localNode, const Integrand& integrand,
+                                                                      ParametricRule& rule) const
+{
+  const ElementMap& element = elementMaps_[m];
+  // The vertex rules do not depend on the element; the midside ones do (alpha, beta, gamma).
+  const ParametricRule* polar = &vertexRules_[std::min(localNode, 2)];
+  if (localNode >= 3) {
+    singularRule(localNode, element.shape(), gauss_, rule);
+    polar = &rule;
+  }
+  auto value = integrateWithRule(element, integrand, *polar);
+  const auto regular = regularRule(m, integrand);
+  for (int c = 0; c < Integrand::size; ++c) {
+    value[c] -= regular[c];
+  }
+  return value;
+}
+
+// Double-layer corrections of target t as node blocks: sum_a u_a . D_a over every
+// singular and near-singular element, D_a = special - regular of int phi_a T n dS, and
+// for the own cell the subtraction's block -sum_a D_a on u(x0).
+template <class Kernel>
+void LayerPotentials<Kernel>::findNodeNearElements()
+{
+  if (hasNodeNear_) {
+    return;
+  }
+  nodeNear_.resize(static_cast<std::size_t>(numTargets_));
+  const double* positions = quadrature_.nodePositions().data();
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(dynamic, 16)
+#endif
+  for (int t = 0; t < numTargets_; ++t) {
+    findNearElements(positions + 3 * (firstTarget_ + t), &neighbourhoods_[t], nodeNear_[t]);
+  }
+  hasNodeNear_ = true;
+}
+
+template <class Kernel>
+void LayerPotentials<Kernel>::correctDoubleLayer(int t, TargetCorrections& out, ParametricRule& rule) const
+{
+  const double* x0 = quadrature_.nodePositions().data() + 3 * (firstTarget_ + t);
+  const DoubleLayerIntegrand<Kernel> integrand{x0};
+  const CellRange& own = cells_[cellOfNode(firstTarget_ + t)];
+  const auto record = [&](int m, const typename DoubleLayerIntegrand<Kernel>::Value& correction) {
+    const bool ownCell = m >= own.firstElement && m < own.endElement;
+    const auto& nodes = quadrature_.elements().nodes[m];
+    for (int a = 0; a < 6; ++a) {
+      const double* block = &correction[9 * a];
+      const auto found = std::find(out.nodes.begin(), out.nodes.end(), nodes[a]);
+      if (found == out.nodes.end()) {
+        out.nodes.push_back(nodes[a]);
+        out.dbl.insert(out.dbl.end(), block, block + 9);
+      } else {
+        detail::addScaledBlock(&out.dbl[9 * (found - out.nodes.begin())], block, 1.0);
+      }
+      if (ownCell) {
+        detail::addScaledBlock(out.self, block, -1.0);
+      }
+    }
+  };
+  for (const auto& [m, localNode] : neighbourhoods_[t].incident) {
+    record(m, singularCorrection(m, localNode, integrand, rule));
+  }
+  for (const int m : nodeNear_[t]) {
+    record(m, nearCorrection(m, integrand));
+  }
+}
+
+template <class Kernel>
+void LayerPotentials<Kernel>::prepareDoubleLayerCorrections()
+{
+  if (hasDoubleCorrections_) {
+    return;
+  }
+  findNodeNearElements();
+  corrections_.assign(numTargets_, TargetCorrections{});
+#if defined(_OPENMP)
+#pragma omp parallel
+#endif
+  {
+    ParametricRule rule;
+#if defined(_OPENMP)
+#pragma omp for schedule(dynamic, 16)
+#endif
+    for (int t = 0; t < numTargets_; ++t) {
+      correctDoubleLayer(t, corrections_[t], rule);
+    }
+  }
+  hasDoubleCorrections_ = true;
+}
+
+template <class Kernel>
+void LayerPotentials<Kernel>::correctNodalSingleLayer(int t, TargetCorrections& out, ParametricRule& rule) const
+{
+  const double* x0 = quadrature_.nodePositions().data() + 3 * (firstTarget_ + t);
+  const NodalSingleLayerIntegrand<Kernel> integrand{x0};
+  const auto record = [&](int m, const typename NodalSingleLayerIntegrand<Kernel>::Value& correction) {
+    const auto& nodes = quadrature_.elements().nodes[m];
+    for (int a = 0; a < 6; ++a) {
+      const double* block = &correction[9 * a];
+      const auto found = std::find(out.nodes.begin(), out.nodes.end(), nodes[a]);
+      if (found == out.nodes.end()) {
+        out.nodes.push_back(nodes[a]);
+        out.dbl.insert(out.dbl.end(), block, block + 9);
+      } else {
+        detail::addScaledBlock(&out.dbl[9 * (found - out.nodes.begin())], block, 1.0);
+      }
+    }
+  };
+  for (const auto& [m, localNode] : neighbourhoods_[t].incident) {
+    record(m, singularCorrection(m, localNode, integrand, rule));
+  }
+  for (const int m : nodeNear_[t]) {
+    record(m, nearCorrection(m, integrand));
+  }
+}
+
+template <class Kernel>
+void LayerPotentials<Kernel>::prepareNodalSingleLayerCorrections()
+{
+  if (hasSingleCorrections_) {
+    return;
+  }
+  findNodeNearElements();
+  singleCorrections_.assign(numTargets_, TargetCorrections{});
+#if defined(_OPENMP)
+#pragma omp parallel
+#endif
+  {
+    ParametricRule rule;
+#if defined(_OPENMP)
+#pragma omp for schedule(dynamic, 16)
+#endif
+    for (int t = 0; t < numTargets_; ++t) {
+      correctNodalSingleLayer(t, singleCorrections_[t], rule);
+    }
+  }
+  hasSingleCorrections_ = true;
+}
+
+} // namespace capsula::operators
