@@ -24,6 +24,9 @@ void StageOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp
     const auto x = X.getData(v);
     jacobian_(x.getRawPtr(), product_.data());
     ++applications_;
+    if (products_ != nullptr) {
+      products_->add(x.getRawPtr(), product_.data(), n);
+    }
     auto y = Y.getDataNonConst(v);
     for (std::size_t k = 0; k < n; ++k) {
       const double Wx = x[k] - shift_ * product_[k];

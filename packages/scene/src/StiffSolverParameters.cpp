@@ -15,6 +15,12 @@ void declareStiffSolverParameters(Teuchos::ParameterList& stiff)
                    "Krylov vectors GMRES keeps before it restarts (Belos 'Num Blocks'); each costs "
                    "3 numbers per node.",
                    1, 1000);
+  core::declareInt(stiff, "Recycled products", defaults.recycledProducts,
+                   "Products of the Jacobian a step keeps (each costs 3 numbers per node, twice): "
+                   "every stage solve of the step starts from the combination of them with the "
+                   "least residual, so GMRES only reduces what they cannot reach (0: each solve "
+                   "starts from zero; docs/stiff-integration.md).",
+                   0, 1000);
   core::declareChoice(stiff, "Preconditioner", "Local mobility", {"Local mobility", "None"},
                       "Local mobility: the stage matrix with the single layer replaced by each node's "
                       "own mobility, a sparse matrix factorised per cell (docs/stiff-integration.md); "
@@ -39,6 +45,7 @@ StiffSolverSettings readStiffSolverSettings(const Teuchos::ParameterList& stiff)
   StiffSolverSettings s;
   s.maximumIterations = stiff.get<int>("Maximum iterations");
   s.restart = stiff.get<int>("Restart");
+  s.recycledProducts = stiff.get<int>("Recycled products");
   s.preconditioned = stiff.get<std::string>("Preconditioner") == "Local mobility";
   s.mobilityFactor = stiff.get<double>("Mobility factor");
   s.quadraturePoints = stiff.get<int>("Quadrature points");

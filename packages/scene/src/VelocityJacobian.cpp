@@ -70,7 +70,8 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   gmres_.restart = settings_.restart;
   gmres_.maximumIterations = settings_.maximumIterations;
   solver_ = std::make_unique<operators::StageSolver>(
-      map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_);
+      map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_,
+      static_cast<std::size_t>(settings_.recycledProducts));
   for (int c = 0; c < scene.numCells(); ++c) {
     mass_.push_back(std::make_unique<mesh::SurfaceMassMatrix>(scene.cell(c)));
     bendingLoad_.push_back(std::make_unique<elasticity::LinearLumpedLoad>(scene.cell(c)));
@@ -84,6 +85,7 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
 void VelocityJacobian::linearise(double t, const std::vector<double>& y)
 {
   Teuchos::TimeMonitor guard(*lineariseTimer_);
+  solver_->newJacobian();
   flowGradient_ = scene_.flowAt(t).background.gradient;
   frozenPositions_ = y;
   frozen_->setPositions(y.data());
@@ -207,7 +209,11 @@ std::string VelocityJacobian::describe() const
   if (scene_.hasConstraints()) {
     line << ", fixed-height constraint";
   }
-  line << "; GMRES (restart " << settings_.restart << ", at most " << settings_.maximumIterations << " iterations)";
+  line << "; GMRES (restart " << settings_.restart << ", at most " << settings_.maximumIterations << " iterations";
+  if (settings_.recycledProducts > 0) {
+    line << ", from up to " << settings_.recycledProducts << " kept products of the step's Jacobian";
+  }
+  line << ")";
   if (settings_.preconditioned) {
     line << " with the local-mobility preconditioner (beta = " << settings_.mobilityFactor << ")";
   } else {

@@ -61,12 +61,14 @@ VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP
   gmres_.restart = settings_.restart;
   gmres_.maximumIterations = settings_.maximumIterations;
   solver_ = std::make_unique<operators::StageSolver>(
-      map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_);
+      map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_,
+      static_cast<std::size_t>(settings_.recycledProducts));
 }
 
 void VelocityJacobian2D::linearise(double t, const std::vector<double>& y)
 {
   Teuchos::TimeMonitor guard(*lineariseTimer_);
+  solver_->newJacobian();
   flowGradient_ = model_.flowAt(t).background.gradient;
   frozenState_ = y;
   frozen_.emplace(model_.contour(y));
@@ -259,7 +261,11 @@ std::string VelocityJacobian2D::describe() const
   if (tetherEnabled_) {
     line << ", the tethered node's rows zero once tethered";
   }
-  line << "; GMRES (restart " << settings_.restart << ", at most " << settings_.maximumIterations << " iterations)";
+  line << "; GMRES (restart " << settings_.restart << ", at most " << settings_.maximumIterations << " iterations";
+  if (settings_.recycledProducts > 0) {
+    line << ", from up to " << settings_.recycledProducts << " kept products of the step's Jacobian";
+  }
+  line << ")";
   switch (settings_.preconditioner) {
   case StiffPreconditioner2D::PointSingleLayer:
     line << " with the point-single-layer preconditioner (dense LU)";

@@ -173,3 +173,83 @@ TEST(StageSolver, KeepsFlexibleGmresWhateverTheViscosityRatioMethod)
   // Flexible GMRES's residual is that of its iterate (1% margin for round-off).
   EXPECT_LT(std::sqrt(sum / kN), 1.01e-10);
 }
+
+// Kept products of J~ (JacobianProducts.hpp): a right-hand side within their span is solved
+// with no new application, for any shift (W x = x - shift J~ x from the kept pair); one
+// outside it starts from its least-residual part, so it needs fewer iterations than from
+// zero and reaches the same true residual; newJacobian() forgets them.
+TEST(StageSolver, StartsFromTheKeptProductsOfTheJacobian)
+{
+  const auto comm = Tpetra::getDefaultComm();
+  auto map = Teuchos::rcp(new Tpetra::Map<>(kN, 0, comm, Tpetra::LocallyReplicated));
+  capsula::operators::SolverParameters gmres;
+  gmres.restart = 20;
+  gmres.maximumIterations = 200;
+  long long applications = 0;
+  const auto counted = [&](const double* x, double* y) {
+    ++applications;
+    applyJacobian(x, y);
+  };
+  const double shift = 0.2, target = 1e-10;
+  const auto trueResidualRms = [](double s, const std::vector<double>& x, const std::vector<double>& r) {
+    const std::vector<double> W = applyW(s, x);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < kN; ++i) {
+      sum += (W[i] - r[i]) * (W[i] - r[i]);
+    }
+    return std::sqrt(sum / kN);
+  };
+  StageSolver plain(map, applyJacobian, Teuchos::rcp(new StageDiagonalInverse(map, shift)), gmres);
+  StageSolver recycling(map, counted, Teuchos::rcp(new StageDiagonalInverse(map, shift)), gmres, 40);
+
+  // The first solve has nothing to start from.
+  const std::vector<double> r1 = pattern(0.4, 0.3);
+  std::vector<double> x1(kN, 0.0);
+  const auto first = recycling.solve(shift, r1, x1, target);
+  ASSERT_TRUE(first.converged);
+  EXPECT_FALSE(first.recycled);
+  EXPECT_EQ(applications, first.iterations);
+
+  // W x1 = r1, so 2.5 r1 is 2.5 x1: no application; the same at another shift (a retried
+  // attempt), where W x1 is a different vector. The true residual is recomputed here: a
+  // wrong sign of the shift in the kept W x would leave an O(1) residual.
+  for (const double s : {shift, 0.05}) {
+    std::vector<double> rs = applyW(s, x1);
+    for (double& v : rs) {
+      v *= 2.5;
+    }
+    std::vector<double> x(kN, 0.0);
+    const long long before = applications;
+    const auto again = recycling.solve(s, rs, x, target);
+    ASSERT_TRUE(again.converged);
+    EXPECT_TRUE(again.recycled);
+    EXPECT_EQ(again.iterations, 0);
+    EXPECT_EQ(applications, before);
+    // The projection's round-off on a 24-vector is ~1e-15 of |r| ~ 10: far below the target.
+    EXPECT_LT(trueResidualRms(s, x, rs), target);
+  }
+
+  // A related right-hand side (as a later stage's: r1 plus a change 1e-4 of its size) needs
+  // fewer iterations than from zero and meets the same target in the true residual.
+  std::vector<double> r2 = r1;
+  const std::vector<double> change = pattern(1.3, 0.6);
+  for (std::size_t i = 0; i < kN; ++i) {
+    r2[i] += 1e-4 * change[i];
+  }
+  std::vector<double> fromZero(kN, 0.0), recycled(kN, 0.0);
+  const auto zeroStart = plain.solve(shift, r2, fromZero, target);
+  const auto keptStart = recycling.solve(shift, r2, recycled, target);
+  ASSERT_TRUE(zeroStart.converged);
+  ASSERT_TRUE(keptStart.converged);
+  EXPECT_TRUE(keptStart.recycled);
+  EXPECT_LT(keptStart.iterations, zeroStart.iterations);
+  EXPECT_LT(trueResidualRms(shift, recycled, r2), 1.01 * target); // 1%: GMRES's estimate vs the true residual
+  EXPECT_LE(keptStart.residualRms, target);
+
+  // After newJacobian() the same right-hand side starts from zero again.
+  recycling.newJacobian();
+  std::vector<double> afresh(kN, 0.0);
+  const auto cleared = recycling.solve(shift, r2, afresh, target);
+  EXPECT_FALSE(cleared.recycled);
+  EXPECT_EQ(cleared.iterations, zeroStart.iterations);
+}

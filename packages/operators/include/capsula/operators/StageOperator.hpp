@@ -6,6 +6,8 @@
 // layer potentials of the owned rows) is what the ranks share. The operator's map is
 // locally replicated: Belos's inner products then need no reduction, so every rank, and
 // every number of ranks, takes the same Krylov steps and gets the same bits.
+#include <capsula/operators/JacobianProducts.hpp>
+
 #include <Teuchos_RCP.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
@@ -38,6 +40,9 @@ public:
   void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS, double alpha = 1.0,
              double beta = 0.0) const override;
 
+  /// Keeps every product (x, J~ x) this operator makes in `products` (null: none).
+  void keepProductsIn(JacobianProducts* products) { products_ = products; }
+
   /// Applications of J~ so far.
   long long applications() const { return applications_; }
 
@@ -45,6 +50,7 @@ private:
   Teuchos::RCP<const Map> map_;
   Action jacobian_;
   double shift_ = 0.0;
+  JacobianProducts* products_ = nullptr;
   mutable std::vector<double> product_;
   mutable long long applications_ = 0;
 };

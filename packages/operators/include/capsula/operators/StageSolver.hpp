@@ -11,7 +11,10 @@
 // preconditioned vectors, so the residual it tests is that of its iterate and each solve
 // stops on the RMS residual the integrator asks for without an application of W to confirm
 // it (KrylovSolve.hpp). The other methods would test an estimate, or pay that application.
-// 'Solver/Stiff' sets only the restart length and the iteration cap.
+// 'Solver/Stiff' sets only the restart length, the iteration cap and how many products of
+// J~ a step keeps (JacobianProducts.hpp): a solve starts from the least-residual
+// combination of the products the step's earlier solves made, until newJacobian().
+#include <capsula/operators/JacobianProducts.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/operators/StageOperator.hpp>
 
@@ -27,6 +30,7 @@ namespace capsula::operators {
 struct StageSolveResult {
   bool converged = false;
   int iterations = 0;       ///< GMRES iterations
+  bool recycled = false;    ///< started from the kept products of J~
   double residualRms = 0.0; ///< achieved ||r - W x||_2 / sqrt(n)
 };
 
@@ -34,13 +38,20 @@ class StageSolver {
 public:
   /// On the locally replicated `map`, with J~ = `jacobian`, the preconditioner `M` ~ W^-1
   /// (null: none; its shift is the caller's to set before each solve) and the GMRES
-  /// restart and iteration cap of `gmres` (its tolerance is set per solve).
+  /// restart and iteration cap of `gmres` (its tolerance is set per solve); keeps up to
+  /// `recycledProducts` products of J~ between newJacobian() calls (0: every solve starts
+  /// afresh).
   StageSolver(Teuchos::RCP<const Tpetra::Map<>> map, StageOperator::Action jacobian,
-              Teuchos::RCP<const Tpetra::Operator<double>> M, const SolverParameters& gmres);
+              Teuchos::RCP<const Tpetra::Operator<double>> M, const SolverParameters& gmres,
+              std::size_t recycledProducts = 0);
+
+  /// J~ changed (a new step's linearisation): the kept products no longer apply.
+  void newJacobian() { products_.clear(); }
 
   /// Solves W x = r to an RMS residual of at most `residualRms`; x's content on entry is
-  /// the initial guess (all zeros saves an application of W). A right-hand side already
-  /// within the target gives x = 0 without an iteration.
+  /// the initial guess (all zeros saves an application of W; with kept products of J~, an
+  /// all-zero x starts from their least-residual combination instead). A right-hand side
+  /// already within the target gives x = 0 without an iteration.
   StageSolveResult solve(double shift, const std::vector<double>& r, std::vector<double>& x, double residualRms);
 
 private:
@@ -48,6 +59,8 @@ private:
   Teuchos::RCP<StageOperator> stage_;
   Teuchos::RCP<const Tpetra::Operator<double>> preconditioner_;
   SolverParameters gmres_;
+  JacobianProducts products_;
+  std::vector<double> residual_; ///< r - W x0 of the recycled guess x0
 };
 
 } // namespace capsula::operators

@@ -5,6 +5,7 @@
 //   <ParameterList name="Stiff">
 //     <Parameter name="Maximum iterations" type="int" value="200"/>
 //     <Parameter name="Restart" type="int" value="60"/>
+//     <Parameter name="Recycled products" type="int" value="0"/>
 //     <Parameter name="Preconditioner" type="string" value="Local mobility"/>
 //     <Parameter name="Mobility factor" type="double" value="2.5"/>
 //     <Parameter name="Quadrature points" type="int" value="3"/>
@@ -18,6 +19,7 @@ namespace capsula::scene {
 struct StiffSolverSettings {
   int maximumIterations = 200; ///< GMRES iterations of one stage solve before it counts as failed
   int restart = 60;            ///< Krylov vectors kept (Belos "Num Blocks")
+  int recycledProducts = 0;    ///< products of J~ a step keeps (operators/JacobianProducts.hpp)
   bool preconditioned = true;  ///< "Local mobility" (true) or "None"
   double mobilityFactor = 2.5; ///< beta of the local mobility beta / R_i (LocalMobilityPreconditioner.hpp)
   int quadraturePoints = 3;    ///< N_Q of J~'s single layer (0: Discretisation/Quadrature points)

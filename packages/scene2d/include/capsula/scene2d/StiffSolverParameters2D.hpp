@@ -5,6 +5,7 @@
 //   <ParameterList name="Stiff">
 //     <Parameter name="Maximum iterations" type="int" value="200"/>
 //     <Parameter name="Restart" type="int" value="60"/>
+//     <Parameter name="Recycled products" type="int" value="0"/>
 //     <Parameter name="Preconditioner" type="string" value="Point single layer"/>
 //     <Parameter name="Mobility factor" type="double" value="1"/>
 //     <Parameter name="Gauss-Legendre points" type="int" value="3"/>
@@ -21,6 +22,7 @@ enum class StiffPreconditioner2D { PointSingleLayer, LocalMobility, None };
 struct StiffSolverSettings2D {
   int maximumIterations = 200; ///< GMRES iterations of one stage solve before it counts as failed
   int restart = 60;            ///< Krylov vectors kept (Belos "Num Blocks")
+  int recycledProducts = 0;    ///< products of J~ a step keeps (operators/JacobianProducts.hpp)
   StiffPreconditioner2D preconditioner = StiffPreconditioner2D::PointSingleLayer;
   double mobilityFactor = 1.0; ///< beta of the local mobility c beta l_i (StagePreconditioner2D.hpp)
   int gaussLegendrePoints = 3; ///< N_GL of J~'s single layer (0: Discretisation/Gauss-Legendre points)
