@@ -7,20 +7,7 @@ namespace capsula::scene {
 void declareStiffSolverParameters(Teuchos::ParameterList& stiff)
 {
   const StiffSolverSettings defaults;
-  core::declareInt(stiff, "Maximum iterations", defaults.maximumIterations,
-                   "GMRES iterations of one stage solve of a stiff method before the solve counts as "
-                   "failed: the step is then rejected and retried with a quarter of its size.",
-                   1, 100000);
-  core::declareInt(stiff, "Restart", defaults.restart,
-                   "Krylov vectors GMRES keeps before it restarts (Belos 'Num Blocks'); each costs "
-                   "3 numbers per node.",
-                   1, 1000);
-  core::declareInt(stiff, "Recycled products", defaults.recycledProducts,
-                   "Products of the Jacobian a step keeps (each costs 3 numbers per node, twice): "
-                   "every stage solve of the step starts from the combination of them with the "
-                   "least residual, so GMRES only reduces what they cannot reach (0: each solve "
-                   "starts from zero; docs/stiff-integration.md).",
-                   0, 1000);
+  operators::declareStageSolverParameters(stiff, 3);
   core::declareChoice(stiff, "Preconditioner", "Local mobility", {"Local mobility", "None"},
                       "Local mobility: the stage matrix with the single layer replaced by each node's "
                       "own mobility, a sparse matrix factorised per cell (docs/stiff-integration.md); "
@@ -43,9 +30,7 @@ void declareStiffSolverParameters(Teuchos::ParameterList& stiff)
 StiffSolverSettings readStiffSolverSettings(const Teuchos::ParameterList& stiff)
 {
   StiffSolverSettings s;
-  s.maximumIterations = stiff.get<int>("Maximum iterations");
-  s.restart = stiff.get<int>("Restart");
-  s.recycledProducts = stiff.get<int>("Recycled products");
+  s.stage = operators::readStageSolverSettings(stiff);
   s.preconditioned = stiff.get<std::string>("Preconditioner") == "Local mobility";
   s.mobilityFactor = stiff.get<double>("Mobility factor");
   s.quadraturePoints = stiff.get<int>("Quadrature points");

@@ -67,11 +67,11 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   coefficient_.assign(static_cast<std::size_t>(numNodes),
                       -1.0 / (4.0 * M_PI * (1.0 + lambda) * scene.flow().capillaryNumber));
   flowFactor_.assign(static_cast<std::size_t>(numNodes), 2.0 / (1.0 + lambda));
-  gmres_.restart = settings_.restart;
-  gmres_.maximumIterations = settings_.maximumIterations;
+  gmres_.restart = settings_.stage.restart;
+  gmres_.maximumIterations = settings_.stage.maximumIterations;
   solver_ = std::make_unique<operators::StageSolver>(
       map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_,
-      static_cast<std::size_t>(settings_.recycledProducts));
+      static_cast<std::size_t>(settings_.stage.recycledProducts));
   for (int c = 0; c < scene.numCells(); ++c) {
     mass_.push_back(std::make_unique<mesh::SurfaceMassMatrix>(scene.cell(c)));
     bendingLoad_.push_back(std::make_unique<elasticity::LinearLumpedLoad>(scene.cell(c)));
@@ -182,8 +182,7 @@ timeint::LinearSolveReport VelocityJacobian::solve(double shift, const std::vect
 std::string VelocityJacobian::settingsHint() const
 {
   std::ostringstream hint;
-  hint << "(raise 'Solver/Stiff/Maximum iterations' = " << settings_.maximumIterations
-       << " or 'Solver/Stiff/Restart' = " << settings_.restart
+  hint << "(" << operators::settingsHint(settings_.stage)
        << (settings_.preconditioned ? "" : ", or set 'Solver/Stiff/Preconditioner' to 'Local mobility'") << ")";
   return hint.str();
 }
@@ -209,11 +208,7 @@ std::string VelocityJacobian::describe() const
   if (scene_.hasConstraints()) {
     line << ", fixed-height constraint";
   }
-  line << "; GMRES (restart " << settings_.restart << ", at most " << settings_.maximumIterations << " iterations";
-  if (settings_.recycledProducts > 0) {
-    line << ", from up to " << settings_.recycledProducts << " kept products of the step's Jacobian";
-  }
-  line << ")";
+  line << "; " << operators::describe(settings_.stage);
   if (settings_.preconditioned) {
     line << " with the local-mobility preconditioner (beta = " << settings_.mobilityFactor << ")";
   } else {

@@ -21,20 +21,7 @@ std::string toString(StiffPreconditioner2D preconditioner)
 void declareStiffSolverParameters2D(Teuchos::ParameterList& stiff)
 {
   const StiffSolverSettings2D defaults;
-  core::declareInt(stiff, "Maximum iterations", defaults.maximumIterations,
-                   "GMRES iterations of one stage solve of a stiff method before the solve counts as "
-                   "failed: the step is then rejected and retried with a quarter of its size.",
-                   1, 100000);
-  core::declareInt(stiff, "Restart", defaults.restart,
-                   "Krylov vectors GMRES keeps before it restarts (Belos 'Num Blocks'); each costs "
-                   "2 numbers per node.",
-                   1, 1000);
-  core::declareInt(stiff, "Recycled products", defaults.recycledProducts,
-                   "Products of the Jacobian a step keeps (each costs 2 numbers per node, twice): "
-                   "every stage solve of the step starts from the combination of them with the "
-                   "least residual, so GMRES only reduces what they cannot reach (0: each solve "
-                   "starts from zero; docs/stiff-integration.md).",
-                   0, 1000);
+  operators::declareStageSolverParameters(stiff, 2);
   core::declareChoice(stiff, "Preconditioner", toString(defaults.preconditioner),
                       {toString(StiffPreconditioner2D::PointSingleLayer),
                        toString(StiffPreconditioner2D::LocalMobility), toString(StiffPreconditioner2D::None)},
@@ -62,9 +49,7 @@ void declareStiffSolverParameters2D(Teuchos::ParameterList& stiff)
 StiffSolverSettings2D readStiffSolverSettings2D(const Teuchos::ParameterList& stiff)
 {
   StiffSolverSettings2D s;
-  s.maximumIterations = stiff.get<int>("Maximum iterations");
-  s.restart = stiff.get<int>("Restart");
-  s.recycledProducts = stiff.get<int>("Recycled products");
+  s.stage = operators::readStageSolverSettings(stiff);
   const std::string preconditioner = stiff.get<std::string>("Preconditioner");
   s.preconditioner =
       preconditioner == toString(StiffPreconditioner2D::PointSingleLayer) ? StiffPreconditioner2D::PointSingleLayer

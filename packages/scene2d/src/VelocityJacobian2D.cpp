@@ -58,11 +58,11 @@ VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP
   const double lambda = model.flow().conditions.viscosityRatio;
   coefficient_ = 1.0 / (2.0 * M_PI * (1.0 + lambda) * model.flow().conditions.capillaryNumber);
   flowFactor_ = 2.0 / (1.0 + lambda);
-  gmres_.restart = settings_.restart;
-  gmres_.maximumIterations = settings_.maximumIterations;
+  gmres_.restart = settings_.stage.restart;
+  gmres_.maximumIterations = settings_.stage.maximumIterations;
   solver_ = std::make_unique<operators::StageSolver>(
       map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_,
-      static_cast<std::size_t>(settings_.recycledProducts));
+      static_cast<std::size_t>(settings_.stage.recycledProducts));
 }
 
 void VelocityJacobian2D::linearise(double t, const std::vector<double>& y)
@@ -245,8 +245,7 @@ const Eigen::MatrixXf& VelocityJacobian2D::approximateJacobian() const
 std::string VelocityJacobian2D::settingsHint() const
 {
   std::ostringstream hint;
-  hint << "(raise 'Solver/Stiff/Maximum iterations' = " << settings_.maximumIterations
-       << " or 'Solver/Stiff/Restart' = " << settings_.restart
+  hint << "(" << operators::settingsHint(settings_.stage)
        << (preconditioner_.is_null() ? ", or set 'Solver/Stiff/Preconditioner' to 'Point single layer'" : "") << ")";
   return hint.str();
 }
@@ -261,11 +260,7 @@ std::string VelocityJacobian2D::describe() const
   if (tetherEnabled_) {
     line << ", the tethered node's rows zero once tethered";
   }
-  line << "; GMRES (restart " << settings_.restart << ", at most " << settings_.maximumIterations << " iterations";
-  if (settings_.recycledProducts > 0) {
-    line << ", from up to " << settings_.recycledProducts << " kept products of the step's Jacobian";
-  }
-  line << ")";
+  line << "; " << operators::describe(settings_.stage);
   switch (settings_.preconditioner) {
   case StiffPreconditioner2D::PointSingleLayer:
     line << " with the point-single-layer preconditioner (dense LU)";

@@ -10,6 +10,8 @@
 //     <Parameter name="Mobility factor" type="double" value="2.5"/>
 //     <Parameter name="Quadrature points" type="int" value="3"/>
 //   </ParameterList>
+#include <capsula/operators/StageSolverParameters.hpp>
+
 #include <Teuchos_ParameterList.hpp>
 
 #include <string>
@@ -17,12 +19,10 @@
 namespace capsula::scene {
 
 struct StiffSolverSettings {
-  int maximumIterations = 200; ///< GMRES iterations of one stage solve before it counts as failed
-  int restart = 60;            ///< Krylov vectors kept (Belos "Num Blocks")
-  int recycledProducts = 0;    ///< products of J~ a step keeps (operators/JacobianProducts.hpp)
-  bool preconditioned = true;  ///< "Local mobility" (true) or "None"
-  double mobilityFactor = 2.5; ///< beta of the local mobility beta / R_i (LocalMobilityPreconditioner.hpp)
-  int quadraturePoints = 3;    ///< N_Q of J~'s single layer (0: Discretisation/Quadrature points)
+  operators::StageSolverSettings stage; ///< iteration cap, restart, kept products of J~
+  bool preconditioned = true;           ///< "Local mobility" (true) or "None"
+  double mobilityFactor = 2.5;          ///< beta of the local mobility beta / R_i (LocalMobilityPreconditioner.hpp)
+  int quadraturePoints = 3;             ///< N_Q of J~'s single layer (0: Discretisation/Quadrature points)
 };
 
 /// Declares the keys of the "Stiff" sublist in `stiff`.

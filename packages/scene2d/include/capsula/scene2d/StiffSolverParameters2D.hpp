@@ -10,6 +10,8 @@
 //     <Parameter name="Mobility factor" type="double" value="1"/>
 //     <Parameter name="Gauss-Legendre points" type="int" value="3"/>
 //   </ParameterList>
+#include <capsula/operators/StageSolverParameters.hpp>
+
 #include <Teuchos_ParameterList.hpp>
 
 #include <string>
@@ -20,9 +22,7 @@ namespace capsula::scene2d {
 enum class StiffPreconditioner2D { PointSingleLayer, LocalMobility, None };
 
 struct StiffSolverSettings2D {
-  int maximumIterations = 200; ///< GMRES iterations of one stage solve before it counts as failed
-  int restart = 60;            ///< Krylov vectors kept (Belos "Num Blocks")
-  int recycledProducts = 0;    ///< products of J~ a step keeps (operators/JacobianProducts.hpp)
+  operators::StageSolverSettings stage; ///< iteration cap, restart, kept products of J~
   StiffPreconditioner2D preconditioner = StiffPreconditioner2D::PointSingleLayer;
   double mobilityFactor = 1.0; ///< beta of the local mobility c beta l_i (StagePreconditioner2D.hpp)
   int gaussLegendrePoints = 3; ///< N_GL of J~'s single layer (0: Discretisation/Gauss-Legendre points)
