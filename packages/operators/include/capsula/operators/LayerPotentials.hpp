@@ -163,8 +163,15 @@ private:
   template <class Integrand>
   typename Integrand::Value singularCorrection(int m, int localNode, const Integrand& integrand,
                                                ParametricRule& rule) const;
-  void correctDoubleLayer(int target, TargetCorrections& out, ParametricRule& rule) const;
-  void correctNodalSingleLayer(int target, TargetCorrections& out, ParametricRule& rule) const;
+  // The corrections of one node target as node blocks (special - regular of the element
+  // integrals of `integrand`, summed per node); with `subtractOwn` also the own cell's
+  // blocks, negated, on u(x0) (the double layer's subtraction).
+  template <class Integrand>
+  void correctTarget(int target, const Integrand& integrand, bool subtractOwn, TargetCorrections& out,
+                     ParametricRule& rule) const;
+  // The corrections of every node target with `Integrand` (once per geometry).
+  template <class Integrand>
+  void prepareCorrections(bool subtractOwn, std::vector<TargetCorrections>& corrections);
   void prepareNodalSingleLayerCorrections();
   // The near elements of every node target for the current geometry (findNearElements
   // with the target's neighbourhood), found on first use after update().
@@ -174,6 +181,11 @@ private:
   SingleLayerSources singleLayerSources() const;
   DoubleLayerSources doubleLayerSources() const;
   static void startPointBlock(TargetBlock& block, const double* points, int first, int n);
+  // result = far + the near-singular corrections at each of n points; addNear(m, x0, u)
+  // adds element m's correction for the target x0 to u[3].
+  template <class AddNear>
+  void addNearCorrectionsAtPoints(const double* points, int n, const std::vector<double>& far, double* result,
+                                  const AddNear& addNear) const;
 
   DiscretisationParameters parameters_;
   SurfaceQuadrature quadrature_;

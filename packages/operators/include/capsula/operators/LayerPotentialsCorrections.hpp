@@ -70,9 +70,6 @@ typename Integrand::Value LayerPotentials<Kernel>::singularCorrection(int m, int
   return value;
 }
 
-// Double-layer corrections of target t as node blocks: sum_a u_a . D_a over every
-// singular and near-singular element, D_a = special - regular of int phi_a T n dS, and
-// for the own cell the subtraction's block -sum_a D_a on u(x0).
 template <class Kernel>
 void LayerPotentials<Kernel>::findNodeNearElements()
 {
@@ -90,14 +87,18 @@ void LayerPotentials<Kernel>::findNodeNearElements()
   hasNodeNear_ = true;
 }
 
+// Corrections of target t as node blocks: sum_a u_a . D_a over every singular and
+// near-singular element, D_a = special - regular of int phi_a T n dS (double layer) or of
+// int phi_a G dS (nodal single layer), and for the double layer's own cell the
+// subtraction's block -sum_a D_a on u(x0).
 template <class Kernel>
-void LayerPotentials<Kernel>::correctDoubleLayer(int t, TargetCorrections& out, ParametricRule& rule) const
+template <class Integrand>
+void LayerPotentials<Kernel>::correctTarget(int t, const Integrand& integrand, bool subtractOwn, TargetCorrections& out,
+                                            ParametricRule& rule) const
 {
-  const double* x0 = quadrature_.nodePositions().data() + 3 * (firstTarget_ + t);
-  const DoubleLayerIntegrand<Kernel> integrand{x0};
   const CellRange& own = cells_[cellOfNode(firstTarget_ + t)];
-  const auto record = [&](int m, const typename DoubleLayerIntegrand<Kernel>::Value& correction) {
-    const bool ownCell = m >= own.firstElement && m < own.endElement;
+  const auto record = [&](int m, const typename Integrand::Value& correction) {
+    const bool subtract = subtractOwn && m >= own.firstElement && m < own.endElement;
     const auto& nodes = quadrature_.elements().nodes[m];
     for (int a = 0; a < 6; ++a) {
       const double* block = &correction[9 * a];
@@ -108,7 +109,7 @@ void LayerPotentials<Kernel>::correctDoubleLayer(int t, TargetCorrections& out, 
       } else {
         detail::addScaledBlock(&out.dbl[9 * (found - out.nodes.begin())], block, 1.0);
       }
-      if (ownCell) {
+      if (subtract) {
         detail::addScaledBlock(out.self, block, -1.0);
       }
     }
@@ -122,13 +123,12 @@ void LayerPotentials<Kernel>::correctDoubleLayer(int t, TargetCorrections& out, 
 }
 
 template <class Kernel>
-void LayerPotentials<Kernel>::prepareDoubleLayerCorrections()
+template <class Integrand>
+void LayerPotentials<Kernel>::prepareCorrections(bool subtractOwn, std::vector<TargetCorrections>& corrections)
 {
-  if (hasDoubleCorrections_) {
-    return;
-  }
   findNodeNearElements();
-  corrections_.assign(numTargets_, TargetCorrections{});
+  corrections.assign(numTargets_, TargetCorrections{});
+  const double* positions = quadrature_.nodePositions().data();
 #if defined(_OPENMP)
 #pragma omp parallel
 #endif
@@ -138,59 +138,27 @@ void LayerPotentials<Kernel>::prepareDoubleLayerCorrections()
 #pragma omp for schedule(dynamic, 16)
 #endif
     for (int t = 0; t < numTargets_; ++t) {
-      correctDoubleLayer(t, corrections_[t], rule);
+      correctTarget(t, Integrand{positions + 3 * (firstTarget_ + t)}, subtractOwn, corrections[t], rule);
     }
   }
-  hasDoubleCorrections_ = true;
 }
 
 template <class Kernel>
-void LayerPotentials<Kernel>::correctNodalSingleLayer(int t, TargetCorrections& out, ParametricRule& rule) const
+void LayerPotentials<Kernel>::prepareDoubleLayerCorrections()
 {
-  const double* x0 = quadrature_.nodePositions().data() + 3 * (firstTarget_ + t);
-  const NodalSingleLayerIntegrand<Kernel> integrand{x0};
-  const auto record = [&](int m, const typename NodalSingleLayerIntegrand<Kernel>::Value& correction) {
-    const auto& nodes = quadrature_.elements().nodes[m];
-    for (int a = 0; a < 6; ++a) {
-      const double* block = &correction[9 * a];
-      const auto found = std::find(out.nodes.begin(), out.nodes.end(), nodes[a]);
-      if (found == out.nodes.end()) {
-        out.nodes.push_back(nodes[a]);
-        out.dbl.insert(out.dbl.end(), block, block + 9);
-      } else {
-        detail::addScaledBlock(&out.dbl[9 * (found - out.nodes.begin())], block, 1.0);
-      }
-    }
-  };
-  for (const auto& [m, localNode] : neighbourhoods_[t].incident) {
-    record(m, singularCorrection(m, localNode, integrand, rule));
-  }
-  for (const int m : nodeNear_[t]) {
-    record(m, nearCorrection(m, integrand));
+  if (!hasDoubleCorrections_) {
+    prepareCorrections<DoubleLayerIntegrand<Kernel>>(/*subtractOwn=*/true, corrections_);
+    hasDoubleCorrections_ = true;
   }
 }
 
 template <class Kernel>
 void LayerPotentials<Kernel>::prepareNodalSingleLayerCorrections()
 {
-  if (hasSingleCorrections_) {
-    return;
+  if (!hasSingleCorrections_) {
+    prepareCorrections<NodalSingleLayerIntegrand<Kernel>>(/*subtractOwn=*/false, singleCorrections_);
+    hasSingleCorrections_ = true;
   }
-  findNodeNearElements();
-  singleCorrections_.assign(numTargets_, TargetCorrections{});
-#if defined(_OPENMP)
-#pragma omp parallel
-#endif
-  {
-    ParametricRule rule;
-#if defined(_OPENMP)
-#pragma omp for schedule(dynamic, 16)
-#endif
-    for (int t = 0; t < numTargets_; ++t) {
-      correctNodalSingleLayer(t, singleCorrections_[t], rule);
-    }
-  }
-  hasSingleCorrections_ = true;
 }
 
 } // namespace capsula::operators

@@ -195,11 +195,10 @@ void LayerPotentials<Kernel>::doubleLayerAtNodes(const double* density, DoubleLa
 }
 
 template <class Kernel>
-void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, const LoadDensity& load, double* result)
+template <class AddNear>
+void LayerPotentials<Kernel>::addNearCorrectionsAtPoints(const double* points, int n, const std::vector<double>& far,
+                                                         double* result, const AddNear& addNear) const
 {
-  buildSingleLayerSources(load);
-  std::vector<double> far(3 * static_cast<std::size_t>(n));
-  farField_->singleLayer(singleLayerSources(), points, n, far.data());
 #if defined(_OPENMP)
 #pragma omp parallel for schedule(dynamic)
 #endif
@@ -211,10 +210,7 @@ void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, c
       double u[3] = {sum[0], sum[1], sum[2]};
       findNearElements(x0, nullptr, near);
       for (const int m : near) {
-        const auto correction = nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{x0, load.element(m)});
-        for (int j = 0; j < 3; ++j) {
-          u[j] += correction[j];
-        }
+        addNear(m, x0, u);
       }
       for (int j = 0; j < 3; ++j) {
         result[3 * (first + k) + j] = u[j];
@@ -224,33 +220,32 @@ void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, c
 }
 
 template <class Kernel>
+void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, const LoadDensity& load, double* result)
+{
+  buildSingleLayerSources(load);
+  std::vector<double> far(3 * static_cast<std::size_t>(n));
+  farField_->singleLayer(singleLayerSources(), points, n, far.data());
+  addNearCorrectionsAtPoints(points, n, far, result, [&](int m, const double* x0, double* u) {
+    const auto correction = nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{x0, load.element(m)});
+    for (int j = 0; j < 3; ++j) {
+      u[j] += correction[j];
+    }
+  });
+}
+
+template <class Kernel>
 void LayerPotentials<Kernel>::doubleLayerAtPoints(const double* points, int n, const double* density, double* result)
 {
   buildDoubleLayerSources(density);
   std::vector<double> far(3 * static_cast<std::size_t>(n));
   farField_->doubleLayer(doubleLayerSources(), points, nullptr, nullptr, n, far.data());
-#if defined(_OPENMP)
-#pragma omp parallel for schedule(dynamic)
-#endif
-  for (int first = 0; first < n; first += targetBlockSize) {
-    std::vector<int> near;
-    for (int k = 0; k < std::min(targetBlockSize, n - first); ++k) {
-      const double* x0 = points + 3 * (first + k);
-      const double* sum = &far[3 * static_cast<std::size_t>(first + k)];
-      double u[3] = {sum[0], sum[1], sum[2]};
-      findNearElements(x0, nullptr, near);
-      for (const int m : near) {
-        const auto correction = nearCorrection(m, DoubleLayerIntegrand<Kernel>{x0});
-        const auto& nodes = quadrature_.elements().nodes[m];
-        for (int a = 0; a < 6; ++a) {
-          detail::addTransposedProduct(&correction[9 * a], density + 3 * nodes[a], u);
-        }
-      }
-      for (int j = 0; j < 3; ++j) {
-        result[3 * (first + k) + j] = u[j];
-      }
+  addNearCorrectionsAtPoints(points, n, far, result, [&](int m, const double* x0, double* u) {
+    const auto correction = nearCorrection(m, DoubleLayerIntegrand<Kernel>{x0});
+    const auto& nodes = quadrature_.elements().nodes[m];
+    for (int a = 0; a < 6; ++a) {
+      detail::addTransposedProduct(&correction[9 * a], density + 3 * nodes[a], u);
     }
-  }
+  });
 }
 
 template <class Kernel>
