@@ -228,8 +228,9 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
                 options.summation.c_str());
     if (options.summation == "Treecode") {
       const auto p = fastsum::treecodeParametersForTolerance(options.tolerance);
-      std::printf(" (tolerance %.0e: degree %d, theta %.2f, leaf size %d)", options.tolerance, p.degree, p.theta,
-                  options.leafSize);
+      const char* precision = p.singlePrecision ? "single layer in float" : "double";
+      std::printf(" (tolerance %.0e: degree %d, theta %.2f, leaf size %d, %s)", options.tolerance, p.degree, p.theta,
+                  options.leafSize, precision);
     }
     std::printf("\n");
     std::printf("  near-singular (target, element) pairs: %lld (%.1f per node)\n", nearTotal,

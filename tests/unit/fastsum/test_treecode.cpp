@@ -85,7 +85,7 @@ TEST(Treecode, MeetsTheToleranceOnSpheresNearTheWall)
 {
   // Two level-3 spheres 0.1 above the wall: 17920 quadrature points, 5124 node targets.
   const auto s = testsets::spheresNearWall(2, 3, 1.1, 9);
-  expectWithinTolerances<Wall3DKernel>(s, {1e-3, 1e-5}, "spheres near the wall");
+  expectWithinTolerances<Wall3DKernel>(s, {1e-3, 1e-4, 1e-5}, "spheres near the wall");
   expectWithinTolerances<FreeSpace3DKernel>(s, {1e-4}, "spheres near the wall");
 }
 

@@ -30,11 +30,20 @@ public:
   const std::vector<double>& z() const { return z_; }
 
   /// charges[c][offset(k) + p] = qhat_p of component c for every cluster k with proxies
-  /// and used[k] != 0 (others left as they are); sourceCharges[c] in the tree's order.
+  /// and used[k] != 0, and for their descendants with proxies (others left as they are);
+  /// sourceCharges[c] in the tree's order. Upward: a cluster's charges are interpolated
+  /// from its children's proxies, exact for the polynomial basis (a degree-n polynomial is
+  /// its own interpolant on the child's grid), so each point is interpolated once.
   void interpolateCharges(const Octree& tree, const std::vector<const double*>& sourceCharges,
                           const std::vector<char>& used, std::vector<std::vector<double>>& charges) const;
 
 private:
+  void addPointCharges(const Octree& tree, const double* nodes, int begin, int end,
+                       const std::vector<const double*>& sourceCharges, int first,
+                       std::vector<std::vector<double>>& charges) const;
+  void addChildCharges(const double* parentNodes, const double* childNodes, int childFirst, int first,
+                       std::vector<std::vector<double>>& charges) const;
+
   int degree_ = 0;
   int pointsPerCluster_ = 0;
   std::vector<int> offset_;

@@ -11,13 +11,16 @@
 // taken as three double-layer terms with v = e_i and a = (qhat_i1, qhat_i2, qhat_i3).
 // Both the direct and the proxy interactions run through the vectorised target blocks of
 // operators/RegularSums.hpp (targets innermost, padded); a translation unit instantiating
-// this template needs -fno-math-errno like the operators.
+// this template needs -fno-math-errno like the operators. With parameters.singlePrecision
+// the single layer's kernel is evaluated in float (SinglePrecisionSums.hpp); the double
+// layer is always double (doubleLayer says why).
 //
 // Sources: setSources (the geometry: tree, proxy grids). Targets: setTargets (the batches
 // and interaction lists, reused by every sum until the next setTargets or setSources).
 #include <capsula/fastsum/ClusterProxies.hpp>
 #include <capsula/fastsum/InteractionLists.hpp>
 #include <capsula/fastsum/Octree.hpp>
+#include <capsula/fastsum/SinglePrecisionSums.hpp>
 #include <capsula/fastsum/TreecodeParameters.hpp>
 
 #include <capsula/core/Error.hpp>
@@ -66,18 +69,33 @@ public:
     const operators::SingleLayerSources proxy{proxies_.x().data(),     proxies_.y().data(),
                                               proxies_.z().data(),     proxyCharges_[0].data(),
                                               proxyCharges_[1].data(), proxyCharges_[2].data()};
-    evaluate(u, [&](operators::TargetBlock& block, int cluster, bool viaProxies) {
-      if (viaProxies) {
-        const int first = proxies_.offset(cluster);
-        operators::addSingleLayerSums<Kernel>(block, proxy, first, first + proxies_.pointsPerCluster());
-      } else {
-        const Cluster& c = tree_.clusters()[cluster];
-        operators::addSingleLayerSums<Kernel>(block, direct, c.begin, c.end);
+    const auto sum = [](operators::TargetBlock& block, const SinglePrecisionTargets* single,
+                        const operators::SingleLayerSources& sources, int begin, int end) {
+      if constexpr (SinglePrecisionKernel<Kernel>::available) {
+        if (single) {
+          addSingleLayerSumsInSinglePrecision<Kernel>(block, *single, sources, begin, end);
+          return;
+        }
       }
-    });
+      operators::addSingleLayerSums<Kernel>(block, sources, begin, end);
+    };
+    const bool inFloat = parameters_.singlePrecision && SinglePrecisionKernel<Kernel>::available;
+    evaluate(u, inFloat,
+             [&](operators::TargetBlock& block, const SinglePrecisionTargets* single, int cluster, bool viaProxies) {
+               if (viaProxies) {
+                 const int first = proxies_.offset(cluster);
+                 sum(block, single, proxy, first, first + proxies_.pointsPerCluster());
+               } else {
+                 const Cluster& c = tree_.clusters()[cluster];
+                 sum(block, single, direct, c.begin, c.end);
+               }
+             });
   }
 
-  /// u[3 t + j] = sum_q T_ijk(y_q, x_t) v_q,i a_q,k for the targets set.
+  /// u[3 t + j] = sum_q T_ijk(y_q, x_t) v_q,i a_q,k for the targets set. Always in double:
+  /// the double layer is applied inside GMRES (docs/operators.md), which needs a linear
+  /// operator to its tolerance (1e-10 by default), and float rounding is not linear at
+  /// ~1e-7 (measured: GMRES stops short of 1e-10 with float proxies).
   void doubleLayer(const double* ax, const double* ay, const double* az, const double* vx, const double* vy,
                    const double* vz, double* u)
   {
@@ -117,7 +135,7 @@ public:
                   i == 1 ? unit : zero,
                   i == 2 ? unit : zero};
     }
-    evaluate(u, [&](operators::TargetBlock& block, int cluster, bool viaProxies) {
+    evaluate(u, false, [&](operators::TargetBlock& block, const SinglePrecisionTargets*, int cluster, bool viaProxies) {
       if (viaProxies) {
         const int first = proxies_.offset(cluster);
         for (int i = 0; i < 3; ++i) {
@@ -131,10 +149,11 @@ public:
   }
 
 private:
-  // Runs `interact(block, cluster, viaProxies)` over every batch's lists and writes the
-  // block sums to u; batches of coinciding targets larger than a block are cut.
+  // Runs `interact(block, single, cluster, viaProxies)` over every batch's lists and writes
+  // the block sums to u; batches of coinciding targets larger than a block are cut. single:
+  // the block's targets in float (SinglePrecisionSums.hpp) if inFloat, else null.
   template <class Interact>
-  void evaluate(double* u, const Interact& interact) const
+  void evaluate(double* u, bool inFloat, const Interact& interact) const
   {
     const int numBatches = static_cast<int>(lists_.batches.size());
 #if defined(_OPENMP)
@@ -153,11 +172,17 @@ private:
           block.z[k] = x[2];
         }
         block.pad();
+        SinglePrecisionTargets targets;
+        const SinglePrecisionTargets* single = nullptr;
+        if (inFloat) {
+          targets.assign(block);
+          single = &targets;
+        }
         for (const int cluster : batch.proxies) {
-          interact(block, cluster, true);
+          interact(block, single, cluster, true);
         }
         for (const int cluster : batch.direct) {
-          interact(block, cluster, false);
+          interact(block, single, cluster, false);
         }
         for (int k = 0; k < block.size; ++k) {
           double* out = u + 3 * static_cast<std::size_t>(batch.targets[first + k]);

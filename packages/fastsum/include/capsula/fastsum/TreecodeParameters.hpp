@@ -14,10 +14,14 @@ struct TreecodeParameters {
   double theta = 0.7; ///< acceptance criterion (r_B + r_C) / R < theta; 0: all direct
   int leafSize = 400; ///< most sources in a leaf cluster
   int batchSize = 32; ///< most targets in a batch (at most operators::targetBlockSize)
+  /// Evaluate the single layer's kernel in float (SinglePrecisionSums.hpp), for kernels
+  /// that allow it; the double layer stays double (Treecode.hpp).
+  bool singlePrecision = false;
 };
 
-/// The cheapest measured (degree, theta) whose relative error on the single and double
-/// layers of cells near the wall stays below `tolerance` (table in TreecodeParameters.cpp).
+/// The cheapest measured (degree, theta, precision) whose relative error on the single and
+/// double layers of cells near the wall stays below `tolerance` (table in
+/// TreecodeParameters.cpp).
 /// Throws core::InputError outside [1e-7, 1e-1], the range measured.
 TreecodeParameters treecodeParametersForTolerance(double tolerance);
 
