@@ -12,9 +12,10 @@ Teuchos::RCP<const Teuchos::ParameterList> validTreecodeParameters()
   const TreecodeParameters defaults;
   core::declareReal(*treecode, "Tolerance", 1e-5,
                     "Relative error (2-norm over the targets) allowed in the regular sums; sets the "
-                    "interpolation degree and the acceptance parameter theta from a measured table "
-                    "(docs/fastsum.md). 1e-5 keeps it below the discretisation error at level 3 "
-                    "(~1e-4).",
+                    "interpolation degree, the acceptance parameter theta and the precision of the "
+                    "single layer's sums (float from 1e-6 up, whose round-off of ~1e-7 it then "
+                    "allows) from a measured table (docs/fastsum.md). 1e-5 keeps it below the "
+                    "discretisation error at level 3 (~1e-4).",
                     core::atLeast(1e-7), core::atMost(1e-1));
   core::declareInt(*treecode, "Leaf size", defaults.leafSize,
                    "Most quadrature points in a leaf cluster of the source tree; smaller leaves mean "
