@@ -45,6 +45,10 @@ public:
               Teuchos::RCP<const Tpetra::Operator<double>> M, const SolverParameters& gmres,
               std::size_t recycledProducts = 0);
 
+  // The stage operator keeps a pointer to products_: no copies, no moves.
+  StageSolver(const StageSolver&) = delete;
+  StageSolver& operator=(const StageSolver&) = delete;
+
   /// J~ changed (a new step's linearisation): the kept products no longer apply.
   void newJacobian() { products_.clear(); }
 
