@@ -2,6 +2,7 @@
 // Point sets and reference sums shared by the treecode tests: random clouds, the
 // quadrature points of spheres near the wall with their nodes as targets, and the direct
 // regular sums of operators/RegularSums.hpp the treecode approximates.
+#include <capsula/fastsum/Treecode.hpp>
 #include <capsula/mesh/Shapes.hpp>
 #include <capsula/operators/CellSurfaces.hpp>
 #include <capsula/operators/RegularSums.hpp>
@@ -155,6 +156,29 @@ inline double relativeError(const std::vector<double>& u, const std::vector<doub
     norm += reference[k] * reference[k];
   }
   return std::sqrt(difference / norm);
+}
+
+/// The treecode's relative errors against the direct sums, both layers, and its proxy pairs.
+struct LayerErrors {
+  double single = 0.0;
+  double dbl = 0.0;
+  long long proxyPairs = 0;
+};
+
+template <class Kernel>
+LayerErrors treecodeErrors(const PointSet& s, const TreecodeParameters& parameters)
+{
+  Treecode<Kernel> treecode(parameters);
+  treecode.setSources(s.x.data(), s.y.data(), s.z.data(), s.numSources());
+  treecode.setTargets(s.targets.data(), s.numTargets());
+  std::vector<double> u(3 * static_cast<std::size_t>(s.numTargets()));
+  LayerErrors errors;
+  treecode.singleLayer(s.fx.data(), s.fy.data(), s.fz.data(), u.data());
+  errors.single = relativeError(u, directSingleLayer<Kernel>(s));
+  treecode.doubleLayer(s.ax.data(), s.ay.data(), s.az.data(), s.vx.data(), s.vy.data(), s.vz.data(), u.data());
+  errors.dbl = relativeError(u, directDoubleLayer<Kernel>(s));
+  errors.proxyPairs = treecode.interactionLists().proxyPairs;
+  return errors;
 }
 
 } // namespace capsula::fastsum::testsets

@@ -67,25 +67,8 @@ void expectFloatTermsMatch()
   EXPECT_LT(worst, 1e-5);
 }
 
-struct SumErrors {
-  double single = 0.0;
-  double dbl = 0.0;
-};
-
-template <class Kernel>
-SumErrors treecodeErrorsOf(const testsets::PointSet& s, const TreecodeParameters& parameters)
-{
-  Treecode<Kernel> treecode(parameters);
-  treecode.setSources(s.x.data(), s.y.data(), s.z.data(), s.numSources());
-  treecode.setTargets(s.targets.data(), s.numTargets());
-  std::vector<double> u(3 * static_cast<std::size_t>(s.numTargets()));
-  SumErrors errors;
-  treecode.singleLayer(s.fx.data(), s.fy.data(), s.fz.data(), u.data());
-  errors.single = testsets::relativeError(u, testsets::directSingleLayer<Kernel>(s));
-  treecode.doubleLayer(s.ax.data(), s.ay.data(), s.az.data(), s.vx.data(), s.vy.data(), s.vz.data(), u.data());
-  errors.dbl = testsets::relativeError(u, testsets::directDoubleLayer<Kernel>(s));
-  return errors;
-}
+using testsets::LayerErrors;
+using testsets::treecodeErrors;
 
 } // namespace
 
@@ -108,8 +91,8 @@ TEST(SinglePrecision, EveryPairInFloatIsTheDirectSumToRoundOff)
   TreecodeParameters parameters;
   parameters.theta = 0.0;
   parameters.singlePrecision = true;
-  for (const SumErrors& e :
-       {treecodeErrorsOf<FreeSpace3DKernel>(s, parameters), treecodeErrorsOf<Wall3DKernel>(s, parameters)}) {
+  for (const LayerErrors& e :
+       {treecodeErrors<FreeSpace3DKernel>(s, parameters), treecodeErrors<Wall3DKernel>(s, parameters)}) {
     std::printf("  all pairs in float: single %.2e, double %.2e\n", e.single, e.dbl);
     EXPECT_LT(e.single, 1e-6);
     EXPECT_LT(e.dbl, 1e-13);
@@ -125,8 +108,8 @@ TEST(SinglePrecision, FloatProxiesAtAHighDegreeAreTheDirectSum)
   parameters.degree = 9;
   parameters.theta = 0.5;
   parameters.singlePrecision = true;
-  for (const SumErrors& e :
-       {treecodeErrorsOf<FreeSpace3DKernel>(s, parameters), treecodeErrorsOf<Wall3DKernel>(s, parameters)}) {
+  for (const LayerErrors& e :
+       {treecodeErrors<FreeSpace3DKernel>(s, parameters), treecodeErrors<Wall3DKernel>(s, parameters)}) {
     std::printf("  float proxies, degree 9: single %.2e, double %.2e\n", e.single, e.dbl);
     EXPECT_LT(e.single, 1e-6);
     EXPECT_LT(e.dbl, 1e-6);

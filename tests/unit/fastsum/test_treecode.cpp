@@ -20,27 +20,8 @@ using capsula::operators::Wall3DKernel;
 
 namespace {
 
-struct LayerErrors {
-  double single = 0.0;
-  double dbl = 0.0;
-  long long proxyPairs = 0;
-};
-
-template <class Kernel>
-LayerErrors treecodeErrors(const testsets::PointSet& s, const TreecodeParameters& parameters)
-{
-  Treecode<Kernel> treecode(parameters);
-  treecode.setSources(s.x.data(), s.y.data(), s.z.data(), s.numSources());
-  treecode.setTargets(s.targets.data(), s.numTargets());
-  std::vector<double> u(3 * static_cast<std::size_t>(s.numTargets()));
-  LayerErrors errors;
-  treecode.singleLayer(s.fx.data(), s.fy.data(), s.fz.data(), u.data());
-  errors.single = testsets::relativeError(u, testsets::directSingleLayer<Kernel>(s));
-  treecode.doubleLayer(s.ax.data(), s.ay.data(), s.az.data(), s.vx.data(), s.vy.data(), s.vz.data(), u.data());
-  errors.dbl = testsets::relativeError(u, testsets::directDoubleLayer<Kernel>(s));
-  errors.proxyPairs = treecode.interactionLists().proxyPairs;
-  return errors;
-}
+using testsets::LayerErrors;
+using testsets::treecodeErrors;
 
 template <class Kernel>
 void expectWithinTolerances(const testsets::PointSet& s, std::initializer_list<double> tolerances, const char* label)
