@@ -354,14 +354,16 @@ def twocell3d():
 
 # --- twocell3d suspensions: N cells at random above the wall (utils/decks/random_suspension.py)
 #   suspension/ten-cells-wall.xml  ten free level-3 cells of the isolated h/a = 1.25 deck's
-#                  settings in a 16 x 5 x 10 box, gaps >= 0.25 a, Treecode far field, to t = 1,
-#                  a wall shear stress map over the box
+#                  settings in a 16 x 5 x 10 box, gaps >= 0.25 a, Treecode far field, to t = 1
+#                  with ROS34PW2 (tolerance 1e-3, 40 kept products), a wall shear stress map
 
 def suspension(path):
     import random_suspension
     template = "input/twocell3d/isolated/h1.25-free.xml"
     box = random_suspension.Box(16.0, 10.0, 5.0)
     overrides = ["Operator/Summation=Treecode", "Time integration/End time=1",
+                 "Time integration/Method=ROS34PW2", "Time integration/Tolerance=1e-3",
+                 "Solver/Stiff/Recycled products=40",
                  "Output/Directory=out/twocell3d/suspension/ten-cells-wall",
                  "Output/Wall shear stress/Upstream extent=12", "Output/Wall shear stress/Downstream extent=12",
                  "Output/Wall shear stress/Half width=9"]
