@@ -219,6 +219,33 @@ function(cell3d_rejects name expected)
   add_test(NAME app_cell3d_rejects_${name} COMMAND cell3d ${ARGN})
   set_tests_properties(app_cell3d_rejects_${name} PROPERTIES LABELS app PASS_REGULAR_EXPRESSION "${expected}")
 endfunction()
+# Bending vanishing with its modulus: the Skalak C = 0.5 capsule at Ca = 0.1 in free shear
+# (level 1, the same RK4 steps to t = 0.5) with E_b = 0, 1e-4 and 1e-3. D12 must fall with
+# bending and the change must be linear in E_b as E_b -> 0: measured D12(1e-4) - D12(0) =
+# -5.15e-5 and D12(1e-3) - D12(0) = -5.13e-4, a ratio of 0.1005 (the O(E_b^2) term is 0.5%
+# of the change at 1e-3). A term that left an offset at small E_b (ratio -> 1), scaled
+# otherwise than linearly, or pushed the wrong way fails the 0.095-0.105 window or the sign.
+set(_bending_limit ${_decks}/unbounded/Ca0.1-C0.5-prestress5.xml ${_level1}
+    --set "Time integration/Method=RK4" --set "Time integration/Initial step=0.01"
+    --set "Time integration/End time=0.5" --set "Output/Interval=0.1" --set "Output/Snapshots=false")
+foreach(_eb 0 1e-4 1e-3)
+  add_test(NAME regression_cell3d_bending_modulus_${_eb}
+    COMMAND cell3d ${_bending_limit} --set "Cells/Cell 0/Bending modulus=${_eb}"
+            --output ${_out}/bending_limit/eb${_eb})
+  set_tests_properties(regression_cell3d_bending_modulus_${_eb} PROPERTIES
+    FIXTURES_SETUP cell3d_bending_limit LABELS regression)
+endforeach()
+add_test(NAME regression_cell3d_bending_vanishes_linearly
+  COMMAND /usr/bin/python3 -c "
+import csv
+d12 = {eb: float(list(csv.DictReader(open('${_out}/bending_limit/eb' + eb + '/metrics.csv')))[-1]['D12']) for eb in ['0', '1e-4', '1e-3']}
+small, large = d12['1e-4'] - d12['0'], d12['1e-3'] - d12['0']
+print('D12 change with E_b = 1e-4: %.4g, with 1e-3: %.4g, ratio %.4f' % (small, large, small / large))
+assert large < -1e-4 and 0.095 < small / large < 0.105
+print('bending vanishes linearly')")
+set_tests_properties(regression_cell3d_bending_vanishes_linearly PROPERTIES
+  FIXTURES_REQUIRED cell3d_bending_limit LABELS regression PASS_REGULAR_EXPRESSION "bending vanishes linearly")
+
 set(_demo ${_decks}/demo.xml --output ${_out}/rejected)
 cell3d_rejects(cell_crossing_the_wall "'Cells/Cell 0' crosses the wall: its lowest node \\([0-9]+\\) lies at y = -0.1"
   ${_demo} ${_level1} --set "Cells/Cell 0/Center={0, 0.9, 0}")
