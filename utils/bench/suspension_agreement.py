@@ -39,7 +39,7 @@ DECK = "input/twocell3d/suspension/ten-cells-wall.xml"
 COLUMNS = ["D12", "D13", "D23", "inclination_deg", "x_c", "y_c", "z_c", "u_slip", "u_migr", "omega_z",
            "volume_change", "area_change", "mean_shear_stress", "max_shear_stress"]
 QUIET = {"Output/Snapshots": "false", "Output/Progress steps": "100000"}
-TIMEOUT = 6 * 3600.0  # the direct ten-cell level-3 run takes about an hour on 2 ranks
+TIMEOUT = 6 * 3600.0  # the direct ten-cell level-3 run takes about half an hour on 2 ranks
 
 
 def run(build, runs, name, deck, ranks, sets):
