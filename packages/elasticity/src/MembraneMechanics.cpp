@@ -102,8 +102,6 @@ MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh, std::vector<
                                     "bending ('Bending modulus' > 0) needs the virtual-work load ('Membrane "
                                     "forces' = 'Virtual work'): it enters as the nodal forces of its energy");
     bending_ = std::make_unique<HelfrichBending>(mesh, reference_, bending);
-    bendingLoad_ = std::make_unique<LinearLumpedLoad>(mesh);
-    nodalArea_.assign(static_cast<std::size_t>(numNodes), 0.0);
   }
 
   currentTangent_.resize(6 * static_cast<std::size_t>(numElements));
@@ -275,20 +273,22 @@ void MembraneMechanics::virtualWorkLoads(const double* positions, const double* 
       nodalForce_[k] -= mesh::nodeAt(externalForces, static_cast<int>(k));
     }
   }
-  // The load density: int phi_k Delta f dS = F_k, i.e. M f = F.
-  mass_->assemble(positions);
-  mass_->solve(nodalForce_.front().data(), nodalLoad_.front().data());
   if (bending_) {
-    // The Helfrich energy's nodal forces join the strain energy's; their density comes from
-    // the linear space (LinearLumpedLoad.hpp: M^-1 would keep a grid-scale mode).
+    // The Helfrich energy's nodal forces join the strain energy's before the one density
+    // solve below: with the same Galerkin map for both, the power of the forces on the
+    // moving nodes is the power of the load on the fluid, which the fluid dissipates, so
+    // no mode gains energy from the discretisation. A separate map for the bending forces
+    // breaks that balance and lets grid-scale wrinkles grow at small moduli
+    // (docs/membrane-forces.md, "Bending").
     bending_->evaluate(positions);
     const std::vector<Vec3>& bendingForce = bending_->nodalForces();
-    mass_->nodalAreas(nodalArea_.data());
-    bendingLoad_->apply(bendingForce.front().data(), nodalArea_.data(), nodalLoad_.front().data(), /*add=*/true);
     for (std::size_t k = 0; k < nodalForce_.size(); ++k) {
       nodalForce_[k] += bendingForce[k];
     }
   }
+  // The load density: int phi_k Delta f dS = F_k, i.e. M f = F.
+  mass_->assemble(positions);
+  mass_->solve(nodalForce_.front().data(), nodalLoad_.front().data());
   // Element totals and moments of the continuous load: elementLoads() for the outputs
   // (membrane stress metrics, snapshots) and netForce()/netTorque() for the checks.
   for (int e = 0; e < mesh.numElements(); ++e) {

@@ -14,10 +14,10 @@ TangentStiffness::TangentStiffness(const mesh::SurfaceMesh& mesh, std::vector<El
                 "TangentStiffness: ", elements_.size(), " element matrices for ", mesh.numElements(), " elements");
 }
 
-void TangentStiffness::apply(const double* x, double* y, Part part) const
+void TangentStiffness::apply(const double* x, double* y) const
 {
   std::fill(y, y + 3 * static_cast<std::size_t>(numNodes()), 0.0);
-  for (std::size_t e = 0; part != Part::Bending && e < elements_.size(); ++e) {
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
     const auto& nodes = mesh_->element(static_cast<int>(e));
     double local[18], result[18];
     for (int k = 0; k < 6; ++k) {
@@ -39,7 +39,7 @@ void TangentStiffness::apply(const double* x, double* y, Part part) const
       }
     }
   }
-  if (bending_ && part != Part::Strain) {
+  if (bending_) {
     bendingProduct_.resize(3 * static_cast<std::size_t>(numNodes()));
     bending_->applyStiffness(x, bendingProduct_.data());
     for (std::size_t i = 0; i < bendingProduct_.size(); ++i) {

@@ -74,8 +74,6 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
       static_cast<std::size_t>(settings_.stage.recycledProducts));
   for (int c = 0; c < scene.numCells(); ++c) {
     mass_.push_back(std::make_unique<mesh::SurfaceMassMatrix>(scene.cell(c)));
-    bendingLoad_.push_back(std::make_unique<elasticity::LinearLumpedLoad>(scene.cell(c)));
-    nodalAreas_.emplace_back(static_cast<std::size_t>(scene.cell(c).numNodes()), 0.0);
   }
   if (hasExternalLoadStiffness(scene)) {
     external_.resize(static_cast<std::size_t>(scene.numCells()));
@@ -105,7 +103,6 @@ void VelocityJacobian::linearise(double t, const std::vector<double>& y)
       external = &external_[static_cast<std::size_t>(c)];
     }
     mass_[static_cast<std::size_t>(c)]->assemble(positions);
-    mass_[static_cast<std::size_t>(c)]->nodalAreas(nodalAreas_[static_cast<std::size_t>(c)].data());
     if (preconditioner_.is_null()) {
       continue;
     }
@@ -138,16 +135,11 @@ void VelocityJacobian::apply(const double* x, double* y)
   for (int c = 0; c < scene_.numCells(); ++c) {
     const std::size_t first = 3 * static_cast<std::size_t>(scene_.nodeOffset(c));
     const elasticity::TangentStiffness& stiffness = stiffness_[static_cast<std::size_t>(c)];
-    stiffness.apply(x + first, forces_.data() + first, elasticity::TangentStiffness::Part::Strain);
+    stiffness.apply(x + first, forces_.data() + first); // strain and bending, as the membrane adds them
     if (!external_.empty()) {
       external_[static_cast<std::size_t>(c)].addProduct(x + first, forces_.data() + first);
     }
     mass_[static_cast<std::size_t>(c)]->solve(forces_.data() + first, loads_.data() + first, kMassSolveTolerance);
-    if (stiffness.hasBending()) { // the bending forces' density, as the membrane makes it
-      stiffness.apply(x + first, forces_.data() + first, elasticity::TangentStiffness::Part::Bending);
-      bendingLoad_[static_cast<std::size_t>(c)]->apply(
-          forces_.data() + first, nodalAreas_[static_cast<std::size_t>(c)].data(), loads_.data() + first, /*add=*/true);
-    }
   }
   const std::vector<double> single = frozen_->singleLayerOfNodalLoad(loads_.data());
   const mesh::Mat3& gradient = flowGradient_;

@@ -34,15 +34,13 @@
 //     Both give elementLoads() (the average over each element); VirtualWork also gives
 //     nodalLoads() for the single layer to interpolate.
 //  4. with a bending modulus (VirtualWork only): the nodal forces of the Helfrich energy
-//     (HelfrichBending.hpp), whose load density comes from the linear space
-//     (LinearLumpedLoad.hpp) and is added to the strain energy's M^-1 F; nodalForces()
-//     holds both. The bending term is built with the membrane and uses its reference
+//     (HelfrichBending.hpp) are added to the strain energy's before the density M^-1 F
+//     is formed; nodalForces() holds both. The bending term is built with the membrane and uses its reference
 //     shape (material coordinates, and the curvature of a BendingReference::InitialShape).
 // Sign (ERRATA): Delta f = (sigma_ext - sigma_int) . n = -div_s T, n outward; a sphere
 // of radius r under isotropic tension T carries Delta f = (2 T / r) n.
 #include "capsula/elasticity/BendingParameters.hpp"
 #include "capsula/elasticity/HelfrichBending.hpp"
-#include "capsula/elasticity/LinearLumpedLoad.hpp"
 #include "capsula/elasticity/MembraneEnergyGradient.hpp"
 #include "capsula/elasticity/MembraneLaw.hpp"
 #include "capsula/elasticity/MembraneTension.hpp"
@@ -209,8 +207,6 @@ private:
   std::vector<ReferenceQuadraturePoint> referencePoints_; // VirtualWork: N_Q per element
   std::unique_ptr<mesh::SurfaceMassMatrix> mass_;         // VirtualWork only
   std::unique_ptr<HelfrichBending> bending_;              // with a bending modulus only
-  std::unique_ptr<LinearLumpedLoad> bendingLoad_;         // the density of its forces
-  std::vector<double> nodalArea_;                         // int phi_k dS, for bendingLoad_
 
   // Results.
   std::vector<double> area_;

@@ -29,13 +29,9 @@ public:
   int numNodes() const { return mesh_->numNodes(); }
   const std::vector<ElementStiffness>& elements() const { return elements_; }
 
-  /// Which part of H apply() applies: the strain energy's, the bending term's or both.
-  enum class Part { All, Strain, Bending };
-
-  /// y = H x for x, y with 3 entries per node (y is overwritten). The parts have loads of
-  /// their own (MembraneMechanics: M^-1 F for the strain forces, LinearLumpedLoad for the
-  /// bending forces), so a Jacobian applies them one at a time.
-  void apply(const double* x, double* y, Part part = Part::All) const;
+  /// y = H x for x, y with 3 entries per node (y is overwritten): the strain energy's
+  /// second variation plus the bending stiffness, if any.
+  void apply(const double* x, double* y) const;
   bool hasBending() const { return bending_ != nullptr; }
 
   /// Calls add(row, column, value) for every entry of every element matrix, rows and

@@ -5,8 +5,7 @@
 //
 //   J~ v = P [ -c_d S(x_n)[M(x_n)^-1 H(x_n) v] + 2/(1 + lambda_d) grad u_inf . v ],
 //
-// (with bending, H's bending part goes through the bending load's own density map,
-// elasticity::LinearLumpedLoad, as in the right-hand side; with bonds or wall contact, H
+// (with bending, H includes the bending stiffness; with bonds or wall contact, H
 // includes the stiffness K = -dF/dx of those forces, ExternalLoadStiffness.hpp, since the
 // membrane passes dE/dx - F to the fluid),
 //
@@ -26,7 +25,6 @@
 #include "capsula/scene/LocalMobilityPreconditioner.hpp"
 #include "capsula/scene/StiffSolverParameters.hpp"
 
-#include <capsula/elasticity/LinearLumpedLoad.hpp>
 #include <capsula/elasticity/TangentStiffness.hpp>
 #include <capsula/mesh/SurfaceMassMatrix.hpp>
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
@@ -70,12 +68,10 @@ private:
   Scene& scene_;
   StiffSolverSettings settings_;
   operators::SolverParameters gmres_;
-  std::unique_ptr<operators::BoundaryIntegralSolver> frozen_;              // the single layer at x_n
-  std::vector<elasticity::TangentStiffness> stiffness_;                    // per cell, at x_n
-  std::vector<adhesion::LoadStiffness> external_;                          // per cell, at x_n (bonds, contact)
-  std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_;             // per cell, at x_n
-  std::vector<std::unique_ptr<elasticity::LinearLumpedLoad>> bendingLoad_; // per cell
-  std::vector<std::vector<double>> nodalAreas_;                            // per cell, int phi_k dS at x_n
+  std::unique_ptr<operators::BoundaryIntegralSolver> frozen_;  // the single layer at x_n
+  std::vector<elasticity::TangentStiffness> stiffness_;        // per cell, at x_n
+  std::vector<adhesion::LoadStiffness> external_;              // per cell, at x_n (bonds, contact)
+  std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_; // per cell, at x_n
   std::vector<double> frozenPositions_;
   std::vector<double> coefficient_;              // -c_d per node
   std::vector<double> flowFactor_;               // 2 / (1 + lambda_d) per node
