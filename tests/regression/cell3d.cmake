@@ -326,7 +326,7 @@ cell3d_validation(small_deformation small-deformation-neohookean-Ca0.01.xml 0.3
 # Small deformation with bending: the linear theory D12 = Ca 5 (3 kappa + 1) / (8 kappa +
 # beta E_b (3 kappa + 2)), kappa = 3 (neo-Hookean), beta = 16 about the initial sphere and 24
 # about c0 = 0 (docs/cell3d-red-cell-results.md), at level 2 with ROS34PW2 at 1e-5 (RKF45 at
-# the deck's 1e-6 gives the same D12 to 5e-5 relative but takes 5x longer with bending).
+# the deck's 1e-6 is held at dt ~ 2e-5 by the grid-scale bending modes: ~16000 steps).
 set(_small_bending ${_decks}/validation/small-deformation-neohookean-Ca0.01.xml
   --set "Cells/Cell 0/Mesh level=2" --set "Time integration/Method=ROS34PW2"
   --set "Time integration/Tolerance=1e-5" --set "Output/Snapshots=false")

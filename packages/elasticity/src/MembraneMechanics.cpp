@@ -276,8 +276,8 @@ void MembraneMechanics::virtualWorkLoads(const double* positions, const double* 
   if (bending_) {
     // The Helfrich energy's nodal forces join the strain energy's before the one density
     // solve below: with the same Galerkin map for both, the power of the forces on the
-    // moving nodes is the power of the load on the fluid, which the fluid dissipates, so
-    // no mode gains energy from the discretisation. A separate map for the bending forces
+    // moving nodes is the power of the load on the fluid (up to how the nodal velocities
+    // interpolate the fluid's), which the fluid dissipates. A separate map for the bending forces
     // breaks that balance and lets grid-scale wrinkles grow at small moduli
     // (docs/membrane-forces.md, "Bending").
     bending_->evaluate(positions);
