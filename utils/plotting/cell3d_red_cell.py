@@ -100,6 +100,8 @@ def main(argv=None):
                         help="peak-to-peak inclination (degrees) from which a run swings (default 1)")
     parser.add_argument("runs", nargs="+", help="cell3d run directories or folders holding them")
     args = parser.parse_args(argv)
+    if not args.name or "/" in args.name or args.name in (".", ".."):
+        parser.error(f"--name: '{args.name}' is not a file-name prefix (no '/', not empty)")
     import capsula_outputs as co
     rows = []
     for run in co.find_runs(args.runs, "cell3d"):
