@@ -236,14 +236,16 @@ def cell3d():
     # 200 receptors per a^2, k_on0 n_L = 100 k, k_off0 = k, k_B T = 4e-3 G a^2 (a bond formed
     # 0.02 a stretched keeps exp(-0.5) of the on-rate), gamma = 0.01 a (a bond stretched by
     # 0.1 a breaks 12 times faster); the contact repulsion within 0.03 a. A short run to t = 2,
-    # outputs every 0.1, no wall stress map.
+    # outputs every 0.1, no wall stress map. The contact load 'Nodal area', as the results of
+    # docs/cell3d.md were computed.
     adhesion = "Adhesion/"
     yield cell3d_deck(
         f"{root}/adhesion/sphere-ligand-wall.xml",
         "Adhesion: a Skalak capsule (C = 2.5, Ca = 0.3, level 1) released 0.03 a above a ligand-coated\n"
         "     wall; stochastic Bell slip bonds form within 0.05 a of the wall, slow it down and break.",
         ca="0.3", height="1.03", level="1", end="2", tolerance="1e-4", wall_stress="false", stride="5",
-        extra=[("Contact/Enabled", "true"), ("Contact/Range", "0.03"), (adhesion + "Enabled", "true"),
+        extra=[("Contact/Enabled", "true"), ("Contact/Range", "0.03"), ("Contact/Load", "Nodal area"),
+               (adhesion + "Enabled", "true"),
                (adhesion + "Receptor density", "200"), (adhesion + "On-rate", "1.0"),
                (adhesion + "Off-rate", "1.0"), (adhesion + "Reactive compliance", "1e-2"),
                (adhesion + "Thermal energy", "4e-3"), (adhesion + "Kinetics", "Stochastic"),
@@ -257,13 +259,15 @@ def cell3d():
     # radius, thesis Chapter 4). The 2D study's a/b = 1, lambda = 1, Ca = 0.1 case in 3D:
     # Skalak C = 2.5 (the thesis's 3D membrane), no prestress; the contact repulsion within
     # 0.03 a keeps the membrane off the wall as the cell pivots down to it. Level 2, RKF45 at
-    # 1e-5, to t = 20, outputs every 0.1, no wall stress map.
+    # 1e-5, to t = 20, outputs every 0.1, no wall stress map. The contact load 'Nodal area', as
+    # docs/cell3d-tether-results.md was computed.
     yield cell3d_deck(
         f"{root}/tether/sphere-Ca0.1.xml",
         "Tether: a Skalak capsule (C = 2.5, Ca = 0.1, level 2) tethered at its lowest point, 0.05 a above\n"
         "     the wall, to the wall below it (thesis Chapter 4's a/b = 1, lambda = 1, Ca = 0.1 case in 3D).",
         ca="0.1", height="1.05", level="2", end="20", tolerance="1e-5", wall_stress="false", stride="10",
-        extra=[("Contact/Enabled", "true"), ("Contact/Range", "0.03"), ("Tether/Enabled", "true"),
+        extra=[("Contact/Enabled", "true"), ("Contact/Range", "0.03"), ("Contact/Load", "Nodal area"),
+               ("Tether/Enabled", "true"),
                ("Tether/Patch radius", "0.17"), ("Tether/Spring constant", "100")])
 
 

@@ -53,17 +53,13 @@ void ExternalForces::compute(const std::vector<mesh::SurfaceMesh>& cells)
   }
   // The repulsion of the wall and of the other cells on each membrane (adhesion
   // ContactRepulsion.hpp), as physical nodal forces on it.
-  std::vector<std::vector<double>> areas(cells.size());
-  for (std::size_t c = 0; c < cells.size(); ++c) {
-    areas[c] = adhesion::nodalAreaShares(cells[c], cells[c].positionData());
-    if (wall_) {
-      adhesion::addWallContactForces(contact_, cells[c], cells[c].positionData(), areas[c], forces_[c].data());
-    }
+  for (std::size_t c = 0; c < cells.size() && wall_; ++c) {
+    adhesion::addWallContactForces(contact_, cells[c], cells[c].positionData(), forces_[c].data());
   }
   for (std::size_t a = 0; a < cells.size(); ++a) {
     for (std::size_t b = a + 1; b < cells.size(); ++b) {
-      adhesion::addCellContactForces(contact_, cells[a], cells[a].positionData(), areas[a], forces_[a].data(), cells[b],
-                                     cells[b].positionData(), areas[b], forces_[b].data());
+      adhesion::addCellContactForces(contact_, cells[a], cells[a].positionData(), forces_[a].data(), cells[b],
+                                     cells[b].positionData(), forces_[b].data());
     }
   }
 }

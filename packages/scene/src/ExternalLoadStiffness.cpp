@@ -22,8 +22,7 @@ void externalLoadStiffness(const Scene& scene, int c, const double* positions, a
   }
   const SceneDescription& description = scene.description();
   if (description.contact.enabled && description.wall) {
-    adhesion::addWallContactStiffness(description.contact, cell, positions, adhesion::nodalAreaShares(cell, positions),
-                                      stiffness);
+    adhesion::addWallContactStiffness(description.contact, cell, positions, stiffness);
   }
 }
 

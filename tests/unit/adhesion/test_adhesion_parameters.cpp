@@ -63,6 +63,9 @@ TEST(AdhesionParameters, DefaultsAreTheDocumentedOnes)
   const auto c = adhesion::readContactParameters(deck->sublist("Contact"));
   EXPECT_FALSE(c.enabled);
   EXPECT_EQ(c.range, 0.05);
+  EXPECT_EQ(c.load, adhesion::ContactLoad::NodalArea);
+  const auto work = adhesionDeck("", R"xml(<Parameter name="Load" type="string" value="Virtual work"/>)xml");
+  EXPECT_EQ(adhesion::readContactParameters(work->sublist("Contact")).load, adhesion::ContactLoad::VirtualWork);
 }
 
 TEST(AdhesionParameters, ChoicesAndPatchReachTheSettings)

@@ -97,32 +97,77 @@ TEST(LoadStiffness, BondsAreTheDerivativeOfTheirNodalForces)
   EXPECT_LT(worst, 1e-6 * size) << worst << " of " << size;
 }
 
-// The wall repulsion at frozen area shares: a sphere whose nodes span the range's heights.
-// Differences at e = 1e-6 of a pressure whose third derivative is ~p_0 / delta^3 ~ 1e5 p_0 at
-// the smallest gap 0.004 (~delta / 12): truncation ~1e-7 of |K v|, bound 1e-5.
+// The wall repulsion, both loads: 'Virtual work' K_kl = -int phi_k phi_l p'(y) dS, 'Nodal
+// area' -p'(y_k) a_k on the diagonal. Symmetric, on the wall-normal coordinate only, positive
+// semi-definite (p' <= 0), and exact for a rigid vertical shift, which changes no area and no
+// shape: K e_y = -dF/dh. Differences at e = 1e-6 of a pressure whose third derivative is
+// ~p_0 / delta^3 ~ 1e5 p_0 at the smallest gap 0.004 (~delta / 12): truncation ~1e-7 of
+// |K v|, bound 1e-5. A general displacement also changes the areas and shapes K leaves out
+// (terms of the size of the force, not of its derivative).
 TEST(LoadStiffness, WallContactIsTheDerivativeOfItsNodalForces)
 {
-  adhesion::ContactSettings contact;
-  contact.enabled = true;
-  contact.range = 0.05;
-  contact.strength = 10.0;
   const mesh::SurfaceMesh sphere = mesh::makeIcosphere(3);
   std::vector<double> x = sphere.positions();
   for (std::size_t i = 1; i < x.size(); i += 3) {
-    x[i] += 1.004; // lowest node 0.004 above the wall, a ring of nodes within the range
+    x[i] += 1.004; // lowest node 0.004 above the wall, a ring of elements within the range
   }
-  const std::vector<double> areas = adhesion::nodalAreaShares(sphere, x.data());
-  adhesion::LoadStiffness K;
-  adhesion::addWallContactStiffness(contact, sphere, x.data(), areas, K);
-  ASSERT_GT(K.numEntries(), 3u);
-  K.forEachEntry([](int row, int column, double value) {
-    EXPECT_EQ(row, column);
-    EXPECT_EQ(row % 3, 1); // the wall-normal coordinate only
-    EXPECT_GT(value, 0.0); // the repulsion weakens with the gap: a restoring stiffness
-  });
-  const auto [worst, size] =
-      mismatch(K, x, [&](const double* y, double* f) { adhesion::addWallContactForces(contact, sphere, y, areas, f); });
-  EXPECT_LT(worst, 1e-5 * size) << worst << " of " << size;
+  for (const auto load : {adhesion::ContactLoad::NodalArea, adhesion::ContactLoad::VirtualWork}) {
+    adhesion::ContactSettings contact;
+    contact.enabled = true;
+    contact.range = 0.05;
+    contact.strength = 10.0;
+    contact.load = load;
+    adhesion::LoadStiffness K;
+    adhesion::addWallContactStiffness(contact, sphere, x.data(), K);
+    ASSERT_GT(K.numEntries(), 3u);
+    std::vector<double> dense(x.size() * x.size(), 0.0);
+    K.forEachEntry([&](int row, int column, double value) {
+      EXPECT_EQ(row % 3, 1); // the wall-normal coordinate only
+      EXPECT_EQ(column % 3, 1);
+      if (load == adhesion::ContactLoad::NodalArea) {
+        EXPECT_EQ(row, column);
+      }
+      dense[static_cast<std::size_t>(row) * x.size() + static_cast<std::size_t>(column)] += value;
+    });
+    double largest = 0.0;
+    for (double v : dense) {
+      largest = std::max(largest, std::abs(v));
+    }
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        EXPECT_NEAR(dense[i * x.size() + j], dense[j * x.size() + i], 1e-14 * largest);
+      }
+    }
+    const std::vector<double> v = direction(x.size());
+    std::vector<double> Kv(x.size(), 0.0);
+    K.addProduct(v.data(), Kv.data());
+    double vKv = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      vKv += v[i] * Kv[i];
+    }
+    EXPECT_GT(vKv, 0.0); // a restoring stiffness: the repulsion weakens with the gap
+    // The rigid shift.
+    std::vector<double> shift(x.size(), 0.0);
+    for (std::size_t i = 1; i < x.size(); i += 3) {
+      shift[i] = 1.0;
+    }
+    std::vector<double> Ks(x.size(), 0.0);
+    K.addProduct(shift.data(), Ks.data());
+    const double e = 1e-6;
+    std::vector<double> plus(x), minus(x), fp(x.size(), 0.0), fm(x.size(), 0.0);
+    for (std::size_t i = 1; i < x.size(); i += 3) {
+      plus[i] += e;
+      minus[i] -= e;
+    }
+    adhesion::addWallContactForces(contact, sphere, plus.data(), fp.data());
+    adhesion::addWallContactForces(contact, sphere, minus.data(), fm.data());
+    double worst = 0.0, size = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      worst = std::max(worst, std::abs(Ks[i] + (fp[i] - fm[i]) / (2 * e)));
+      size = std::max(size, std::abs(Ks[i]));
+    }
+    EXPECT_LT(worst, 1e-5 * size) << worst << " of " << size;
+  }
 }
 
 // p'(d) against differences of p(d) across the range, and 0 at and beyond it (C1 there).

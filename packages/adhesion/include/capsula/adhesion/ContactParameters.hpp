@@ -8,13 +8,20 @@
 
 namespace capsula::adhesion {
 
+/// How the pressure becomes nodal forces (ContactRepulsion.hpp).
+enum class ContactLoad {
+  NodalArea,  ///< F_k = p(x_k) a_k, a_k = sum of A_e / 6: lumped, oscillating on 6-node elements
+  VirtualWork ///< F_k = int phi_k p dS: a load density equal to p where the mesh resolves it
+};
+
 struct ContactSettings {
   bool enabled = false;
   double range = 0.05;    ///< delta / a: no force at gaps >= delta
   double strength = 10.0; ///< p_0 / (G / a): the pressure scale
+  ContactLoad load = ContactLoad::NodalArea;
 };
 
-/// Declares Enabled, Range and Strength.
+/// Declares Enabled, Range, Strength and Load.
 void declareContactParameters(Teuchos::ParameterList& contact);
 
 /// Reads a validated sublist; throws core::InputError naming the key (under `path`) for a
