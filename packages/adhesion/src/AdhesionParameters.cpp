@@ -52,6 +52,13 @@ void declareBondMechanics(Teuchos::ParameterList& list)
                     "most r_0; the bond forms to the ligand directly below it (Hammer & Apte 1992). "
                     "Also the reach that defines the contact area of the outputs.",
                     core::greaterThan(0.0));
+  core::declareReal(list, "Patch radius", 0.0,
+                    "rho / a: each receptor is a patch of membrane of this radius around its point "
+                    "(on the unstressed shape): the bond pulls at the weighted mean of the 7-point "
+                    "quadrature points within rho, weights w_q h_s (1 - r^2 / rho^2)^2, and its force "
+                    "is shared by them, as a tether's foot. 0: a point, its force on its element's "
+                    "six nodes. A patch must hold at least three quadrature points.",
+                    core::atLeast(0.0));
   core::declareReal(list, "Thermal energy", 1e-4,
                     "k_B T / (G a^2): the thermal energy over the membrane's energy scale. Sets how "
                     "strongly stretch changes the rates (BondKinetics.hpp).",
@@ -154,6 +161,7 @@ AdhesionSettings readAdhesionParameters(const Teuchos::ParameterList& adhesion, 
   s.springConstant = adhesion.get<double>("Spring constant");
   s.equilibriumLength = adhesion.get<double>("Equilibrium length");
   s.reactionDistance = adhesion.get<double>("Reaction distance");
+  s.patchRadius = adhesion.get<double>("Patch radius");
   s.onRate = adhesion.get<double>("On-rate");
   s.offRate = adhesion.get<double>("Off-rate");
   s.reactiveCompliance = adhesion.get<double>("Reactive compliance");
@@ -175,7 +183,8 @@ AdhesionSettings readAdhesionParameters(const Teuchos::ParameterList& adhesion, 
                                                         {"On-rate", s.onRate},
                                                         {"Off-rate", s.offRate},
                                                         {"Reactive compliance", s.reactiveCompliance},
-                                                        {"Transition spring constant", s.transitionSpringConstant}};
+                                                        {"Transition spring constant", s.transitionSpringConstant},
+                                                        {"Patch radius", s.patchRadius}};
   for (const auto& [key, value] : nonNegative) {
     require(value >= 0.0, path, key, core::message("= ", value, " is negative: give a value >= 0."));
   }

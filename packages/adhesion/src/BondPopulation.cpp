@@ -3,7 +3,6 @@
 #include "capsula/adhesion/BondKinetics.hpp"
 #include "capsula/adhesion/BondSpring.hpp"
 #include "capsula/adhesion/CounterRandom.hpp"
-#include "capsula/adhesion/PointForces.hpp"
 
 #include <capsula/core/Error.hpp>
 
@@ -132,14 +131,19 @@ mesh::Vec3 BondPopulation::addNodalForces(const mesh::SurfaceMesh& mesh, const R
                                           const double* positions, double* nodalForces, int first, int last) const
 {
   mesh::Vec3 total = mesh::Vec3::Zero();
+  std::vector<NodeWeight> weights;
   for (int r = first; r < last; ++r) {
     if (state(r).occupancy <= 0.0) {
       continue;
     }
     const mesh::Vec3 f = force(r, receptors.position(mesh, positions, r));
-    double phi[6];
-    receptors.shapeFunctions(r, phi);
-    spreadPointForce(mesh.element(receptors[r].element), phi, f, nodalForces);
+    receptors.nodeWeights(mesh, r, weights);
+    for (const NodeWeight& c : weights) {
+      double* F = nodalForces + 3 * c.node;
+      F[0] += c.weight * f[0];
+      F[1] += c.weight * f[1];
+      F[2] += c.weight * f[2];
+    }
     total += f;
   }
   return total;
@@ -148,6 +152,7 @@ mesh::Vec3 BondPopulation::addNodalForces(const mesh::SurfaceMesh& mesh, const R
 void BondPopulation::addStiffness(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors, const double* positions,
                                   LoadStiffness& stiffness) const
 {
+  std::vector<NodeWeight> weights;
   for (int r = 0; r < size(); ++r) {
     const BondState& s = state(r);
     if (s.occupancy <= 0.0) {
@@ -155,16 +160,13 @@ void BondPopulation::addStiffness(const mesh::SurfaceMesh& mesh, const ReceptorS
     }
     const mesh::Mat3 bond = springStiffness(receptors.position(mesh, positions, r), s.anchor,
                                             s.occupancy * settings_.springConstant, settings_.equilibriumLength);
-    double phi[6];
-    receptors.shapeFunctions(r, phi);
-    const auto& nodes = mesh.element(receptors[r].element);
-    for (int a = 0; a < 6; ++a) {
-      for (int b = 0; b < 6; ++b) {
-        const double weight = phi[a] * phi[b];
+    receptors.nodeWeights(mesh, r, weights);
+    for (const NodeWeight& a : weights) {
+      for (const NodeWeight& b : weights) {
+        const double weight = a.weight * b.weight;
         for (int i = 0; i < 3; ++i) {
           for (int j = 0; j < 3; ++j) {
-            stiffness.add(3 * nodes[static_cast<std::size_t>(a)] + i, 3 * nodes[static_cast<std::size_t>(b)] + j,
-                          weight * bond(i, j));
+            stiffness.add(3 * a.node + i, 3 * b.node + j, weight * bond(i, j));
           }
         }
       }

@@ -5,8 +5,10 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/mesh/ElementGeometry.hpp>
 #include <capsula/mesh/Measures.hpp>
+#include <capsula/quadrature/TriangleRule.hpp>
 
 #include <cmath>
+#include <map>
 
 namespace capsula::adhesion {
 
@@ -81,9 +83,85 @@ void ReceptorSet::shapeFunctions(int r, double phi[6]) const
 
 mesh::Vec3 ReceptorSet::position(const mesh::SurfaceMesh& mesh, const double* positions, int r) const
 {
+  if (patched()) {
+    mesh::Vec3 x = mesh::Vec3::Zero();
+    for (const NodeWeight& c : patches_[static_cast<std::size_t>(r)]) {
+      x += c.weight * mesh::nodeAt(positions, c.node);
+    }
+    return x;
+  }
   const Receptor& receptor = (*this)[r];
   return mesh::surfacePosition(mesh.elementNodes(receptor.element, positions), shapeParameters(receptor.element),
                                receptor.xi, receptor.eta);
+}
+
+void ReceptorSet::nodeWeights(const mesh::SurfaceMesh& mesh, int r, std::vector<NodeWeight>& out) const
+{
+  if (patched()) {
+    out = patches_[static_cast<std::size_t>(r)];
+    return;
+  }
+  double phi[6];
+  shapeFunctions(r, phi);
+  const auto& nodes = mesh.element((*this)[r].element);
+  out.resize(6);
+  for (std::size_t k = 0; k < 6; ++k) {
+    out[k] = {nodes[k], phi[k]};
+  }
+}
+
+void ReceptorSet::spreadOverPatches(const mesh::SurfaceMesh& mesh, const std::vector<double>& referencePositions,
+                                    double radius, const std::string& key)
+{
+  core::require<core::InputError>(radius > 0.0, "'", key, "' = ", radius, ": a patch needs a radius > 0.");
+  // Every quadrature point of the unstressed shape once: its element, phi and area weight.
+  struct Point {
+    int element;
+    mesh::Vec3 x;
+    double phi[6];
+    double area;
+  };
+  const quadrature::TriangleRule& rule = quadrature::triangleRule(7);
+  std::vector<Point> points;
+  points.reserve(static_cast<std::size_t>(mesh.numElements() * rule.size()));
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const mesh::ElementNodes x = mesh.elementNodes(e, referencePositions.data());
+    for (int q = 0; q < rule.size(); ++q) {
+      const auto k = static_cast<std::size_t>(q);
+      const mesh::SurfacePoint s = mesh::evaluateSurfacePoint(x, shapeParameters(e), rule.xi[k], rule.eta[k]);
+      Point p{e, s.position, {}, rule.weight[k] * s.metric};
+      mesh::shapeFunctions(shapeParameters(e), rule.xi[k], rule.eta[k], p.phi);
+      points.push_back(p);
+    }
+  }
+  std::vector<std::vector<NodeWeight>> patches(receptors_.size());
+  for (int r = 0; r < size(); ++r) {
+    const mesh::Vec3 centre = position(mesh, referencePositions.data(), r);
+    std::map<int, double> shares; // by node, so every rank sums in the same order
+    double total = 0.0;
+    int count = 0;
+    for (const Point& p : points) {
+      const double r2 = (p.x - centre).squaredNorm() / (radius * radius);
+      if (r2 >= 1.0) {
+        continue;
+      }
+      const double w = p.area * (1.0 - r2) * (1.0 - r2);
+      const auto& nodes = mesh.element(p.element);
+      for (std::size_t k = 0; k < 6; ++k) {
+        shares[nodes[k]] += w * p.phi[k];
+      }
+      total += w;
+      ++count;
+    }
+    core::require<core::InputError>(count >= 3, "'", key, "' = ", radius, ": the patch of receptor ", r, " holds ",
+                                    count,
+                                    " quadrature point(s) of this mesh; give a radius that holds at least three "
+                                    "(about the element size) or 0 for point receptors.");
+    for (const auto& [node, share] : shares) {
+      patches[static_cast<std::size_t>(r)].push_back({node, share / total});
+    }
+  }
+  patches_ = std::move(patches);
 }
 
 } // namespace capsula::adhesion

@@ -2,6 +2,7 @@
 
 #include <capsula/core/Error.hpp>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace capsula::scene {
@@ -26,13 +27,18 @@ void LocalMobilityPreconditioner::setCell(int cell, int firstNode, const elastic
   entries.reserve(stiffness.elements().size() * 18 * 18);
   const auto add = [&entries](int row, int column, double value) { entries.emplace_back(row, column, value); };
   stiffness.forEachEntry(add);
-  if (external != nullptr) { // within the element pattern of H: the pattern stays the same
+  if (external != nullptr) { // bonds on patches and tethers couple nodes of several elements
     external->forEachEntry(add);
   }
   SparseMatrix H(n, n);
   H.setFromTriplets(entries.begin(), entries.end()); // sums the element contributions
-  const bool samePattern = block.patternAnalysed && block.firstNode == firstNode && block.stiffness.rows() == n &&
-                           block.stiffness.nonZeros() == H.nonZeros();
+  // The factorisation's symbolic analysis is reused only for the very same pattern: bonds
+  // that form and break change it, possibly keeping the number of entries.
+  const bool samePattern =
+      block.patternAnalysed && block.firstNode == firstNode && block.stiffness.rows() == n &&
+      block.stiffness.nonZeros() == H.nonZeros() &&
+      std::equal(H.outerIndexPtr(), H.outerIndexPtr() + n + 1, block.stiffness.outerIndexPtr()) &&
+      std::equal(H.innerIndexPtr(), H.innerIndexPtr() + H.nonZeros(), block.stiffness.innerIndexPtr());
   block.firstNode = firstNode;
   block.stiffness = std::move(H);
   block.inverseMobility.resize(n);

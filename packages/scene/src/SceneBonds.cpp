@@ -21,6 +21,9 @@ SceneBonds::SceneBonds(const adhesion::AdhesionSettings& settings, const std::ve
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const auto stream = static_cast<std::uint64_t>(c);
     receptors_.emplace_back(cells[c], references[c], settings_.receptorDensity, settings_.seed, stream);
+    if (settings_.patchRadius > 0.0) {
+      receptors_.back().spreadOverPatches(cells[c], references[c], settings_.patchRadius, "Adhesion/Patch radius");
+    }
     bonds_.emplace_back(settings_, stream, receptors_.back().size());
   }
 }
@@ -91,7 +94,11 @@ std::string SceneBonds::describe() const
   for (const auto& receptors : receptors_) {
     line << " " << receptors.size();
   }
-  line << " (per cell); bonds updated after each accepted step";
+  line << " (per cell)";
+  if (s.patchRadius > 0.0) {
+    line << ", each a patch of radius " << s.patchRadius << " a";
+  }
+  line << "; bonds updated after each accepted step";
   return line.str();
 }
 

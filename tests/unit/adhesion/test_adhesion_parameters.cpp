@@ -87,7 +87,7 @@ TEST(AdhesionParameters, ChoicesAndPatchReachTheSettings)
 
 TEST(AdhesionParameters, NegativeDensitiesAreRefusedNamingTheKey)
 {
-  for (const std::string key : {"Receptor density", "Ligand density"}) {
+  for (const std::string key : {"Receptor density", "Ligand density", "Patch radius"}) {
     // By the deck's validator ...
     const std::string byDeck = inputErrorOf([&] { adhesionDeck(realParameter(key, -1.0)); });
     EXPECT_NE(byDeck.find("Adhesion/" + key), std::string::npos) << byDeck;

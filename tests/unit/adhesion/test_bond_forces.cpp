@@ -3,6 +3,7 @@
 #include <capsula/adhesion/AdhesionOutputs.hpp>
 #include <capsula/adhesion/BondPopulation.hpp>
 #include <capsula/adhesion/Receptors.hpp>
+#include <capsula/core/Error.hpp>
 #include <capsula/mesh/Icosphere.hpp>
 #include <capsula/mesh/Measures.hpp>
 
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace adhesion = capsula::adhesion;
@@ -31,47 +33,97 @@ mesh::SurfaceMesh eggAboveWall(int level)
 
 } // namespace
 
+// Point receptors and receptors spread over patches of radius 0.3 (18-30 quadrature points
+// each at level 2).
 TEST(BondForces, SpreadingKeepsTotalForceAndTorqueToRoundOff)
 {
   const mesh::SurfaceMesh egg = eggAboveWall(2);
   const std::vector<double> reference = mesh::makeIcosphere(2).positions();
-  const adhesion::ReceptorSet receptors(egg, reference, 40.0, 7, 0);
-  adhesion::AdhesionSettings s;
-  adhesion::BondPopulation bonds(s, 0, receptors.size());
-  // Every third receptor bonded to an anchor somewhere on the wall: forces of all directions.
-  for (int r = 0; r < receptors.size(); r += 3) {
-    bonds.setState(r, {1.0, Vec3(0.3 * std::sin(r), 0.0, 0.2 * std::cos(r))});
-  }
-  // The membrane deformed away from where the receptors were placed (not a rigid motion).
-  std::vector<double> x = egg.positions();
-  for (std::size_t i = 0; i < x.size(); i += 3) {
-    x[i] += 0.05 * std::sin(3.0 * x[i + 1]);
-  }
-  std::vector<double> nodal(x.size(), 0.0);
-  const Vec3 total = bonds.addNodalForces(egg, receptors, x.data(), nodal.data());
+  for (const double radius : {0.0, 0.3}) {
+    adhesion::ReceptorSet receptors(egg, reference, 40.0, 7, 0);
+    if (radius > 0.0) {
+      receptors.spreadOverPatches(egg, reference, radius, "Adhesion/Patch radius");
+    }
+    adhesion::AdhesionSettings s;
+    adhesion::BondPopulation bonds(s, 0, receptors.size());
+    // Every third receptor bonded to an anchor somewhere on the wall: forces of all directions.
+    for (int r = 0; r < receptors.size(); r += 3) {
+      bonds.setState(r, {1.0, Vec3(0.3 * std::sin(r), 0.0, 0.2 * std::cos(r))});
+    }
+    // The membrane deformed away from where the receptors were placed (not a rigid motion).
+    std::vector<double> x = egg.positions();
+    for (std::size_t i = 0; i < x.size(); i += 3) {
+      x[i] += 0.05 * std::sin(3.0 * x[i + 1]);
+    }
+    std::vector<double> nodal(x.size(), 0.0);
+    const Vec3 total = bonds.addNodalForces(egg, receptors, x.data(), nodal.data());
 
-  Vec3 pointForce = Vec3::Zero(), pointTorque = Vec3::Zero(), nodalForce = Vec3::Zero(), nodalTorque = Vec3::Zero();
-  double scale = 0.0;
-  const Vec3 about(0.4, -0.7, 1.1);
-  for (int r = 0; r < receptors.size(); ++r) {
-    const Vec3 xr = receptors.position(egg, x.data(), r);
-    const Vec3 f = bonds.force(r, xr);
-    pointForce += f;
-    pointTorque += (xr - about).cross(f);
-    scale += f.norm() * (1.0 + (xr - about).norm());
+    Vec3 pointForce = Vec3::Zero(), pointTorque = Vec3::Zero(), nodalForce = Vec3::Zero(), nodalTorque = Vec3::Zero();
+    double scale = 0.0;
+    const Vec3 about(0.4, -0.7, 1.1);
+    for (int r = 0; r < receptors.size(); ++r) {
+      const Vec3 xr = receptors.position(egg, x.data(), r);
+      const Vec3 f = bonds.force(r, xr);
+      pointForce += f;
+      pointTorque += (xr - about).cross(f);
+      scale += f.norm() * (1.0 + (xr - about).norm());
+    }
+    for (int n = 0; n < egg.numNodes(); ++n) {
+      const Vec3 f = mesh::nodeAt(nodal.data(), n);
+      nodalForce += f;
+      nodalTorque += (mesh::nodeAt(x.data(), n) - about).cross(f);
+    }
+    ASSERT_GT(scale, 1.0); // hundreds of bonds pulling with O(1) forces
+    // Round-off: sums of a few thousand products of O(1) numbers, each exact to 1e-16
+    // relative: 1e-13 of the sum of magnitudes leaves a margin of ~100, and catches a missing
+    // shape function (an error of phi_k ~ 0.1 of a single force) or a patch share.
+    EXPECT_LT((nodalForce - pointForce).norm(), 1e-13 * scale) << "radius " << radius;
+    EXPECT_LT((nodalTorque - pointTorque).norm(), 1e-13 * scale) << "radius " << radius;
+    EXPECT_LT((total - pointForce).norm(), 1e-13 * scale) << "radius " << radius;
   }
-  for (int n = 0; n < egg.numNodes(); ++n) {
-    const Vec3 f = mesh::nodeAt(nodal.data(), n);
-    nodalForce += f;
-    nodalTorque += (mesh::nodeAt(x.data(), n) - about).cross(f);
+}
+
+// A patch on the unit sphere (level 3, reference = current): its weighted mean lies inside
+// the sphere by about the mean of 1 - cos(r) over the bump, ~rho^2 / 6 = 0.0067 for rho = 0.2
+// (bound: between 0 and rho^2 / 2), and along its point's direction to within 0.2 rho (the
+// quadrature points are not symmetric about every receptor). Node shares sum to 1.
+TEST(Receptors, PatchIsCentredOnItsPointAndSumsToOne)
+{
+  const mesh::SurfaceMesh sphere = mesh::makeIcosphere(3);
+  const std::vector<double> x = sphere.positions();
+  const adhesion::ReceptorSet points(sphere, x, 5.0, 11, 0);
+  adhesion::ReceptorSet patches(sphere, x, 5.0, 11, 0);
+  const double rho = 0.2;
+  patches.spreadOverPatches(sphere, x, rho, "Adhesion/Patch radius");
+  ASSERT_TRUE(patches.patched());
+  ASSERT_GT(points.size(), 40);
+  std::vector<adhesion::NodeWeight> weights;
+  for (int r = 0; r < points.size(); ++r) {
+    const Vec3 p = points.position(sphere, x.data(), r);
+    const Vec3 X = patches.position(sphere, x.data(), r);
+    EXPECT_GT(1.0 - X.norm(), 0.0);
+    EXPECT_LT(1.0 - X.norm(), 0.5 * rho * rho);
+    EXPECT_LT((X.normalized() - p.normalized()).norm(), 0.2 * rho);
+    patches.nodeWeights(sphere, r, weights);
+    double sum = 0.0;
+    for (const auto& w : weights) {
+      sum += w.weight;
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-14);
   }
-  ASSERT_GT(scale, 1.0); // hundreds of bonds pulling with O(1) forces
-  // Round-off: sums of a few thousand products of O(1) numbers, each exact to 1e-16
-  // relative: 1e-13 of the sum of magnitudes leaves a margin of ~100, and catches a missing
-  // shape function (an error of phi_k ~ 0.1 of a single force).
-  EXPECT_LT((nodalForce - pointForce).norm(), 1e-13 * scale);
-  EXPECT_LT((nodalTorque - pointTorque).norm(), 1e-13 * scale);
-  EXPECT_LT((total - pointForce).norm(), 1e-13 * scale);
+}
+
+// A radius that holds fewer than three quadrature points is refused, naming the key.
+TEST(Receptors, PatchTooSmallForTheMeshIsRefused)
+{
+  const mesh::SurfaceMesh sphere = mesh::makeIcosphere(1);
+  adhesion::ReceptorSet receptors(sphere, sphere.positions(), 5.0, 11, 0);
+  try {
+    receptors.spreadOverPatches(sphere, sphere.positions(), 0.01, "Adhesion/Patch radius");
+    FAIL() << "a patch of 0.01 a on a level-1 mesh was accepted";
+  } catch (const capsula::core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'Adhesion/Patch radius' = 0.01"), std::string::npos) << e.what();
+  }
 }
 
 TEST(BondForces, StretchedBondPullsTowardsItsAnchor)

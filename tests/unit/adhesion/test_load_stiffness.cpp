@@ -72,29 +72,38 @@ TEST(LoadStiffness, BondsAreTheDerivativeOfTheirNodalForces)
     x[i + 1] = y + 1.05;
     x[i + 2] = 0.8 * x[i + 2];
   }
-  const adhesion::ReceptorSet receptors(egg, reference, 40.0, 7, 0);
-  adhesion::AdhesionSettings s;
-  s.springConstant = 25.0;
-  s.equilibriumLength = 0.3;
-  s.kinetics = adhesion::BondKinetics::MeanField; // fractional occupancies weight the bonds
-  adhesion::BondPopulation bonds(s, 0, receptors.size());
-  int bound = 0;
-  for (int r = 0; r < receptors.size(); r += 3) {
-    // Anchors at distances 0.1-0.5 in all directions: bonds compressed (L < lambda) and stretched.
-    const Vec3 p = receptors.position(egg, x.data(), r);
-    const Vec3 d(std::sin(r), std::cos(0.7 * r), std::sin(0.3 * r + 1.0));
-    bonds.setState(
-        r, {0.5 + 0.5 * std::cos(r) * std::cos(r), p - (0.1 + 0.4 * std::abs(std::sin(2.1 * r))) * d.normalized()});
-    ++bound;
+  for (const double radius : {0.0, 0.3}) { // point receptors, and patches (Receptors.hpp)
+    adhesion::ReceptorSet receptors(egg, reference, 40.0, 7, 0);
+    if (radius > 0.0) {
+      receptors.spreadOverPatches(egg, reference, radius, "Adhesion/Patch radius");
+    }
+    adhesion::AdhesionSettings s;
+    s.springConstant = 25.0;
+    s.equilibriumLength = 0.3;
+    s.kinetics = adhesion::BondKinetics::MeanField; // fractional occupancies weight the bonds
+    adhesion::BondPopulation bonds(s, 0, receptors.size());
+    int bound = 0;
+    std::size_t entries = 0;
+    std::vector<adhesion::NodeWeight> weights;
+    for (int r = 0; r < receptors.size(); r += 3) {
+      // Anchors at distances 0.1-0.5 in all directions: bonds compressed (L < lambda) and stretched.
+      const Vec3 p = receptors.position(egg, x.data(), r);
+      const Vec3 d(std::sin(r), std::cos(0.7 * r), std::sin(0.3 * r + 1.0));
+      bonds.setState(
+          r, {0.5 + 0.5 * std::cos(r) * std::cos(r), p - (0.1 + 0.4 * std::abs(std::sin(2.1 * r))) * d.normalized()});
+      ++bound;
+      receptors.nodeWeights(egg, r, weights);
+      entries += 9 * weights.size() * weights.size();
+    }
+    ASSERT_GT(bound, 20);
+    adhesion::LoadStiffness K;
+    bonds.addStiffness(egg, receptors, x.data(), K);
+    EXPECT_EQ(K.numEntries(), entries); // 18 x 18 per point receptor
+    const auto [worst, size] =
+        mismatch(K, x, [&](const double* y, double* f) { bonds.addNodalForces(egg, receptors, y, f); });
+    EXPECT_GT(size, 1.0);
+    EXPECT_LT(worst, 1e-6 * size) << worst << " of " << size << ", radius " << radius;
   }
-  ASSERT_GT(bound, 20);
-  adhesion::LoadStiffness K;
-  bonds.addStiffness(egg, receptors, x.data(), K);
-  EXPECT_EQ(K.numEntries(), static_cast<std::size_t>(bound) * 18 * 18);
-  const auto [worst, size] =
-      mismatch(K, x, [&](const double* y, double* f) { bonds.addNodalForces(egg, receptors, y, f); });
-  EXPECT_GT(size, 1.0);
-  EXPECT_LT(worst, 1e-6 * size) << worst << " of " << size;
 }
 
 // The wall repulsion, both loads: 'Virtual work' K_kl = -int phi_k phi_l p'(y) dS, 'Nodal

@@ -47,6 +47,7 @@ struct AdhesionSettings {
   double springConstant = 10.0;          ///< sigma / G
   double equilibriumLength = 0.02;       ///< lambda / a
   double reactionDistance = 0.05;        ///< r_0 / a: a receptor binds only within r_0 of the wall
+  double patchRadius = 0.0;              ///< rho / a: the membrane patch a bond pulls on (0: a point)
   double onRate = 0.1;                   ///< k_on0 / (k a^2): the forward rate per unit ligand density
   double offRate = 1.0;                  ///< k_off0 / k
   double reactiveCompliance = 1e-3;      ///< gamma / a (Bell)
@@ -58,7 +59,7 @@ struct AdhesionSettings {
 };
 
 /// Declares Enabled, Receptor density, Ligand density, Ligand patch, Spring constant,
-/// Equilibrium length, Reaction distance, On-rate, Off-rate, Reactive compliance, Transition
+/// Equilibrium length, Reaction distance, Patch radius, On-rate, Off-rate, Reactive compliance, Transition
 /// spring constant, Thermal energy, Bond model, Kinetics and Seed.
 void declareAdhesionParameters(Teuchos::ParameterList& adhesion);
 

@@ -83,8 +83,9 @@ public:
   /// The force of receptor r's bond on the membrane when the receptor is at `x`.
   mesh::Vec3 force(int r, const mesh::Vec3& x) const;
 
-  /// Adds the bonds' nodal forces (PointForces.hpp) of receptors first..last-1 to
-  /// `nodalForces` (3 per node of `mesh`); returns their total.
+  /// Adds the bonds' nodal forces c_k F of receptors first..last-1 (c_k the receptor's node
+  /// shares, Receptors.hpp: phi_k at a point, as PointForces.hpp) to `nodalForces` (3 per
+  /// node of `mesh`); returns their total.
   mesh::Vec3 addNodalForces(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors, const double* positions,
                             double* nodalForces, int first, int last) const;
   mesh::Vec3 addNodalForces(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors, const double* positions,
@@ -93,8 +94,8 @@ public:
     return addNodalForces(mesh, receptors, positions, nodalForces, 0, size());
   }
 
-  /// Adds the stiffness -dF_k/dx_l of the bonds' nodal forces F_k = phi_k F(x), x = sum_l
-  /// phi_l x_l, to `stiffness`: phi_k phi_l occupancy sigma [(1 - lambda/L) I + (lambda/L) e e^T]
+  /// Adds the stiffness -dF_k/dx_l of the bonds' nodal forces F_k = c_k F(x), x = sum_l
+  /// c_l x_l, to `stiffness`: c_k c_l occupancy sigma [(1 - lambda/L) I + (lambda/L) e e^T]
   /// per bond of length L along e, the Hessian of its energy sigma (L - lambda)^2 / 2.
   void addStiffness(const mesh::SurfaceMesh& mesh, const ReceptorSet& receptors, const double* positions,
                     LoadStiffness& stiffness) const;

@@ -11,11 +11,20 @@
 // metric h_s within one element (a few per cent on the icosphere levels). Positions use the
 // REFERENCE shape parameters (alpha, beta, gamma) of each element, as the membrane mechanics
 // do, so (xi, eta) is a material point in any configuration.
+//
+// A receptor is a point by default, its force on its element's six nodes with phi_k. Spread
+// over patches (spreadOverPatches), receptor r is the weighted mean X_r = sum_i w_i x_i of
+// the 7-point quadrature points within rho of its point on the unstressed shape, weights
+// w_q h_s (1 - r^2 / rho^2)^2 normalised to 1 (the bump of a tether's foot,
+// TetherPlacement.hpp): X_r = sum_k c_k x_k with c_k = sum_i w_i phi_k(i) summed per node, and
+// a force F at X_r gives the nodal forces c_k F. Either way sum_k c_k = 1 and sum_k c_k x_k =
+// X_r, so the nodal forces add up to F and have its torque about any point.
 #include <capsula/mesh/ShapeFunctions.hpp>
 #include <capsula/mesh/SurfaceMesh.hpp>
 #include <capsula/mesh/Vec3.hpp>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace capsula::adhesion {
@@ -24,6 +33,12 @@ struct Receptor {
   int element;
   double xi;
   double eta;
+};
+
+/// A node that carries part of a receptor, and its share.
+struct NodeWeight {
+  int node;
+  double weight;
 };
 
 class ReceptorSet {
@@ -46,12 +61,24 @@ public:
 
   /// phi_k at receptor r, k = 0..5 (the weights of its element's nodes).
   void shapeFunctions(int r, double phi[6]) const;
-  /// x of receptor r at node positions `positions` (3 per node, the mesh's numbering).
+  /// x of receptor r at node positions `positions` (3 per node, the mesh's numbering): its
+  /// point, or the weighted mean of its patch.
   mesh::Vec3 position(const mesh::SurfaceMesh& mesh, const double* positions, int r) const;
+
+  /// Makes every receptor the patch of radius `radius` around its point on `referencePositions`
+  /// (see above). Throws core::InputError naming `key` for a radius whose patch holds fewer
+  /// than three quadrature points for some receptor.
+  void spreadOverPatches(const mesh::SurfaceMesh& mesh, const std::vector<double>& referencePositions, double radius,
+                         const std::string& key);
+  bool patched() const { return !patches_.empty(); }
+  /// The nodes of receptor r with their shares c_k (sum 1): with `phi` of its point on its
+  /// element's six nodes, or its patch's (see above). `out` is overwritten.
+  void nodeWeights(const mesh::SurfaceMesh& mesh, int r, std::vector<NodeWeight>& out) const;
 
 private:
   std::vector<mesh::ShapeParameters> parameters_;
   std::vector<Receptor> receptors_;
+  std::vector<std::vector<NodeWeight>> patches_; // per receptor; empty: points
 };
 
 } // namespace capsula::adhesion
