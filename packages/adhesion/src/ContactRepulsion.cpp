@@ -96,8 +96,8 @@ const quadrature::TriangleRule& cellRule()
 }
 
 // Whether any point of element e can lie within `reach` of the plane y = 0: its lowest node
-// less a quarter of its largest vertex-to-vertex chord, more than a quadratic element's
-// interior dips below its nodes.
+// less a quarter of its largest vertex-to-vertex chord c. A surface of curvature 1 / R bulges
+// by c^2 / (8 R) between nodes c apart, less than c / 4 wherever c < 2 R.
 bool mayReachWall(const mesh::ElementNodes& x, double reach)
 {
   double lowest = x[0][1];
