@@ -5,7 +5,7 @@ off-rate and reactive compliance, and rolling against membrane stiffness.
 
 Every cell3d run under the folders given is read (metrics.csv, deck.xml, summary.json). A run
 with adhesion is compared with the run without adhesion ('Adhesion/Enabled' false) at the same
-Ca, mesh level and start: both velocities are the centroid's mean velocity along the flow over
+Ca, mesh level, start and contact strength: both velocities are the centroid's mean velocity along the flow over
 the outputs after --late (default: the second half of the run),
 
     V = (x_c(t_end) - x_c(t_late)) / (t_end - t_late),
@@ -16,17 +16,17 @@ and the regime follows from r = V / V_free (classify()):
     rolling         0.02 <= r < 0.5, with bonds at the end
     no adhesion     r >= 0.5, or no bond at the end
 
-The state diagram's axes are k_off0 / k (on top: k_off0 in 1/s at k = 100/s, a shear rate of
-the post-capillary venules) and gamma / a; the table gives each run's Bell force k_B T / gamma
-in units of mu k a^2, the scale of the hydrodynamic force on the cell (a rigid sphere held at
-the wall feels 32 mu k a^2, Goldman, Cox & Brenner 1967).
+The state diagram's axes are k_off0 / k (on top: k_off0 in 1/s at k = 100/s) and gamma / a;
+the table gives each run's Bell force k_B T / gamma in units of mu k a^2, the scale of the
+hydrodynamic force on the cell (a rigid sphere held at the wall feels 32 mu k a^2, Goldman,
+Cox & Brenner 1967).
 
 Writes into --out:
   cell3d_adhesion_state_diagram.png   the regimes over (k_off0, gamma) for the stiffest cells
   cell3d_adhesion_rolling.png         x_c(t) and V, contact area against Ca for one molecule
   with --table FILE: the numbers of every run as Markdown
 
-Usage: cell3d_adhesion.py --out FIGDIR [--table FILE] [--late T] RUNDIR_OR_PARENT...
+Usage: cell3d_adhesion.py --out FIGDIR [--table FILE] [--late T] [--check-trends] RUNDIR_OR_PARENT...
        cell3d_adhesion.py --self-test   (the criterion on synthetic velocities)
 """
 import argparse
