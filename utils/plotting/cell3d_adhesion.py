@@ -236,8 +236,9 @@ def write_table(rows, path):
 
 def check_trends(rows):
     """Longer-lived bonds hold a cell back more: along each row of the grid (one gamma, the
-    stiffest Ca), V / V_free must not fall as k_off0 rises (by more than 0.02, the run-to-run
-    scatter of the stochastic bonds at one molecule). Prints the count; returns its success."""
+    stiffest Ca), V / V_free must not fall as k_off0 rises by more than 0.05: another seed moved
+    the ratios of three reduced-study runs by up to 0.044, so a smaller fall may be noise.
+    Prints the count; returns its success."""
     grid, _ = state_grid(rows)
     counts = {}
     for r in grid:
@@ -245,7 +246,7 @@ def check_trends(rows):
     passed = 0
     for compliance, row in sorted(counts.items()):
         ratios = [r["ratio"] for r in sorted(row, key=lambda r: r["off_rate"])]
-        if all(b >= a - 0.02 for a, b in zip(ratios, ratios[1:])):
+        if all(b >= a - 0.05 for a, b in zip(ratios, ratios[1:])):
             passed += 1
         else:
             print(f"V / V_free at gamma = {compliance:g} against k_off0: {', '.join(f'{q:.3f}' for q in ratios)}")
