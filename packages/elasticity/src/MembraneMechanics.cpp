@@ -24,6 +24,15 @@ std::size_t slot(int element, int localNode)
   return 6 * static_cast<std::size_t>(element) + localNode;
 }
 
+// The fold criterion of evaluate() and requireUnfolded(): the material normal n_e of an
+// element at one of its nodes points to the same side as the node's averaged normal n.
+void requireSameSide(const Vec3& elementNormal, const Vec3& nodeNormal, int node, int element)
+{
+  const double product = elementNormal.dot(nodeNormal);
+  core::require<core::NumericalError>(product > 0.0, "the membrane is folded at node ", node, " of element ", element,
+                                      " (element normal . nodal normal = ", product, ")");
+}
+
 } // namespace
 
 MembraneForceMethod membraneForceMethod(const std::string& name)
@@ -118,6 +127,20 @@ MembraneMechanics::MembraneMechanics(const mesh::SurfaceMesh& mesh, std::vector<
   load_.assign(numElements, Vec3::Zero());
 }
 
+void MembraneMechanics::requireUnfolded(const double* positions) const
+{
+  const mesh::SurfaceMesh& mesh = *mesh_;
+  const std::vector<Vec3> normals = mesh::nodeNormals(mesh, positions, discretisation_.numQuadraturePoints);
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const ElementNodes x = mesh.elementNodes(e, positions);
+    for (int j = 0; j < 6; ++j) {
+      const int node = mesh.element(e)[j];
+      const SurfacePoint m = mesh::evaluateAtNode(x, referenceParameters_[e], j);
+      requireSameSide(m.tangentXi.cross(m.tangentEta).normalized(), normals[node], node, e);
+    }
+  }
+}
+
 void MembraneMechanics::evaluate(const double* positions, MembraneEvaluation what)
 {
   evaluate(positions, what, nullptr);
@@ -178,8 +201,7 @@ void MembraneMechanics::evaluate(const double* positions, MembraneEvaluation wha
       const auto& t = currentTangent_[slot(e, j)];
       const Vec3 ne = t[0].cross(t[1]).normalized();
       const Vec3& n = normal_[node];
-      core::require<core::NumericalError>(ne.dot(n) > 0.0, "the membrane is folded at node ", node, " of element ", e,
-                                          " (element normal . nodal normal = ", ne.dot(n), ")");
+      requireSameSide(ne, n, node, e);
       if (!nodal) {
         continue;
       }

@@ -15,6 +15,7 @@ io::JsonValue statisticsJson(const timeint::IntegrationStatistics& statistics)
   io::JsonValue steps = io::JsonValue::object();
   steps["accepted"] = static_cast<long long>(statistics.acceptedSteps);
   steps["rejected"] = static_cast<long long>(statistics.rejectedSteps);
+  steps["rejected outside the model"] = static_cast<long long>(statistics.rejectedOutsideDomain);
   steps["rhs evaluations"] = static_cast<long long>(statistics.rhsEvaluations);
   steps["smallest"] = statistics.smallestStep;
   steps["largest"] = statistics.largestStep;

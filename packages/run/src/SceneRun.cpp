@@ -19,6 +19,7 @@
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/operators/ShearRate.hpp>
 #include <capsula/scene/NodesAboveWall.hpp>
+#include <capsula/scene/UnfoldedMembranes.hpp>
 #include <capsula/scene/SceneDescription.hpp>
 #include <capsula/scene/VelocityJacobian.hpp>
 #include <capsula/timeint/TimeIntegrationParameters.hpp>
@@ -156,8 +157,12 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
   }
   live_.build();
   outputs_.setCheckpointSections({&stateSection_, &outputs_, &live_, &tether_});
-  // A stage state with a node through the wall rejects the attempt (NodesAboveWall.hpp).
-  integrator_.setDomainCheck([this](const std::vector<double>& y) { scene::requireNodesAboveWall(live_.scene(), y); });
+  // A stage state or step result with a node through the wall or a folded membrane rejects
+  // the attempt (NodesAboveWall.hpp, UnfoldedMembranes.hpp).
+  integrator_.setDomainCheck([this](const std::vector<double>& y) {
+    scene::requireNodesAboveWall(live_.scene(), y);
+    scene::requireUnfoldedMembranes(live_.scene(), y);
+  });
   if (live_.scene().hasConstraints()) {
     integrator_.setStageConstraint(
         [this](double, const std::vector<double>& y, std::vector<double>& dydt) { live_.scene().constrain(y, dydt); });

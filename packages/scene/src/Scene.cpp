@@ -13,6 +13,7 @@
 #include <capsula/operators/CellSurfaces.hpp>
 #include <capsula/operators/KernelChoice.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
+#include <capsula/timeint/TimeIntegrator.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -374,7 +375,13 @@ void Scene::computeLoads(double t, elasticity::MembraneEvaluation what)
 void Scene::velocity(double t, const std::vector<double>& positions, std::vector<double>& velocities)
 {
   setPositions(t, positions);
-  computeLoads(t, elasticity::MembraneEvaluation::LoadOnly); // no output reads the tensions of a stage
+  try {
+    computeLoads(t, elasticity::MembraneEvaluation::LoadOnly); // no output reads the tensions of a stage
+  } catch (const core::NumericalError& e) {
+    // A stage state of a step too large for the membrane's fastest mode can fold it although
+    // smaller steps do not: outside the model, so the attempt is rejected (NodesAboveWall.hpp).
+    throw timeint::StateOutsideDomain(e.what());
+  }
   Teuchos::TimeMonitor guard(*velocityTimer_);
   // Warm start: the Krylov solve begins at a combination of the last solutions (O(step) away).
   const operators::LoadDensity load(loadDensity_.data());

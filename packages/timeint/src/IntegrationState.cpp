@@ -34,6 +34,7 @@ StateRecord toRecord(const IntegrationState& state)
   r.integers["steady"] = state.steady ? 1 : 0;
   r.integers["accepted steps"] = state.statistics.acceptedSteps;
   r.integers["rejected steps"] = state.statistics.rejectedSteps;
+  r.integers["rejected outside domain"] = state.statistics.rejectedOutsideDomain;
   r.integers["rhs evaluations"] = state.statistics.rhsEvaluations;
   r.integers["stiff steps"] = state.statistics.stiffSteps;
   r.integers["stiff rhs evaluations"] = state.statistics.stiffRhsEvaluations;
@@ -74,7 +75,7 @@ IntegrationState fromRecord(const StateRecord& record, const std::string& source
   s.statistics.acceptedSteps = entry(record.integers, "accepted steps", source);
   s.statistics.rejectedSteps = entry(record.integers, "rejected steps", source);
   s.statistics.rhsEvaluations = entry(record.integers, "rhs evaluations", source);
-  // Counters of the stiff method: absent from records of explicit-only versions (0 there).
+  // Counters that records of explicit-only or older versions lack read as 0.
   const auto counter = [&record](const char* key) {
     const auto it = record.integers.find(key);
     return it == record.integers.end() ? std::int64_t{0} : it->second;
@@ -86,6 +87,7 @@ IntegrationState fromRecord(const StateRecord& record, const std::string& source
   s.statistics.linearIterations = counter("linear iterations");
   s.statistics.largestLinearIterations = counter("largest linear iterations");
   s.statistics.failedLinearSolves = counter("failed linear solves");
+  s.statistics.rejectedOutsideDomain = counter("rejected outside domain");
   s.statistics.methodSwitches = counter("method switches");
   s.stiffActive = counter("stiff active") != 0;
   s.stiffnessHeldSteps = counter("stiffness held steps");

@@ -142,6 +142,9 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
       outside = e.what();
     }
 
+    if (!outside.empty()) {
+      ++stats.rejectedOutsideDomain;
+    }
     if (trial && (!unsolved.empty() || !outside.empty())) {
       ++stats.rejectedSteps;
       state.proposedStep = proposedBefore;

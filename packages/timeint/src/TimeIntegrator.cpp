@@ -327,6 +327,7 @@ StepReport TimeIntegrator::attemptUntilAccepted(IntegrationState& state, double 
                                           shown(state.time), " is the last accepted one.");
       ++report.rejectedAttempts;
       ++stats.rejectedSteps;
+      ++stats.rejectedOutsideDomain;
       state.proposedStep = 0.5 * h;
       core::require<core::NumericalError>(state.proposedStep >= settings_.minimumStep,
                                           "Time integration failed: ", outside, " at t = ", shown(state.time),

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace {
@@ -225,5 +226,38 @@ TEST(MembraneVirtualWork, LoadOnlyEvaluationGivesTheSameLoad)
     }
     EXPECT_THROW(light.evaluate(folded.data(), MembraneEvaluation::LoadOnly), capsula::core::NumericalError)
         << law->name();
+  }
+}
+
+// requireUnfolded is evaluate()'s fold check alone: silent where evaluate succeeds, the same
+// message where it throws (the same node, element and product), and the membrane's state
+// of the last evaluate() untouched.
+TEST(MembraneVirtualWork, FoldCheckAloneMatchesEvaluate)
+{
+  const SurfaceMesh mesh = capsula::mesh::makeSphere(2, 1.0);
+  const std::vector<double> x = mapNodes(mesh.positions(), smoothDeformation);
+  std::vector<double> folded = x;
+  for (int d = 0; d < 3; ++d) {
+    folded[static_cast<std::size_t>(d)] *= -0.2;
+  }
+  for (const auto& law : laws()) {
+    MembraneMechanics membrane(mesh, mesh.positions(), law, virtualWork());
+    membrane.evaluate(x.data());
+    const std::vector<Vec3> loads = membrane.nodalLoads();
+    EXPECT_NO_THROW(membrane.requireUnfolded(x.data())) << law->name();
+    std::string alone, full;
+    try {
+      membrane.requireUnfolded(folded.data());
+    } catch (const capsula::core::NumericalError& e) {
+      alone = e.what();
+    }
+    EXPECT_EQ(membrane.nodalLoads(), loads) << law->name(); // no member changed
+    try {
+      membrane.evaluate(folded.data(), MembraneEvaluation::LoadOnly);
+    } catch (const capsula::core::NumericalError& e) {
+      full = e.what();
+    }
+    EXPECT_NE(alone.find("the membrane is folded at node "), std::string::npos) << alone;
+    EXPECT_EQ(alone, full) << law->name();
   }
 }

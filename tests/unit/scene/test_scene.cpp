@@ -8,6 +8,7 @@
 #include <capsula/scene/NodesAboveWall.hpp>
 #include <capsula/scene/Scene.hpp>
 #include <capsula/scene/SceneDescription.hpp>
+#include <capsula/scene/UnfoldedMembranes.hpp>
 #include <capsula/timeint/TimeIntegrator.hpp>
 
 #include <Tpetra_Core.hpp>
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 
 namespace {
@@ -206,6 +208,41 @@ TEST(Scene, DomainCheckNamesTheNodeThroughTheWall)
   std::vector<double> x = free.initialPositions();
   x[1] = -5.0;
   EXPECT_NO_THROW(scene::requireNodesAboveWall(free, x));
+}
+
+// The other half of the domain check (UnfoldedMembranes.hpp), and the right-hand side: a
+// state that folds elements of a cell is outside the model, named by cell
+// and node, both in the check and in velocity() (where the integrator rejects the attempt
+// instead of ending the run); the unfolded start passes.
+TEST(Scene, FoldedMembraneIsOutsideTheModel)
+{
+  auto s = makeScene(*smallDeck(1, 2.0, false, [&](Teuchos::ParameterList& d) {
+    d.sublist("Cells").sublist("Cell 1").set("Center", scene::testing::realArray({3.0, 2.0, 0.0}));
+    d.sublist("Cells").sublist("Cell 1").set("Mesh level", 2);
+  }));
+  std::vector<double> x = s.initialPositions();
+  EXPECT_NO_THROW(scene::requireUnfoldedMembranes(s, x));
+  const std::size_t first = 3 * static_cast<std::size_t>(s.nodeOffset(1));
+  // Node 0 (a vertex, at x = 3 on the sphere) slides along the surface by 0.6, twice the
+  // level-2 edge, past its neighbours: the elements it moves over turn inside out.
+  ASSERT_EQ(x[first], 3.0);
+  x[first] += 0.6;
+  const auto outside = [](const std::function<void()>& action) {
+    try {
+      action();
+    } catch (const capsula::timeint::StateOutsideDomain& e) {
+      return std::string(e.what());
+    }
+    return std::string("(nothing thrown)");
+  };
+  const std::string checked = outside([&] { scene::requireUnfoldedMembranes(s, x); });
+  EXPECT_NE(checked.find("the membrane of 'Cells/Cell 1' failed: the membrane is folded at node "), std::string::npos)
+      << checked;
+  std::vector<double> u;
+  const std::string evaluated = outside([&] { s.velocity(0.5, x, u); });
+  EXPECT_NE(evaluated.find("At t = 0.5, the membrane of 'Cells/Cell 1' failed: the membrane is folded at node "),
+            std::string::npos)
+      << evaluated;
 }
 
 } // namespace

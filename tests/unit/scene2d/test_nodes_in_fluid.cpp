@@ -80,6 +80,9 @@ TEST(NodesInFluid2D, TetheredAbQuarterCellStageThroughTheWallIsARejectedStepNotA
   const timeint::StepReport first = integrator.step(state, 1.0);
   EXPECT_LT(first.stepSize, 2e-3);
   EXPECT_GT(state.statistics.rejectedSteps, 0);
+  // The domain's rejections are counted apart from the error control's.
+  EXPECT_GT(state.statistics.rejectedOutsideDomain, 0);
+  EXPECT_LE(state.statistics.rejectedOutsideDomain, state.statistics.rejectedSteps);
   EXPECT_GT(state.y[1], 0.0);
   const double end = 2e-3;
   while (state.time < end) {

@@ -319,6 +319,35 @@ TEST(Rosenbrock, SolvesFailingDownToTheMinimumStepStopTheRun)
   EXPECT_EQ(state.proposedStep, 0.1);
 }
 
+// A right-hand side that finds a stage state outside the model (as a folded membrane is)
+// rejects the attempt, which is retried with half the step, and the rejection is counted
+// as the domain's; an attempt whose stages stay inside is accepted.
+TEST(Rosenbrock, StageOutsideTheDomainRejectsAndHalvesTheStep)
+{
+  ti::TimeIntegrationSettings s;
+  s.method = ti::Method::ROS34PW2;
+  s.tolerance = 1e-4;
+  s.initialStep = 0.04;
+  s.endTime = 1.0;
+  std::vector<double> outsideAt; // the stage times that were outside
+  ti::TimeIntegrator integrator(s, [&](double t, const std::vector<double>& y, std::vector<double>& f) {
+    if (t > 0.0 && outsideAt.size() < 2) { // the first two attempts' second stages
+      outsideAt.push_back(t);
+      throw ti::StateOutsideDomain("stage outside");
+    }
+    stiffLinearRhs(t, y, f);
+  });
+  integrator.setLinearisedSystem(exactStiffJacobian());
+  auto state = integrator.start(0.0, stiffLinearExact(0.0));
+  const auto report = integrator.step(state, 1.0);
+  ASSERT_EQ(outsideAt.size(), 2u);
+  EXPECT_EQ(outsideAt[1], 0.5 * outsideAt[0]); // the second attempt is half the first
+  EXPECT_EQ(state.statistics.rejectedOutsideDomain, 2);
+  EXPECT_GE(report.rejectedAttempts, 2); // and the error control's, if any
+  EXPECT_LE(report.stepSize, 0.01);
+  EXPECT_GT(state.time, 0.0);
+}
+
 // A stiff method without a LinearisedSystem is refused with a message naming the key.
 TEST(Rosenbrock, StiffMethodWithoutJacobianIsRefused)
 {

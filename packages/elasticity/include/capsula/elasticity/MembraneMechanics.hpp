@@ -116,6 +116,10 @@ public:
   /// passes them to the fluids, so they are taken from F before the mass solve
   /// (Delta f = -div_s T - f_ext). VirtualWork only (throws InputError otherwise).
   void evaluate(const double* positions, MembraneEvaluation what, const double* externalForces);
+  /// The fold check of evaluate() alone (allocates its nodal normals; no member changes):
+  /// throws NumericalError naming the first node where an element's material normal and
+  /// the node's averaged normal point to opposite sides.
+  void requireUnfolded(const double* positions) const;
 
   // --- per node (after evaluate) --------------------------------------------
   const std::vector<Mat3>& nodalTensions() const { return tension_; } ///< T, eq 3.30

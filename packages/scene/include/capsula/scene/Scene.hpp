@@ -128,7 +128,8 @@ public:
   void setPositions(double t, const std::vector<double>& positions);
 
   /// The right-hand side dx/dt = u (eq 3.46): node velocities at `positions`, without the
-  /// stage constraints. Collective.
+  /// stage constraints. Collective. A membrane folded or crushed at `positions` throws
+  /// timeint::StateOutsideDomain (the integrator rejects the attempt), naming the cell and t.
   void velocity(double t, const std::vector<double>& positions, std::vector<double>& velocities);
 
   /// True if some cell has a fixed height (then constrain() must follow velocity()).

@@ -12,8 +12,9 @@ namespace capsula::timeint {
 
 struct IntegrationStatistics {
   std::int64_t acceptedSteps = 0;
-  std::int64_t rejectedSteps = 0;                                ///< attempts rejected by the error control
-  std::int64_t rhsEvaluations = 0;                               ///< calls of the right-hand side
+  std::int64_t rejectedSteps = 0;         ///< attempts rejected, for any reason
+  std::int64_t rejectedOutsideDomain = 0; ///< of those, with a stage state or result outside the model
+  std::int64_t rhsEvaluations = 0;        ///< calls of the right-hand side
   double smallestStep = std::numeric_limits<double>::infinity(); ///< over accepted steps
   double largestStep = 0.0;                                      ///< over accepted steps
   double lastStep = 0.0;                                         ///< size of the last accepted step
