@@ -81,7 +81,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
       cells_(std::move(cells)),
       membraneTimer_(core::timer("Membrane tensions and loads")),
       velocityTimer_(core::timer("Boundary-integral velocity")),
-      constraintTimer_(core::timer("Fixed-height constraint"))
+      constraintTimer_(core::timer("Stage constraints"))
 {
   const int n = description_.numCells();
   core::require<core::InputError>(n >= 1, "The scene has no cell: add 'Cells/Cell 0'.");
@@ -194,6 +194,19 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   }
   if (!fixed.empty()) {
     fixedHeight_.emplace(std::move(fixed), std::move(offsets));
+  }
+  std::vector<mesh::SurfaceMesh> conserved;
+  std::vector<int> conservedOffsets;
+  for (int c = 0; c < n; ++c) {
+    if (description_.cells[static_cast<std::size_t>(c)].conserveVolume) {
+      conserved.push_back(cells_[static_cast<std::size_t>(c)]);
+      conservedOffsets.push_back(nodeOffset(c));
+      terms_.push_back("constraint: no net normal flux through the surface of " +
+                       description_.cells[static_cast<std::size_t>(c)].path + " (volume conserved)");
+    }
+  }
+  if (!conserved.empty()) {
+    volume_.emplace(std::move(conserved), std::move(conservedOffsets));
   }
   if (description_.meshRegularisation.enabled) {
     std::ostringstream line;
@@ -422,8 +435,14 @@ void Scene::restoreGmresWarmStart(const std::vector<double>& rightHandSides, con
 
 void Scene::constrain(const std::vector<double>& positions, std::vector<double>& velocities)
 {
+  if (!hasConstraints()) {
+    return;
+  }
+  Teuchos::TimeMonitor guard(*constraintTimer_);
+  if (volume_) { // a uniform rise carries no net flux, so the order does not matter to O(rule)
+    volume_->apply(positions, velocities);
+  }
   if (fixedHeight_) {
-    Teuchos::TimeMonitor guard(*constraintTimer_);
     fixedHeight_->apply(positions, velocities);
   }
 }

@@ -148,6 +148,7 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
     cell.bendingReference = list.get<std::string>("Bending reference");
     requireConsistentBending(cell);
     cell.fixedHeight = list.get<bool>("Fixed height");
+    cell.conserveVolume = list.get<bool>("Conserve volume");
     cell.meshLevel = list.get<int>("Mesh level");
     core::require<core::InputError>(!cell.fixedHeight || scene.wall, "'", cell.path,
                                     "/Fixed height' is true but 'Wall/Enabled' is false: a fixed "

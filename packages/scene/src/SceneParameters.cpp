@@ -102,6 +102,12 @@ void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double
   core::declareBool(cell, "Fixed height", false,
                     "Hold the height of the cell's centroid above the wall fixed (thesis Section "
                     "5.1): the cell's mean vertical velocity is removed from all its nodes.");
+  core::declareBool(cell, "Conserve volume", false,
+                    "Remove the net normal flux of the cell's node velocities through its surface at "
+                    "every stage (scene/VolumeConstraint.hpp), so that the enclosed volume is held to "
+                    "the accuracy of the time integration. For stiff cells close to the wall, whose "
+                    "volume the quadrature error of the single layer there otherwise changes by "
+                    "percents (docs/cell3d-adhesion-results.md).");
 }
 
 void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck, int cellsWhenNoneGiven)

@@ -198,7 +198,7 @@ std::string VelocityJacobian::describe() const
     line << " (double layer left out)";
   }
   if (scene_.hasConstraints()) {
-    line << ", fixed-height constraint";
+    line << ", stage constraints";
   }
   line << "; " << operators::describe(settings_.stage);
   if (settings_.preconditioned) {

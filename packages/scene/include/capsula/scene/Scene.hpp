@@ -30,6 +30,7 @@
 #include <capsula/operators/WarmStartHistory.hpp>
 #include <capsula/scene/ExternalForces.hpp>
 #include <capsula/scene/FixedHeightConstraint.hpp>
+#include <capsula/scene/VolumeConstraint.hpp>
 #include <capsula/scene/SceneBonds.hpp>
 #include <capsula/scene/SceneDescription.hpp>
 
@@ -132,8 +133,8 @@ public:
   /// timeint::StateOutsideDomain (the integrator rejects the attempt), naming the cell and t.
   void velocity(double t, const std::vector<double>& positions, std::vector<double>& velocities);
 
-  /// True if some cell has a fixed height (then constrain() must follow velocity()).
-  bool hasConstraints() const { return fixedHeight_.has_value(); }
+  /// True if some cell has a fixed height or conserves its volume (then constrain() must follow velocity()).
+  bool hasConstraints() const { return fixedHeight_.has_value() || volume_.has_value(); }
   /// Applies the stage constraints to velocities belonging to `positions`.
   void constrain(const std::vector<double>& positions, std::vector<double>& velocities);
 
@@ -203,6 +204,7 @@ private:
   std::vector<std::unique_ptr<elasticity::MembraneMechanics>> membranes_;
   std::unique_ptr<operators::BoundaryIntegralSolver> solver_;
   std::optional<FixedHeightConstraint> fixedHeight_;
+  std::optional<VolumeConstraint> volume_;
   operators::FlowConditions flow_;
   std::vector<double> initialPositions_;
   std::vector<double> loads_;

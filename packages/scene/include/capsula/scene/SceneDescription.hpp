@@ -30,6 +30,7 @@ struct CellDescription {
   double spontaneousCurvature = 0.0; ///< c0 a
   std::string bendingReference;      ///< "Flat" or "Initial shape"
   bool fixedHeight = false;
+  bool conserveVolume = false; ///< 'Conserve volume': VolumeConstraint
   int meshLevel = 0;
 };
 

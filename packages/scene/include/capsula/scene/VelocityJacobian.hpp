@@ -12,7 +12,7 @@
 // frozen at the step's start x_n: H the membranes' tangent stiffness (second variation
 // of the strain energy, elasticity::TangentStiffness), M their mass matrices (the load is
 // M^-1 of the nodal forces), S the single layer on a geometry of its own frozen at x_n, P
-// the fixed-height constraint (if any) at x_n. Left out: how S, M and the double layer
+// the stage constraints (fixed height, volume; if any) at x_n. Left out: how S, M and the double layer
 // move with the nodes, which is of the size of the load itself and does not make the
 // system stiff; and for lambda != 1 the double layer, which vanishes on the fast
 // grid-scale modes (a locally flat surface has no double layer). The Rosenbrock-W
