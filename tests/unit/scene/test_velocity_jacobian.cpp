@@ -10,6 +10,7 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/scene/CellKinematics.hpp>
 #include <capsula/scene/VelocityJacobian.hpp>
+#include <capsula/scene/VolumeConstraint.hpp>
 #include <capsula/timeint/TimeIntegrator.hpp>
 
 #include <gtest/gtest.h>
@@ -220,6 +221,32 @@ TEST(VelocityJacobian, RespectsTheFixedHeightConstraint)
   capsula::mesh::SurfaceMesh cell = s.cell(0);
   cell.setPositions(x.data());
   EXPECT_LT(std::abs(scene::centroidVelocity(cell, Jv.data())[1]), 1e-12 * maxAbs(Jv));
+}
+
+// So is the volume constraint: every J~ v carries no net flux through the cell's surface (to
+// round-off), where the unconstrained J~ v does (the check discriminates).
+TEST(VelocityJacobian, RespectsTheVolumeConstraint)
+{
+  double flux[2] = {0.0, 0.0};
+  double scale = 0.0;
+  for (const bool conserve : {false, true}) {
+    auto deck = smallDeck(1, 1.6, true, [&](Teuchos::ParameterList& d) {
+      d.sublist("Cells").sublist("Cell 0").set("Conserve volume", conserve);
+    });
+    auto s = makeScene(*deck);
+    scene::VelocityJacobian jacobian(s, *deck, kernels());
+    const std::vector<double> x = s.initialPositions();
+    jacobian.linearise(0.0, x);
+    const std::vector<double> v = direction(x.size());
+    std::vector<double> Jv(x.size());
+    jacobian.apply(v.data(), Jv.data());
+    capsula::mesh::SurfaceMesh cell = s.cell(0);
+    cell.setPositions(x.data());
+    flux[conserve ? 1 : 0] = scene::normalFlux(cell, Jv.data());
+    scale = std::max(scale, maxAbs(Jv));
+  }
+  EXPECT_LT(std::abs(flux[1]), 1e-12 * scale);
+  EXPECT_GT(std::abs(flux[0]), 1e-6 * scale) << "the direction carries no flux: the check would not discriminate";
 }
 
 // The contour-integral load has no tangent stiffness: refused, naming the key.

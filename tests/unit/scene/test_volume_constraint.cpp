@@ -66,7 +66,7 @@ TEST(VolumeConstraint, RemovesTheNetFluxAndKeepsRigidMotions)
       u[3 * i + static_cast<std::size_t>(d)] += 0.05 * normals[i][d];
     }
   }
-  // The state: 2 placeholder nodes before the cell, as a second cell's offset would give.
+  // The state: 2 nodes of another cell before this one, which the constraint must not touch.
   const std::size_t offset = 2;
   std::vector<double> positions(3 * offset, 0.0);
   positions.insert(positions.end(), mesh.positions().begin(), mesh.positions().end());

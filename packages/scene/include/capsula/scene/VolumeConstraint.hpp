@@ -7,8 +7,9 @@
 // not, and near a wall its error is large. Measured on a Ca = 3e-4 Skalak cell (C = 2.5,
 // ROS34PW2, level 1, to t = 1): 0.03 a above the wall it loses 0.45% of its volume, at 2 a
 // above it or without a wall 1e-5 to 8e-5; at level 2, 0.03 a above the wall, it gains 1.8%
-// by t = 5, the gain growing 2.5-fold per unit time (docs/cell3d-adhesion-results.md). The constraint subtracts c n_k from every node
-// velocity u_k, n_k the area-averaged node normal, with
+// by t = 5, the gain growing 2.5-fold per unit time (docs/cell3d-adhesion-results.md).
+// The constraint subtracts c n_k from every node velocity u_k, n_k the area-averaged node
+// normal, with
 //
 //   c = int_S (sum_k phi_k u_k) . n dS / int_S (sum_k phi_k n_k) . n dS,
 //
