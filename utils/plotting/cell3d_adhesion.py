@@ -44,6 +44,24 @@ REGIMES = {"firm adhesion": ("s", "tab:red"), "rolling": ("o", "tab:green"), "no
 
 SHEAR_RATE = 100.0   # 1 / s, for the top axis of the state diagram
 
+# A published molecule placed on the diagram: E-selectin - sialyl Lewis x, whose k_r0 and r_0
+# Tees, Waugh & Hammer (Biophys J 80:668, 2001) find "in the range required for rolling" by
+# Adhesive Dynamics. At SHEAR_RATE, for a cell of radius RADIUS in a medium of viscosity MU,
+# it sits at k_off0 / k = k_r0 / SHEAR_RATE and at the gamma / a whose Bell force, with the
+# runs' k_B T, equals the molecule's k_B T / r_0 in units of mu k a^2.
+E_SELECTIN = dict(off_rate=0.82, r0=0.034e-9)   # 1 / s, m
+RADIUS = 4e-6        # m, a leukocyte
+MU = 1e-3            # Pa s
+THERMAL_ENERGY = 4.1e-21   # J, k_B T at room temperature
+
+
+def published_point(thermal_flow_units):
+    """(k_off0 / k, gamma / a) of E_SELECTIN for runs whose k_B T is `thermal_flow_units`
+    mu k a^3."""
+    force_scale = MU * SHEAR_RATE * RADIUS ** 2
+    bell_force = THERMAL_ENERGY / E_SELECTIN["r0"] / force_scale
+    return E_SELECTIN["off_rate"] / SHEAR_RATE, thermal_flow_units / bell_force
+
 
 def classify(velocity, free_velocity, bonds_at_end):
     """The regime of a run from its late velocity, the free cell's, and its bonds at the end."""
@@ -131,6 +149,10 @@ def state_diagram(rows, out, plt):
     for r in grid:
         ax.annotate(f"{r['ratio']:.3f}", (r["off_rate"], r["compliance"]), textcoords="offset points",
                     xytext=(7, 5), fontsize=7)
+    if grid:
+        off_rate, compliance = published_point(grid[0]["thermal"] / stiffest)
+        ax.scatter([off_rate], [compliance], marker="*", s=260, facecolors="none", edgecolors="black",
+                   label="E-selectin: rolling in\nAdhesive Dynamics\n(Tees et al. 2001)")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("unstressed off-rate k_off0 / k")
@@ -243,6 +265,7 @@ def check_trends(rows):
     counts = {}
     for r in grid:
         counts.setdefault(r["compliance"], []).append(r)
+    counts = {compliance: row for compliance, row in counts.items() if len(row) > 1}   # rows, not single runs
     passed = 0
     for compliance, row in sorted(counts.items()):
         ratios = [r["ratio"] for r in sorted(row, key=lambda r: r["off_rate"])]
