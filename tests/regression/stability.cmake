@@ -394,6 +394,34 @@ add_test(NAME stability_mesh_adaption_ca1.8_ranks_agree
 set_tests_properties(stability_mesh_adaption_ca1.8_ranks_agree PROPERTIES
   LABELS "stability;mpi" FIXTURES_REQUIRED "stability_mesh_adaption_ca1.8;stability_adaption_np2")
 
+# The near-wall Ca = 4 cell with bending E_b = 0.01 (Skalak, released at h/a = 1.05, level 1,
+# ROS34PW2 at 1e-4; docs/stability.md, "Limits that remain"). Whether it runs depends on the
+# area-dilation ratio C: with C = 0.5 its compressed membrane passes the Skalak law's limit
+# (min_stiffness < 0, PrincipalStiffness.hpp), the crowded material at its rear tip stays at
+# the wall, and from t = 2.91 every attempt but one of ~2e-6 folds; with C = 10 the area term
+# keeps the law stiff, the cell lifts off and runs past that time.
+#   C = 10 to t = 4 (65 steps): min_stiffness 4.40-22 G at every output (bound >= 1 G: the
+#     law never softens), volume change within 0.35% (bound 0.5%, as for the buckling case:
+#     the lowest node is 0.04 of a level-1 element above the wall), min angle >= 18.6 (bound
+#     15), wall gap per h >= 0.039 (bound 0.02; a penetrating run goes to <= 0); at t = 4 the
+#     cell has lifted off to y_c = 1.226 (0.01; the C = 0.5 cell is at 1.085 when it stalls)
+#     with D12 0.5794 (1%: the C = 0.5 cell is at 0.698 by then).
+#   C = 0.5 to t = 2.5, short of the stall: min_stiffness -0.849 G at t = 2.5 (0.2: the sign
+#     is what is tested; it is +0.107 at t = 1.5 and -0.480 at t = 2, and C = 10 keeps +4.4).
+set(_ca4_near ${_stab_fixed} ${_stab_short} --set "Cells/Cell 0/Fixed height=false"
+  --set "Cells/Cell 0/Center={0,1.05,0}" --set "Flow/Capillary number=4"
+  --set "Cells/Cell 0/Bending modulus=0.01" --set "Time integration/Method=ROS34PW2"
+  --set "Output/Interval=0.5")
+stability_run(near_wall_ca4_stiff_area cell3d ${_ca4_near} --set "Cells/Cell 0/Area dilation C=10"
+  --set "Time integration/End time=4")
+stability_check(near_wall_ca4_stiff_area bounds within ${_stability}/near_wall_ca4_stiff_area/metrics.csv
+  min_stiffness=1:30 volume_change=-0.005:0.005 min_angle_deg=15:60 wall_gap_per_h=0.02:10)
+stability_check(near_wall_ca4_stiff_area lifts_off expect ${_stability}/near_wall_ca4_stiff_area/metrics.csv 0
+  time=4:1e-12 y_c=1.226:0.01 D12=0.579:0.006)
+stability_run(near_wall_ca4_soft_area cell3d ${_ca4_near} --set "Time integration/End time=2.5")
+stability_check(near_wall_ca4_soft_area softens expect ${_stability}/near_wall_ca4_soft_area/metrics.csv 0
+  time=2.5:1e-12 min_stiffness=-0.85:0.2)
+
 # Bending: case 3's neo-Hookean Ca = 0.05 membrane, no prestress, with a bending modulus
 # E_b = 0.01, to t = 10 (Auto: RKF45 hands over to ROS34PW2 at t = 0.08, where bending and
 # the low Ca hold its stability limit at dt = 0.007). Measured: 122 steps, volume drift at most

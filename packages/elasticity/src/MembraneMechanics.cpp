@@ -1,6 +1,7 @@
 #include "capsula/elasticity/MembraneMechanics.hpp"
 
 #include "capsula/elasticity/EdgeTensionForce.hpp"
+#include "capsula/elasticity/PrincipalStiffness.hpp"
 
 #include <capsula/core/Error.hpp>
 #include <capsula/mesh/ElementGeometry.hpp>
@@ -359,6 +360,18 @@ MostCompressiveTension MembraneMechanics::mostCompressiveTension() const
     }
   }
   return most;
+}
+
+LeastPrincipalStiffness MembraneMechanics::leastPrincipalStiffness() const
+{
+  LeastPrincipalStiffness least{0, stretch_.empty() ? 0.0 : elasticity::leastPrincipalStiffness(*law_, stretch_[0])};
+  for (std::size_t i = 1; i < stretch_.size(); ++i) {
+    const double k = elasticity::leastPrincipalStiffness(*law_, stretch_[i]);
+    if (k < least.stiffness) {
+      least = {static_cast<int>(i), k};
+    }
+  }
+  return least;
 }
 
 Vec3 MembraneMechanics::netForce() const

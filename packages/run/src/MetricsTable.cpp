@@ -79,15 +79,15 @@ std::vector<double> cellValues(const CellSample& s)
 // table (after the wall stress columns): older readers of the leading columns still work.
 const std::vector<std::string>& stabilityMetricNames()
 {
-  static const std::vector<std::string> names{"min_angle_deg", "max_edge_ratio", "min_tension", "wall_gap_per_h",
-                                              "max_distortion"};
+  static const std::vector<std::string> names{"min_angle_deg",  "max_edge_ratio", "min_tension",
+                                              "wall_gap_per_h", "max_distortion", "min_stiffness"};
   return names;
 }
 
 std::vector<double> stabilityValues(const CellSample& s)
 {
-  return {s.stability.minAngleDegrees, s.stability.maxEdgeRatio, s.stability.mostCompressiveTension,
-          s.stability.wallGapPerElementSize, s.stability.maxDistortion};
+  return {s.stability.minAngleDegrees,       s.stability.maxEdgeRatio,  s.stability.mostCompressiveTension,
+          s.stability.wallGapPerElementSize, s.stability.maxDistortion, s.stability.minPrincipalStiffness};
 }
 
 // The adhesion of one cell (adhesion/AdhesionOutputs.hpp), in the order of adhesionValues;

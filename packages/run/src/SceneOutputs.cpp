@@ -146,6 +146,7 @@ std::string SceneOutputs::recordSamples(double t, const std::vector<CellSample>&
     smallestAngle_ = std::min(smallestAngle_, s.stability.minAngleDegrees);
     largestEdgeRatio_ = std::max(largestEdgeRatio_, s.stability.maxEdgeRatio);
     mostCompressiveTension_ = std::min(mostCompressiveTension_, s.stability.mostCompressiveTension);
+    leastPrincipalStiffness_ = std::min(leastPrincipalStiffness_, s.stability.minPrincipalStiffness);
     smallestWallGap_ = std::min(smallestWallGap_, s.stability.wallGapPerElementSize);
     // The angle is checked at outputs only (an observer): between outputs the integrator's
     // own floors (non-finite state, step collapse, a node at the wall) catch a blow-up.
@@ -278,6 +279,7 @@ void SceneOutputs::addResults(io::JsonValue& summary) const
     summary["stability"]["smallest angle (degrees)"] = smallestAngle_;
     summary["stability"]["largest edge ratio"] = largestEdgeRatio_;
     summary["stability"]["most compressive tension"] = mostCompressiveTension_;
+    summary["stability"]["least principal stiffness / G"] = leastPrincipalStiffness_;
     if (description_.wall) { // without a wall the column measures from the plane y = 0
       summary["stability"]["smallest wall gap per element size"] = smallestWallGap_;
     }

@@ -32,6 +32,7 @@ io::JsonValue sampleJson(const CellSample& s, bool wall)
   v["maximum edge ratio"] = s.stability.maxEdgeRatio;
   v["maximum element distortion"] = s.stability.maxDistortion;
   v["most compressive tension"] = s.stability.mostCompressiveTension;
+  v["least principal stiffness / G"] = s.stability.minPrincipalStiffness;
   if (wall) { // measured from the plane y = 0, meaningless without the wall
     v["wall gap per element size"] = s.stability.wallGapPerElementSize;
   }

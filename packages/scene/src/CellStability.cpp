@@ -27,6 +27,7 @@ CellStability measureStability(const mesh::SurfaceMesh& cell, const elasticity::
   s.maxEdgeRatio = quality.maxEdgeRatio;
   s.maxDistortion = quality.maxDistortion;
   s.mostCompressiveTension = membrane.mostCompressiveTension().tension;
+  s.minPrincipalStiffness = membrane.leastPrincipalStiffness().stiffness / membrane.law().shearModulus();
   int lowest = 0;
   for (int i = 1; i < cell.numNodes(); ++i) {
     if (cell.position(i)[1] < cell.position(lowest)[1]) {

@@ -4,6 +4,7 @@
 #include <capsula/elasticity/MembraneLawFactory.hpp>
 #include <capsula/elasticity/MembraneTension.hpp>
 #include <capsula/elasticity/NeoHookeanLaw.hpp>
+#include <capsula/elasticity/PrincipalStiffness.hpp>
 #include <capsula/elasticity/SkalakLaw.hpp>
 
 #include <gtest/gtest.h>
@@ -99,6 +100,70 @@ TEST(MembraneLaw, PrincipalTensionsAreTheStretchDerivativesOfTheEnergy)
         EXPECT_NEAR(T.major, std::max(t1, t2), 2e-8 * G) << law->name() << " " << l1 << " " << l2;
         EXPECT_NEAR(T.minor, std::min(t1, t2), 2e-8 * G) << law->name() << " " << l1 << " " << l2;
       }
+    }
+  }
+}
+
+TEST(MembraneLaw, PrincipalStiffnessIsTheSecondStretchDerivativeOfTheEnergy)
+{
+  // k_1 = d2w/dlambda1^2 at fixed lambda2, for both laws and for Skalak with the small C of
+  // the thesis's soft cells, on the grid of stretches both ways round.
+  const NeoHookeanLaw neo(G);
+  const SkalakLaw skalak(G, C);
+  const SkalakLaw soft(G, 0.5);
+  const double h = 1e-4;
+  for (const MembraneLaw* law : std::vector<const MembraneLaw*>{&neo, &skalak, &soft}) {
+    for (double l1 : stretches) {
+      for (double l2 : stretches) {
+        const StrainInvariants I = strainInvariants({l1, l2});
+        const double k =
+            principalStiffness(l1, l2, law->energyDerivatives(I.I1, I.I2), law->energySecondDerivatives(I.I1, I.I2));
+        const double fd = (energyInStretches(*law, l1 + h, l2) - 2.0 * energyInStretches(*law, l1, l2) +
+                           energyInStretches(*law, l1 - h, l2)) /
+                          (h * h);
+        // Truncation h^2 w/12 <= 2e-7 G (w <= 246 G on this grid); round-off
+        // 4 eps w / h^2 <= 1.3e-5 G where w is largest (145 G, at k = 481 G). A wrong
+        // factor in any of the four terms is O(G).
+        EXPECT_NEAR(k, fd, 2e-5 * std::max(G, std::abs(k))) << law->name() << " " << l1 << " " << l2;
+      }
+    }
+  }
+}
+
+TEST(MembraneLaw, SkalakSoftensInCompressionAndNeoHookeanDoesNot)
+{
+  // Skalak: k_1 = G [3 lambda1^2 (1 + C lambda2^4) - (1 + C lambda2^2)], zero at
+  // lambda1^2 = (1 + C lambda2^2) / (3 (1 + C lambda2^4)): 1/sqrt(3) at lambda2 = 1 for every C.
+  for (double c : {0.0, 0.5, 2.5, 10.0}) {
+    const SkalakLaw law(G, c);
+    for (double l2 : {0.8, 1.0, 1.3}) {
+      const double limit = std::sqrt((1.0 + c * l2 * l2) / (3.0 * (1.0 + c * std::pow(l2, 4.0))));
+      if (l2 == 1.0) {
+        EXPECT_NEAR(limit, 1.0 / std::sqrt(3.0), 1e-15);
+      }
+      // 1% either side of the limit the sign flips (k there is -+0.02 (1 + C lambda2^2) G,
+      // far above round-off); the least of the two directions sees it.
+      EXPECT_LT(leastPrincipalStiffness(law, {l2, 0.99 * limit}), 0.0) << "C = " << c << " lambda2 = " << l2;
+      const StrainInvariants below = strainInvariants({l2, 0.99 * limit});
+      const StrainInvariants above = strainInvariants({l2, 1.01 * limit});
+      EXPECT_LT(principalStiffness(0.99 * limit, l2, law.energyDerivatives(below.I1, below.I2),
+                                   law.energySecondDerivatives(below.I1, below.I2)),
+                0.0);
+      EXPECT_GT(principalStiffness(1.01 * limit, l2, law.energyDerivatives(above.I1, above.I2),
+                                   law.energySecondDerivatives(above.I1, above.I2)),
+                0.0);
+    }
+    // At rest k = G [3 (1 + C) - (1 + C)] = 2 G (1 + C) in both directions.
+    EXPECT_NEAR(leastPrincipalStiffness(law, {1.0, 1.0}), 2.0 * G * (1.0 + c), 1e-14 * G * (1.0 + c));
+  }
+  // Neo-Hookean: k_1 = G (1 + 3 / (lambda1^4 lambda2^2)) > G at every stretch.
+  const NeoHookeanLaw neo(G);
+  for (double l1 : {0.2, 0.577, 1.0, 2.0}) {
+    for (double l2 : {0.5, 1.0, 2.0}) {
+      const StrainInvariants I = strainInvariants({l1, l2});
+      const double k =
+          principalStiffness(l1, l2, neo.energyDerivatives(I.I1, I.I2), neo.energySecondDerivatives(I.I1, I.I2));
+      EXPECT_NEAR(k, G * (1.0 + 3.0 / (std::pow(l1, 4.0) * l2 * l2)), 1e-12 * k) << l1 << " " << l2;
     }
   }
 }

@@ -106,6 +106,26 @@ TEST(MembraneSphere, UniformDilationGivesTheClosedFormIsotropicTension)
   std::printf("  largest deviation from the closed form: %.2e G\n", worst / G);
 }
 
+TEST(MembraneSphere, UniformCompressionGivesTheClosedFormPrincipalStiffness)
+{
+  // lambda1 = lambda2 = s at every node. Skalak: k = G [3 s^2 (1 + C s^4) - (1 + C s^2)],
+  // negative (softening) at s = 0.5 (-0.758 G for C = 2.5); neo-Hookean: G (1 + 3 s^-6).
+  const SurfaceMesh mesh = capsula::mesh::makeSphere(2, 1.0);
+  for (double s : {0.5, 1.0, 1.2}) {
+    const auto current = mapNodes(mesh.positions(), [s](const Vec3& X) -> Vec3 { return s * X; });
+    for (const auto& law : laws()) {
+      MembraneMechanics m(mesh, mesh.positions(), law);
+      m.evaluate(current.data());
+      const double expected = law->name() == "NeoHookean"
+                                  ? G * (1.0 + 3.0 * std::pow(s, -6.0))
+                                  : G * (3.0 * s * s * (1.0 + C * std::pow(s, 4.0)) - (1.0 + C * s * s));
+      // The stretches are exact to round-off (the mapped mesh is the scaled reference);
+      // k is at most 193 G (neo-Hookean at s = 0.5), so round-off is below 1e-12 G.
+      EXPECT_NEAR(m.leastPrincipalStiffness().stiffness, expected, 1e-10 * G) << law->name() << " s " << s;
+    }
+  }
+}
+
 TEST(MembranePrestress, ReferenceIsTheInitialShapeShrunkAndTensionIsIsotropic)
 {
   const double alpha = 0.025; // thesis Section 3.12.2: 2.5%

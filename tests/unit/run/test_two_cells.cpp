@@ -136,10 +136,11 @@ TEST_F(TwoCellsTest, MetricsHaveAColumnPerCellAndThePairColumns)
                              "max_edge_ratio_1",
                              "min_tension_0",
                              "wall_gap_per_h_1",
-                             "max_distortion_1"}) {
+                             "max_distortion_1",
+                             "min_stiffness_0"}) {
     EXPECT_EQ(std::count(t.columns.begin(), t.columns.end(), column), 1) << column;
   }
-  EXPECT_EQ(t.columns.size(), 3u + 2u * 27u + 1u + 9u + 2u * 5u + 1u);
+  EXPECT_EQ(t.columns.size(), 3u + 2u * 27u + 1u + 9u + 2u * 6u + 1u);
   EXPECT_EQ(t.columns.back(), "gap_per_h_0_1"); // the stability diagnostics come last
   // Separation and gap at t = 0: centres 2.5 apart; the level-1 icosphere has nodes on the
   // z axis, so the gap of the discrete surfaces is exactly the spheres' 0.5.

@@ -95,6 +95,13 @@ struct MostCompressiveTension {
   double tension;
 };
 
+/// The node where the law's smallest principal stiffness d2w/dlambda_i^2 sits, and its value
+/// (PrincipalStiffness.hpp; negative: the law softens there as it is compressed further).
+struct LeastPrincipalStiffness {
+  int node;
+  double stiffness;
+};
+
 class MembraneMechanics {
 public:
   /// `mesh` gives the topology (it must outlive this object; its positions are not
@@ -128,6 +135,8 @@ public:
   const std::vector<Vec3>& nodeNormals() const { return normal_; } ///< current, area-averaged
   /// The smallest principal tension over the nodes (negative: compression, buckling).
   MostCompressiveTension mostCompressiveTension() const;
+  /// The smallest principal stiffness of the law over the nodes, at their stretches.
+  LeastPrincipalStiffness leastPrincipalStiffness() const;
 
   // --- per element (after evaluate) -----------------------------------------
   const std::vector<double>& elementAreas() const { return area_; }       ///< A_m, current

@@ -99,6 +99,7 @@ private:
   double smallestAngle_ = HUGE_VAL; // extremes of the stability diagnostics over
   double largestEdgeRatio_ = 1.0;   // the outputs of this process
   double mostCompressiveTension_ = HUGE_VAL;
+  double leastPrincipalStiffness_ = HUGE_VAL;
   double smallestWallGap_ = HUGE_VAL;
   std::optional<ElevatedStressAreas> lastWallAreas_;
   std::optional<OutsideRangeAreas> lastOutsideIsolated_;

@@ -7,7 +7,7 @@
 //                  a column NAME_c for every metric and cell (x_c_0, x_c_1, ...), then
 //                  the pair metrics of every pair i < j (PairMetrics.hpp: dx_i_j, ...,
 //                  gap_i_j); last, the stability diagnostics of every cell (CellStability.hpp:
-//                  min_angle_deg, max_edge_ratio, min_tension, wall_gap_per_h; with N > 1
+//                  min_angle_deg, ..., max_distortion, min_stiffness; with N > 1
 //                  cells suffixed _c, then gap_per_h_i_j of every pair); rewritten
 //                  atomically at every output
 //   probes.csv     fluid velocity at 'Output/Flow probes', only if some are given

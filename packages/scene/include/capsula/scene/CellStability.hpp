@@ -16,8 +16,8 @@ struct CellStability {
   double maxEdgeRatio = 1.0;
   /// The smallest principal tension over the nodes (eq 3.30). Negative: the membrane is
   /// compressed there and a thin shell would buckle (thesis Section 3.7: below Ca ~ 0.3
-  /// without prestress, Lac et al. 2004); the model has no bending stiffness to stop the
-  /// wrinkles that follow.
+  /// without prestress, Lac et al. 2004); without a bending modulus nothing stops the
+  /// wrinkles that follow at the grid scale.
   double mostCompressiveTension = 0.0;
   /// The height of the lowest node above the plane y = 0 (the wall, where there is one)
   /// divided by the local element size: the longest vertex-to-vertex edge of the elements
@@ -30,6 +30,12 @@ struct CellStability {
   /// the middle, max |alpha - 1/2| (eq 3.17; 0 on the icosphere, 1/2 when an edge
   /// collapses onto its midside node). Tank-treading carries midside nodes along the edges.
   double maxDistortion = 0.0;
+  /// The smallest principal stiffness d2w/dlambda_i^2 of the membrane law over the nodes, in
+  /// units of G (elasticity/PrincipalStiffness.hpp; 2 (1 + C) for Skalak and 4 for
+  /// neo-Hookean at rest). Negative: the law softens there under further compression, and
+  /// the compressed material crowds into the narrowest strip the mesh allows, the element
+  /// (Skalak below a principal stretch of 0.58 at the other stretch 1, for every C).
+  double minPrincipalStiffness = 0.0;
 };
 
 /// The diagnostics of `cell` (at its current positions) with `membrane` evaluated there.
