@@ -44,23 +44,31 @@ REGIMES = {"firm adhesion": ("s", "tab:red"), "rolling": ("o", "tab:green"), "no
 
 SHEAR_RATE = 100.0   # 1 / s, for the top axis of the state diagram
 
-# A published molecule placed on the diagram: E-selectin - sialyl Lewis x, whose k_r0 and r_0
-# Tees, Waugh & Hammer (Biophys J 80:668, 2001) find "in the range required for rolling" by
-# Adhesive Dynamics. At SHEAR_RATE, for a cell of radius RADIUS in a medium of viscosity MU,
-# it sits at k_off0 / k = k_r0 / SHEAR_RATE and at the gamma / a whose Bell force, with the
-# runs' k_B T, equals the molecule's k_B T / r_0 in units of mu k a^2.
-E_SELECTIN = dict(off_rate=0.82, r0=0.034e-9)   # 1 / s, m
+# Published molecules that mediate rolling, placed on the diagram by their measured Bell
+# constants (unstressed off-rate k_r0 in 1/s, reactive compliance r_0 in m):
+#   E-selectin - sialyl Lewis x, Tees, Waugh & Hammer (Biophys J 80:668, 2001), values they
+#     find "in the range required for rolling" by Adhesive Dynamics;
+#   L-selectin - PSGL-1 / sialyl Lewis x, Evans, Leung, Hammer & Simon (PNAS 98:3784, 2001),
+#     the outer of its two barriers, which governs below ~40 pN (the inner one, 0.06 nm and
+#     100/s, only above: a bond here carries ~1 pN).
+# At SHEAR_RATE, for a cell of radius RADIUS in a medium of viscosity MU, a molecule sits at
+# k_off0 / k = k_r0 / SHEAR_RATE and at the gamma / a whose Bell force, with the runs' k_B T,
+# equals the molecule's k_B T / r_0 in units of mu k a^2.
+PUBLISHED_MOLECULES = [
+    dict(label="E-selectin (Tees et al. 2001)", off_rate=0.82, r0=0.034e-9, marker="*", size=260),
+    dict(label="L-selectin (Evans et al. 2001)", off_rate=3.0, r0=0.4e-9, marker="D", size=110),
+]
 RADIUS = 4e-6        # m, a leukocyte
 MU = 1e-3            # Pa s
 THERMAL_ENERGY = 4.1e-21   # J, k_B T at room temperature
 
 
-def published_point(thermal_flow_units):
-    """(k_off0 / k, gamma / a) of E_SELECTIN for runs whose k_B T is `thermal_flow_units`
+def published_point(molecule, thermal_flow_units):
+    """(k_off0 / k, gamma / a) of `molecule` for runs whose k_B T is `thermal_flow_units`
     mu k a^3."""
     force_scale = MU * SHEAR_RATE * RADIUS ** 2
-    bell_force = THERMAL_ENERGY / E_SELECTIN["r0"] / force_scale
-    return E_SELECTIN["off_rate"] / SHEAR_RATE, thermal_flow_units / bell_force
+    bell_force = THERMAL_ENERGY / molecule["r0"] / force_scale
+    return molecule["off_rate"] / SHEAR_RATE, thermal_flow_units / bell_force
 
 
 def classify(velocity, free_velocity, bonds_at_end):
@@ -149,10 +157,10 @@ def state_diagram(rows, out, plt):
     for r in grid:
         ax.annotate(f"{r['ratio']:.3f}", (r["off_rate"], r["compliance"]), textcoords="offset points",
                     xytext=(7, 5), fontsize=7)
-    if grid:
-        off_rate, compliance = published_point(grid[0]["thermal"] / stiffest)
-        ax.scatter([off_rate], [compliance], marker="*", s=260, facecolors="none", edgecolors="black",
-                   label="E-selectin: rolling in\nAdhesive Dynamics\n(Tees et al. 2001)")
+    for molecule in PUBLISHED_MOLECULES if grid else []:
+        off_rate, compliance = published_point(molecule, grid[0]["thermal"] / stiffest)
+        ax.scatter([off_rate], [compliance], marker=molecule["marker"], s=molecule["size"], facecolors="none",
+                   edgecolors="black", label=molecule["label"].replace(" (", "\n("))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("unstressed off-rate k_off0 / k")
@@ -160,7 +168,7 @@ def state_diagram(rows, out, plt):
     top = ax.secondary_xaxis("top", functions=(lambda k: k * SHEAR_RATE, lambda k: k / SHEAR_RATE))
     top.set_xlabel("k_off0 (1/s) at k = 100/s")
     ax.set_title(f"near-rigid cell (Ca = {stiffest:g}, level {grid[0]['level'] if grid else '?'}); "
-                 "V / V_free beside each run", fontsize=8)
+                 "V / V_free beside each run;\nhollow: rolling molecules at k = 100/s, a = 4 um", fontsize=8)
     ax.margins(0.15)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return co.save_figure(fig, out, "cell3d_adhesion_state_diagram.png")

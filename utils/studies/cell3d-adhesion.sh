@@ -44,15 +44,18 @@ OFF_RATES=(0.01 0.1 1 10)          # k_off0 / k
 # per bond under a firmly held cell (its ~180 bonds share ~120 mu k a^2); below 3e-4 gamma
 # changes nothing (1e-4 gives the same bonds as 3e-4 to t = 5).
 COMPLIANCES=(3e-4 3e-3 1e-2 3e-2)
-# One published molecule on the same cell: E-selectin - sialyl Lewis x, k_r0 = 0.82 / s and
-# r_0 = 0.034 nm, values Tees, Waugh & Hammer (Biophys J 80:668, 2001) find "in the range
-# required for rolling" by Adhesive Dynamics. Placed at a shear rate k = 100 / s, a = 4 um,
-# mu = 1 mPa s (mu k a^2 = 1.6 pN) with k_B T = 4.1 pN nm: k_off0 = 0.0082 k, and the gamma
-# that gives this study's k_B T (0.0133 mu k a^3) the molecule's Bell force k_B T / r_0 =
-# 121 pN = 75.4 mu k a^2, gamma = 0.0133 / 75.4 a = 1.77e-4 a
-# (utils/plotting/cell3d_adhesion.py marks the same point from the same numbers).
-E_SELECTIN_OFF_RATE=0.0082
-E_SELECTIN_COMPLIANCE=1.77e-4
+# Two published molecules that mediate rolling, on the same cell, placed at a shear rate
+# k = 100 / s, a = 4 um, mu = 1 mPa s (mu k a^2 = 1.6 pN) with k_B T = 4.1 pN nm: k_off0 =
+# k_r0 / k, and the gamma that gives this study's k_B T (0.0133 mu k a^3) the molecule's Bell
+# force k_B T / r_0 (utils/plotting/cell3d_adhesion.py marks the same points from the same
+# numbers).
+#   E-selectin - sialyl Lewis x (Tees, Waugh & Hammer, Biophys J 80:668, 2001; "in the range
+#   required for rolling" by Adhesive Dynamics): k_r0 = 0.82 / s, r_0 = 0.034 nm, a Bell
+#   force of 121 pN = 75.4 mu k a^2: k_off0 = 0.0082 k, gamma = 0.0133 / 75.4 a = 1.77e-4 a.
+#   L-selectin - PSGL-1 (Evans, Leung, Hammer & Simon, PNAS 98:3784, 2001), the outer barrier,
+#   which governs below ~40 pN: k_r0 = 3 / s, r_0 = 0.4 nm, 10.25 pN = 6.41 mu k a^2:
+#   k_off0 = 0.03 k, gamma = 2.08e-3 a.
+PUBLISHED_MOLECULES=("e-selectin 0.0082 1.77e-4" "l-selectin 0.03 2.08e-3")
 ON_RATE=1                          # k_on0 / (k a^2), as in the deck
 ROLLING_OFF_RATE=1                 # the rolling series' molecule (a rolling point of the grid)
 ROLLING_COMPLIANCE=3e-4
@@ -96,10 +99,13 @@ study_runs() {
         --set "Adhesion/Off-rate=$off" --set "Adhesion/Reactive compliance=$gamma"
     done
   done
-  if [[ "$mode" != quick ]]; then
-    queue_run "state/e-selectin" "$DECK" "${settings[@]}" "${rigid[@]}" \
-      --set "Adhesion/Off-rate=$E_SELECTIN_OFF_RATE" --set "Adhesion/Reactive compliance=$E_SELECTIN_COMPLIANCE"
-  fi
+  local molecule name
+  for molecule in "${PUBLISHED_MOLECULES[@]}"; do
+    [[ "$mode" == quick ]] && break
+    read -r name off gamma <<< "$molecule"
+    queue_run "state/$name" "$DECK" "${settings[@]}" "${rigid[@]}" \
+      --set "Adhesion/Off-rate=$off" --set "Adhesion/Reactive compliance=$gamma"
+  done
   for ca in "${cas[@]}"; do
     mapfile -t soft < <(molecules "$ca")
     queue_run "rolling/Ca$ca" "$DECK" "${settings[@]}" "${soft[@]}" \
