@@ -262,6 +262,23 @@ void SceneOutputs::load(const io::Checkpoint& checkpoint, const std::string& sou
   outputsWritten_ = outputs == checkpoint.integers.end() ? 0 : outputs->second;
 }
 
+std::string SceneOutputs::softeningNote() const
+{
+  std::string softened;
+  for (std::size_t c = 0; c < lastSamples_.size(); ++c) {
+    const double stiffness = lastSamples_[c].stability.minPrincipalStiffness;
+    if (stiffness < 0.0) {
+      softened += core::message(softened.empty() ? "" : "; ", "the membrane law of '", description_.cells[c].path,
+                                "' had softened under compression (least principal stiffness ", stiffness, " G)");
+    }
+  }
+  if (softened.empty()) {
+    return "";
+  }
+  return core::message(" [at the last output, t = ", lastTime_, ", ", softened,
+                       ": compressed material crowds at the element scale, docs/stability.md, min_stiffness]");
+}
+
 void SceneOutputs::addResults(io::JsonValue& summary) const
 {
   const scene::Scene& scene = live_.scene();

@@ -342,6 +342,12 @@ SceneRunResult SceneRunner::execute()
     // The start is observed (never steady: the test needs t > 0); the ETA counts from after it.
     simulatedStart_ = state_.time;
     integrator_.integrate(state_, schedule, {&live_, &tether_, &outputs_, this, &watch_});
+  } catch (const core::NumericalError& e) {
+    // The same, with what the last output says of a softened membrane law (a fold or step
+    // collapse that follows has that cause).
+    const std::string message = e.what() + outputs_.softeningNote();
+    files_.writeSummaryAfterFailure([&] { return summary("failed", message); });
+    throw core::NumericalError(message);
   } catch (const std::exception& e) {
     // Record the failure next to the last good outputs, then let the app report it.
     files_.writeSummaryAfterFailure([&] { return summary("failed", e.what()); });

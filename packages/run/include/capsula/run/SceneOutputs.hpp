@@ -70,6 +70,10 @@ public:
   double lastD12() const { return lastSamples_.empty() ? 0.0 : lastSamples_.front().shape.deformation.D12; }
   /// The scene's entries of summary.json.
   void addResults(io::JsonValue& summary) const;
+  /// What a failure message should add when, at the last output, the membrane law of some
+  /// cell had softened under compression (CellStability::minPrincipalStiffness < 0): a fold
+  /// or a step collapse that follows has that cause (docs/stability.md). Empty otherwise.
+  std::string softeningNote() const;
 
   void save(io::Checkpoint& checkpoint) const override;
   void load(const io::Checkpoint& checkpoint, const std::string& source) override;
