@@ -205,22 +205,37 @@ TEST(VelocityJacobian, PreconditionedStageSolveConverges)
   EXPECT_LT(5 * iterations[0], iterations[1]) << iterations[0] << " vs " << iterations[1];
 }
 
+namespace {
+
+/// J~ v of the scene of `deck` linearised at its start, v = direction(), with its first cell
+/// at the start positions (where the constraints' integrals are taken).
+struct StartProduct {
+  capsula::mesh::SurfaceMesh cell;
+  std::vector<double> Jv;
+};
+StartProduct productAtStart(const Teuchos::ParameterList& deck)
+{
+  auto s = makeScene(deck);
+  scene::VelocityJacobian jacobian(s, deck, kernels());
+  const std::vector<double> x = s.initialPositions();
+  jacobian.linearise(0.0, x);
+  const std::vector<double> v = direction(x.size());
+  StartProduct product{s.cell(0), std::vector<double>(x.size())};
+  jacobian.apply(v.data(), product.Jv.data());
+  product.cell.setPositions(x.data());
+  return product;
+}
+
+} // namespace
+
 // The fixed-height constraint is part of J~: every J~ v leaves the centroid's height
 // unchanged (its rise rate is zero to round-off).
 TEST(VelocityJacobian, RespectsTheFixedHeightConstraint)
 {
   auto deck = smallDeck(
       1, 1.6, true, [](Teuchos::ParameterList& d) { d.sublist("Cells").sublist("Cell 0").set("Fixed height", true); });
-  auto s = makeScene(*deck);
-  scene::VelocityJacobian jacobian(s, *deck, kernels());
-  const std::vector<double> x = s.initialPositions();
-  jacobian.linearise(0.0, x);
-  const std::vector<double> v = direction(x.size());
-  std::vector<double> Jv(x.size());
-  jacobian.apply(v.data(), Jv.data());
-  capsula::mesh::SurfaceMesh cell = s.cell(0);
-  cell.setPositions(x.data());
-  EXPECT_LT(std::abs(scene::centroidVelocity(cell, Jv.data())[1]), 1e-12 * maxAbs(Jv));
+  const StartProduct p = productAtStart(*deck);
+  EXPECT_LT(std::abs(scene::centroidVelocity(p.cell, p.Jv.data())[1]), 1e-12 * maxAbs(p.Jv));
 }
 
 // So is the volume constraint: every J~ v carries no net flux through the cell's surface (to
@@ -233,17 +248,9 @@ TEST(VelocityJacobian, RespectsTheVolumeConstraint)
     auto deck = smallDeck(1, 1.6, true, [&](Teuchos::ParameterList& d) {
       d.sublist("Cells").sublist("Cell 0").set("Conserve volume", conserve);
     });
-    auto s = makeScene(*deck);
-    scene::VelocityJacobian jacobian(s, *deck, kernels());
-    const std::vector<double> x = s.initialPositions();
-    jacobian.linearise(0.0, x);
-    const std::vector<double> v = direction(x.size());
-    std::vector<double> Jv(x.size());
-    jacobian.apply(v.data(), Jv.data());
-    capsula::mesh::SurfaceMesh cell = s.cell(0);
-    cell.setPositions(x.data());
-    flux[conserve ? 1 : 0] = scene::normalFlux(cell, Jv.data());
-    scale = std::max(scale, maxAbs(Jv));
+    const StartProduct p = productAtStart(*deck);
+    flux[conserve ? 1 : 0] = scene::normalFlux(p.cell, p.Jv.data());
+    scale = std::max(scale, maxAbs(p.Jv));
   }
   EXPECT_LT(std::abs(flux[1]), 1e-12 * scale);
   EXPECT_GT(std::abs(flux[0]), 1e-6 * scale) << "the direction carries no flux: the check would not discriminate";
