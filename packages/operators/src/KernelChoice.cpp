@@ -13,12 +13,63 @@ namespace {
 
 const char* const automaticChoice = "Auto";
 
-std::string describeDomain(FluidDomain domain)
+FluidDomain fluidOf(const domain::Domain& domain)
 {
-  return domain == FluidDomain::AboveWall ? "the fluid above the wall y = 0" : "an unbounded fluid";
+  return domain.hasUpperWall()   ? FluidDomain::Channel
+         : domain.hasLowerWall() ? FluidDomain::AboveWall
+                                 : FluidDomain::Unbounded;
+}
+
+std::string describeKernelDomain(const KernelInfo& info)
+{
+  const std::string walls = info.domain == FluidDomain::Channel     ? "a channel between two walls"
+                            : info.domain == FluidDomain::AboveWall ? "the fluid above the wall y = 0"
+                                                                    : "an unbounded fluid";
+  return walls + (info.periodic ? ", periodic along the walls" : " without periodic directions");
+}
+
+// The keys that describe the deck's domain, with their values ('Wall/Enabled' always, the
+// others where they differ from their default 0).
+std::string domainKeys(const domain::Domain& domain)
+{
+  const auto& shape = domain.shape();
+  std::string keys = core::message("'Wall/Enabled' = ", shape.lowerWall ? "true" : "false");
+  if (shape.channelHeight > 0.0) {
+    keys += core::message(", 'Wall/Channel height' = ", shape.channelHeight);
+  }
+  if (shape.periodX > 0.0) {
+    keys += core::message(", 'Domain/Periodic length x' = ", shape.periodX);
+  }
+  if (shape.periodZ > 0.0) {
+    keys += core::message(", 'Domain/Periodic length z' = ", shape.periodZ);
+  }
+  return keys;
+}
+
+std::string automaticKernel(const std::map<std::string, KernelInfo>& kernels, const domain::Domain& domain)
+{
+  if (!domain.hasUpperWall() && !domain.isPeriodic()) {
+    return domain.hasLowerWall() ? "Wall" : "FreeSpace";
+  }
+  std::string listed;
+  for (const auto& [name, info] : kernels) {
+    if (servesDomain(info, domain)) {
+      return name;
+    }
+    listed += core::message(listed.empty() ? "" : "; ", name, ": ", describeKernelDomain(info));
+  }
+  throw core::InputError(core::message("No registered Green's function serves ", domain.describe(), " (",
+                                       domainKeys(domain), "). The kernels of this program serve: ", listed,
+                                       ". Change the domain's keys, or run a program whose operator libraries "
+                                       "register a kernel for this domain ('Operator/Kernel', docs/domains.md)."));
 }
 
 } // namespace
+
+bool servesDomain(const KernelInfo& info, const domain::Domain& domain)
+{
+  return info.domain == fluidOf(domain) && info.periodic == domain.isPeriodic();
+}
 
 void declareKernelParameters(Teuchos::ParameterList& operatorList, const std::map<std::string, KernelInfo>& kernels)
 {
@@ -44,23 +95,21 @@ void declareKernelParameters(Teuchos::ParameterList& operatorList, const std::ma
 }
 
 KernelChoice readKernelChoice(const Teuchos::ParameterList& operatorList,
-                              const std::map<std::string, KernelInfo>& kernels, bool wall)
+                              const std::map<std::string, KernelInfo>& kernels, const domain::Domain& domain)
 {
   const std::string requested =
       operatorList.isParameter("Kernel") ? operatorList.get<std::string>("Kernel") : automaticChoice;
   KernelChoice choice;
-  choice.name = requested != automaticChoice ? requested : wall ? "Wall" : "FreeSpace";
+  choice.name = requested != automaticChoice ? requested : automaticKernel(kernels, domain);
   std::vector<std::string> names;
   for (const auto& entry : kernels) {
     names.push_back(entry.first);
   }
   requireRegistered("Green's function kernel", choice.name, names);
   const KernelInfo& info = kernels.at(choice.name);
-  const FluidDomain deckDomain = wall ? FluidDomain::AboveWall : FluidDomain::Unbounded;
-  core::require<core::InputError>(info.domain == deckDomain, "'Operator/Kernel' = ", choice.name, " is for ",
-                                  describeDomain(info.domain), " but 'Wall/Enabled' = ", wall ? "true" : "false",
-                                  " describes ", describeDomain(deckDomain),
-                                  ": change one of the two, or set 'Operator/Kernel' = Auto.");
+  core::require<core::InputError>(servesDomain(info, domain), "'Operator/Kernel' = ", choice.name, " is for ",
+                                  describeKernelDomain(info), " but the deck (", domainKeys(domain), ") describes ",
+                                  domain.describe(), ": change one of the two, or set 'Operator/Kernel' = Auto.");
   if (!info.validParameters.is_null()) {
     choice.parameters = *info.validParameters;
     if (operatorList.isSublist(choice.name)) {
@@ -68,6 +117,12 @@ KernelChoice readKernelChoice(const Teuchos::ParameterList& operatorList,
     }
   }
   return choice;
+}
+
+KernelChoice readKernelChoice(const Teuchos::ParameterList& operatorList,
+                              const std::map<std::string, KernelInfo>& kernels, bool wall)
+{
+  return readKernelChoice(operatorList, kernels, wall ? domain::Domain::aboveWall() : domain::Domain::unbounded());
 }
 
 } // namespace capsula::operators

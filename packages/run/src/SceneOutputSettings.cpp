@@ -91,8 +91,10 @@ SceneOutputSettings readSceneOutputSettings(const Teuchos::ParameterList& deck, 
                                   " numbers; give whole points, three coordinates each.");
   for (Teuchos::Array<double>::size_type k = 0; k < probes.size(); k += 3) {
     out.flowProbes.emplace_back(probes[k], probes[k + 1], probes[k + 2]);
-    core::require<core::InputError>(!scene.wall || probes[k + 1] > 0.0, "'Output/Flow probes' point ", k / 3,
-                                    " lies at y = ", probes[k + 1], ", not in the fluid above the wall y = 0.");
+    const double point[3] = {probes[k], probes[k + 1], probes[k + 2]};
+    core::require<core::InputError>(scene.domain.inFluid(point), "'Output/Flow probes' point ", k / 3,
+                                    " lies at y = ", probes[k + 1], ", not in the fluid of ", scene.domain.describe(),
+                                    ".");
   }
   out.minimumAngle = output.sublist("Stability").get<double>("Minimum angle");
   core::require<core::InputError>(!scene.meshRegularisation.enabled ||

@@ -1,6 +1,7 @@
 #include "capsula/scene/Scene.hpp"
 
 #include "capsula/scene/CellPlacement.hpp"
+#include "capsula/scene/NodesAboveWall.hpp"
 
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
@@ -52,16 +53,18 @@ std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMes
   return line.str();
 }
 
-// The cells' surfaces as the deck describes them (the state at t = 0), clear of the wall.
+// The cells' surfaces as the deck describes them (the state at t = 0), with room in the
+// domain and clear of its walls.
 std::vector<mesh::SurfaceMesh> initialSurfaces(const SceneDescription& description)
 {
   std::vector<mesh::SurfaceMesh> cells;
   cells.reserve(description.cells.size());
   for (const auto& cell : description.cells) {
     cells.push_back(mesh::buildCellSurface(cell.surface, cell.path));
-    if (description.wall) {
-      requireWallGap(cells.back(), cell.path, description.minimumWallGap);
-    }
+    // A domain too small for the cell first: no placement could then keep the gaps.
+    requireRoomInDomain(cells.back(), cell.path, description.domain, description.minimumWallGap,
+                        description.minimumGap);
+    requireWallGaps(cells.back(), cell.path, description.domain, description.minimumWallGap);
   }
   return cells;
 }
@@ -100,13 +103,13 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   std::vector<std::string> paths;
   for (int c = 0; c < n; ++c) {
     const auto& path = description_.cells[static_cast<std::size_t>(c)].path;
-    if (description_.wall) {
-      requireAboveWall(cells_[static_cast<std::size_t>(c)], path);
-    }
+    requireInFluid(cells_[static_cast<std::size_t>(c)], path, description_.domain);
+    requireRoomInDomain(cells_[static_cast<std::size_t>(c)], path, description_.domain, description_.minimumWallGap,
+                        description_.minimumGap);
     placed.push_back(&cells_[static_cast<std::size_t>(c)]);
     paths.push_back(path);
   }
-  requireNoOverlap(placed, paths, description_.minimumGap);
+  requireNoOverlap(placed, paths, description_.minimumGap, description_.domain);
 
   // Membranes.
   const auto discretisation = operators::readDiscretisationParameters(deck.sublist("Discretisation"));
@@ -145,7 +148,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   // Decks of the scene tests carry no "Operator" list: Auto, as in a validated deck.
   const Teuchos::ParameterList noOperatorList;
   kernel_ = operators::readKernelChoice(deck.isSublist("Operator") ? deck.sublist("Operator") : noOperatorList,
-                                        kernels.infos(), description_.wall);
+                                        kernels.infos(), description_.domain);
   const std::string& kernel = kernel_.name;
   solver_ = kernels.create(kernel, comm_, std::move(surfaces), discretisation, solverParameters, kernel_.parameters);
   if (solverParameters.warmStart) {
@@ -261,11 +264,12 @@ void Scene::setPositions(double t, const std::vector<double>& positions)
                                                  description_.cells[static_cast<std::size_t>(c)].path,
                                                  "' has a non-finite position: ", nonFiniteCause(t)));
       }
-      core::require<core::NumericalError>(
-          !description_.wall || p[1] > 0.0, "At t = ", t, " node ", i, " of '",
-          description_.cells[static_cast<std::size_t>(c)].path, "' reached the wall (y = ", p[1],
-          description_.contact.enabled ? "). The contact repulsion did not hold it: raise 'Contact/Strength'."
-                                       : "). Without 'Contact/Enabled' the model has no contact force.");
+      core::require<core::NumericalError>(description_.domain.inFluid(p), "At t = ", t, " node ", i, " of '",
+                                          description_.cells[static_cast<std::size_t>(c)].path, "' reached ",
+                                          nearestWallName(description_.domain, p), " (y = ", p[1],
+                                          description_.contact.enabled
+                                              ? "). The contact repulsion did not hold it: raise 'Contact/Strength'."
+                                              : "). Without 'Contact/Enabled' the model has no contact force.");
     }
     surface.setPositions(x);
   }

@@ -3,6 +3,7 @@
 #include "capsula/scene/SceneParameters.hpp"
 
 #include <capsula/core/Error.hpp>
+#include <capsula/domain/DomainParameters.hpp>
 
 #include <cmath>
 
@@ -123,7 +124,9 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
   if (flow.isSublist("Shear rate")) {
     scene.shearRate = operators::readShearRate(flow.sublist("Shear rate"), "Flow/Shear rate");
   }
-  scene.wall = deck.sublist("Wall").get<bool>("Enabled");
+  scene.domain = domain::readDomain(deck);
+  scene.flowProfile = domain::readFlowProfile(deck, scene.domain);
+  scene.wall = scene.domain.hasLowerWall();
   scene.minimumWallGap = deck.sublist("Wall").get<double>("Minimum gap");
 
   const auto& cells = deck.sublist("Cells");

@@ -4,6 +4,7 @@
 #include <capsula/adhesion/ContactParameters.hpp>
 #include <capsula/adhesion/TetherParameters.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
+#include <capsula/domain/DomainParameters.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
 #include <capsula/mesh/RedistributionParameters.hpp>
@@ -112,7 +113,9 @@ void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double
 
 void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck, int cellsWhenNoneGiven)
 {
-  auto& flow = core::declareSublist(valid, "Flow", "The undisturbed simple shear u = (k(t) y, 0, 0).");
+  auto& flow = core::declareSublist(valid, "Flow",
+                                    "The undisturbed flow u = (k(t) f(y), 0, 0): simple shear, plane Couette or "
+                                    "plane Poiseuille flow ('Flow/Profile').");
   core::declareReal(flow, "Capillary number", 0.3,
                     "Ca = mu k a / G: shear rate k times external viscosity mu times cell radius a "
                     "over the membrane shear modulus G (eq 3.16).",
@@ -125,13 +128,12 @@ void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::Parame
   operators::declareShearRateParameters(core::declareSublist(
       flow, "Shear rate", "The shear rate k(t) over its mean: steady, pulsatile or a tabulated waveform."));
 
-  auto& wall = core::declareSublist(valid, "Wall", "The plane wall y = 0 below the flow.");
-  core::declareBool(wall, "Enabled", true,
-                    "true: the flow is bounded by the wall y = 0 (Blake's kernel, App. B); false: "
-                    "unbounded shear (free-space kernel).");
+  domain::declareDomainParameters(valid);
+  auto& wall = valid.sublist("Wall");
   core::declareReal(wall, "Minimum gap", 0.025,
                     "Safety distance between a cell and the wall at the start, in cell radii: a "
-                    "new run whose lowest node is no higher is rejected (a restart is not checked "
+                    "new run whose lowest node is no higher (in a channel: whose highest node is no "
+                    "farther below the upper wall) is rejected (a restart is not checked "
                     "again). The cell's image below the wall lies twice as far, so the default "
                     "keeps it as far as 'Cells/Minimum gap' keeps two cells. 0 refuses only a cell "
                     "on or through the wall.",

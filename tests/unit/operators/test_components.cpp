@@ -11,6 +11,7 @@
 #include <capsula/operators/BuiltInKernels.hpp>
 #include <capsula/operators/ContractedKernels.hpp>
 #include <capsula/operators/ElementIntegrals.hpp>
+#include <capsula/operators/KernelChoice.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/operators/PolarRules.hpp>
 #include <capsula/operators/SecondKindOperator.hpp>
@@ -355,6 +356,54 @@ TEST(KernelRegistry, BuiltInsAndUnknownNames)
   EXPECT_THROW(copy.add("Auto", "automatic", solverFactory<FreeSpace3DKernel>()), core::InputError);
   EXPECT_EQ(registry.infos().at("Wall").domain, FluidDomain::AboveWall);
   EXPECT_EQ(registry.infos().at("FreeSpace").domain, FluidDomain::Unbounded);
+}
+
+// The kernel a deck gets in each domain (KernelChoice.hpp): Auto keeps FreeSpace and Wall
+// where they serve, picks a registered kernel that serves a channel or a periodic box, and a
+// domain nobody serves, or a kernel named for another domain, is refused naming the keys.
+// "PeriodicChannel" stands for an operator library's kernel; only its KernelInfo matters here.
+TEST(KernelChoice, EachDomainGetsAKernelThatServesIt)
+{
+  KernelRegistry registry = builtInKernels();
+  const Teuchos::ParameterList automatic;
+  domain::DomainShape periodicChannel;
+  periodicChannel.channelHeight = 8.0;
+  periodicChannel.periodX = 16.0;
+  const domain::Domain channelBox(periodicChannel);
+  EXPECT_EQ(readKernelChoice(automatic, registry.infos(), domain::Domain::aboveWall()).name, "Wall");
+  EXPECT_EQ(readKernelChoice(automatic, registry.infos(), domain::Domain::unbounded()).name, "FreeSpace");
+  const auto refusal = [&](const Teuchos::ParameterList& list, const domain::Domain& d) -> std::string {
+    try {
+      readKernelChoice(list, registry.infos(), d);
+    } catch (const core::InputError& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  const std::string none = refusal(automatic, channelBox);
+  EXPECT_NE(none.find("No registered Green's function serves a channel 0 < y < 8, periodic along x (L_x = 16) "
+                      "('Wall/Enabled' = true, 'Wall/Channel height' = 8, 'Domain/Periodic length x' = 16)"),
+            std::string::npos)
+      << none;
+  registry.add("PeriodicChannel", KernelInfo{"A periodic channel.", FluidDomain::Channel, Teuchos::null, true},
+               solverFactory<FreeSpace3DKernel>());
+  EXPECT_EQ(readKernelChoice(automatic, registry.infos(), channelBox).name, "PeriodicChannel");
+  EXPECT_TRUE(servesDomain(registry.infos().at("PeriodicChannel"), channelBox));
+  EXPECT_FALSE(servesDomain(registry.infos().at("PeriodicChannel"), domain::Domain::channel(8.0)));
+  // The built-in kernels still get the domains they serve with the new one registered.
+  EXPECT_EQ(readKernelChoice(automatic, registry.infos(), domain::Domain::aboveWall()).name, "Wall");
+  Teuchos::ParameterList named;
+  named.set("Kernel", std::string("Wall"));
+  const std::string wallInChannel = refusal(named, channelBox);
+  EXPECT_NE(wallInChannel.find("'Operator/Kernel' = Wall is for the fluid above the wall y = 0 without periodic "
+                               "directions but the deck ('Wall/Enabled' = true, 'Wall/Channel height' = 8, "
+                               "'Domain/Periodic length x' = 16) describes a channel"),
+            std::string::npos)
+      << wallInChannel;
+  named.set("Kernel", std::string("PeriodicChannel"));
+  const std::string periodicAboveWall = refusal(named, domain::Domain::aboveWall());
+  EXPECT_NE(periodicAboveWall.find("is for a channel between two walls, periodic along the walls"), std::string::npos)
+      << periodicAboveWall;
 }
 
 TEST(CellSurfaces, NumbersCellsConsecutivelyAndRejectsBadRatios)

@@ -1,4 +1,5 @@
 #include <capsula/core/Error.hpp>
+#include <capsula/domain/Domain.hpp>
 #include <capsula/mesh/Shapes.hpp>
 #include <capsula/scene/CellPlacement.hpp>
 #include <capsula/scene/SurfaceGap.hpp>
@@ -9,6 +10,9 @@ namespace {
 
 namespace mesh = capsula::mesh;
 namespace scene = capsula::scene;
+namespace domain = capsula::domain;
+
+const domain::Domain aboveWall = domain::Domain::aboveWall();
 
 mesh::SurfaceMesh sphereAt(double x, double y, double z, double radius = 1.0, int level = 2)
 {
@@ -30,9 +34,9 @@ TEST(CellPlacement, WindingNumberIsOneInsideZeroOutside)
 
 TEST(CellPlacement, RejectsACellThatCrossesTheWall)
 {
-  EXPECT_NO_THROW(scene::requireAboveWall(sphereAt(0, 1.2, 0), "Cells/Cell 0"));
+  EXPECT_NO_THROW(scene::requireInFluid(sphereAt(0, 1.2, 0), "Cells/Cell 0", aboveWall));
   try {
-    scene::requireAboveWall(sphereAt(0, 0.9, 0), "Cells/Cell 0");
+    scene::requireInFluid(sphereAt(0, 0.9, 0), "Cells/Cell 0", aboveWall);
     FAIL() << "a sphere of radius 1 at height 0.9 crosses the wall";
   } catch (const capsula::core::InputError& e) {
     const std::string what = e.what();
@@ -40,7 +44,7 @@ TEST(CellPlacement, RejectsACellThatCrossesTheWall)
     EXPECT_NE(what.find("Center"), std::string::npos) << what;
   }
   // Touching (lowest node exactly at y = 0) is not in the fluid either.
-  EXPECT_THROW(scene::requireAboveWall(sphereAt(0, 1.0, 0), "Cells/Cell 1"), capsula::core::InputError);
+  EXPECT_THROW(scene::requireInFluid(sphereAt(0, 1.0, 0), "Cells/Cell 1", aboveWall), capsula::core::InputError);
 }
 
 // 'Wall/Minimum gap' at the start: a lowest node at y = gap is refused, one just above is
@@ -50,7 +54,7 @@ TEST(CellPlacement, WallGapAtTheStart)
 {
   const auto messageFor = [](double height, double gap) -> std::string {
     try {
-      scene::requireWallGap(sphereAt(0, height, 0), "Cells/Cell 0", gap);
+      scene::requireWallGaps(sphereAt(0, height, 0), "Cells/Cell 0", aboveWall, gap);
     } catch (const capsula::core::InputError& e) {
       return e.what();
     }
@@ -137,6 +141,107 @@ TEST(CellPlacement, RejectsTouchingCells)
   EXPECT_NO_THROW(scene::requireNoOverlap({&a, &near}, {"Cells/Cell 0", "Cells/Cell 1"}));
   EXPECT_THROW(scene::requireNoOverlap({&a, &near}, {"Cells/Cell 0", "Cells/Cell 1"}, 0.05), capsula::core::InputError);
   EXPECT_NO_THROW(scene::requireNoOverlap({&a, &apart}, {"Cells/Cell 0", "Cells/Cell 1"}, 0.05));
+}
+
+// The message of the core::InputError `check` throws, or "accepted".
+template <typename Check>
+std::string refusal(Check&& check)
+{
+  try {
+    check();
+  } catch (const capsula::core::InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+// In a channel 0 < y < 4 the upper wall is checked like the lower one: a unit sphere at
+// height 2.9 has its top pole 0.1 below the upper wall (accepted with a gap of 0.05,
+// refused with 0.2, naming the upper wall and both keys), at 3.1 it crosses it.
+TEST(CellPlacement, UpperWallOfAChannel)
+{
+  const auto channel = domain::Domain::channel(4.0);
+  EXPECT_EQ(refusal([&] { scene::requireWallGaps(sphereAt(0, 2.9, 0), "Cells/Cell 0", channel, 0.05); }), "accepted");
+  const std::string close = refusal([&] { scene::requireWallGaps(sphereAt(0, 2.9, 0), "Cells/Cell 0", channel, 0.2); });
+  EXPECT_NE(close.find("'Cells/Cell 0' starts too close to the upper wall: its highest node"), std::string::npos)
+      << close;
+  EXPECT_NE(close.find("'Wall/Minimum gap' = 0.2"), std::string::npos) << close;
+  EXPECT_NE(close.find("Lower the y component"), std::string::npos) << close;
+  EXPECT_NE(close.find("raise 'Wall/Channel height'"), std::string::npos) << close;
+  const std::string through = refusal([&] { scene::requireInFluid(sphereAt(0, 3.1, 0), "Cells/Cell 2", channel); });
+  EXPECT_NE(through.find("'Cells/Cell 2' crosses the upper wall: its highest node"), std::string::npos) << through;
+  EXPECT_NE(through.find("by more than 0.1"), std::string::npos) << through;
+  // The lower wall of the channel is still checked.
+  EXPECT_NE(
+      refusal([&] { scene::requireInFluid(sphereAt(0, 0.9, 0), "Cells/Cell 0", channel); }).find("crosses the wall"),
+      std::string::npos);
+  EXPECT_EQ(refusal([&] { scene::requireInFluid(sphereAt(0, 2.0, 0), "Cells/Cell 0", channel); }), "accepted");
+}
+
+// A channel no taller than the cell plus 'Wall/Minimum gap' on each side is refused naming
+// 'Wall/Channel height', whatever the cell's height in it: the unit sphere is 2 tall, so
+// H = 2.1 fits gaps of 0.025 (2.05 < 2.1) but not of 0.06 (2.12).
+TEST(CellPlacement, ChannelNoTallerThanTheCell)
+{
+  const auto sphere = sphereAt(0, 1.05, 0);
+  EXPECT_EQ(
+      refusal([&] { scene::requireRoomInDomain(sphere, "Cells/Cell 0", domain::Domain::channel(2.1), 0.025, 0.05); }),
+      "accepted");
+  const std::string tight =
+      refusal([&] { scene::requireRoomInDomain(sphere, "Cells/Cell 0", domain::Domain::channel(2.1), 0.06, 0.05); });
+  EXPECT_NE(tight.find("'Wall/Channel height' = 2.1 leaves no room for 'Cells/Cell 0', which is 2 tall"),
+            std::string::npos)
+      << tight;
+}
+
+// A period no longer than the cell plus 'Cells/Minimum gap' makes the cell overlap (or touch)
+// its own image: refused naming the key of that direction.
+TEST(CellPlacement, CellOverlappingItsOwnPeriodicImage)
+{
+  const auto sphere = sphereAt(0.3, 2.0, -0.7);
+  domain::DomainShape shape;
+  shape.periodX = 2.04;
+  shape.periodZ = 5.0;
+  const std::string shortX =
+      refusal([&] { scene::requireRoomInDomain(sphere, "Cells/Cell 3", domain::Domain(shape), 0.025, 0.05); });
+  EXPECT_NE(shortX.find("'Domain/Periodic length x' = 2.04 is too short for 'Cells/Cell 3', which is 2 long along x"),
+            std::string::npos)
+      << shortX;
+  EXPECT_NE(shortX.find("its own periodic image"), std::string::npos) << shortX;
+  shape.periodX = 2.06;
+  EXPECT_EQ(refusal([&] { scene::requireRoomInDomain(sphere, "Cells/Cell 3", domain::Domain(shape), 0.025, 0.05); }),
+            "accepted");
+  shape.periodZ = 1.9;
+  EXPECT_NE(refusal([&] {
+              scene::requireRoomInDomain(sphere, "Cells/Cell 3", domain::Domain(shape), 0.025, 0.05);
+            }).find("'Domain/Periodic length z' = 1.9"),
+            std::string::npos);
+}
+
+// Two cells far apart inside the box can touch across the periodic boundary: with L_x = 6,
+// unit spheres at x = 0.5 and x = 4.47 are 3.97 apart directly but 2.03 through the boundary
+// (a gap of about 0.03 between the surfaces, under 'Cells/Minimum gap' = 0.05), and overlap
+// there when the second is moved to 4.8 (1.7 apart).
+TEST(CellPlacement, CellsTouchingAcrossThePeriodicBoundary)
+{
+  domain::DomainShape shape;
+  shape.periodX = 6.0;
+  const domain::Domain box(shape);
+  const auto first = sphereAt(0.5, 2.0, 0.0);
+  const auto touching = sphereAt(4.47, 2.0, 0.0);
+  const auto overlapping = sphereAt(4.8, 2.0, 0.0);
+  const auto apart = sphereAt(3.5, 2.0, 0.0);
+  const std::vector<std::string> paths{"Cells/Cell 0", "Cells/Cell 1"};
+  // Unbounded, both pairs are far apart.
+  EXPECT_EQ(refusal([&] { scene::requireNoOverlap({&first, &touching}, paths, 0.05); }), "accepted");
+  EXPECT_EQ(refusal([&] { scene::requireNoOverlap({&first, &overlapping}, paths, 0.05); }), "accepted");
+  const std::string touch = refusal([&] { scene::requireNoOverlap({&first, &touching}, paths, 0.05, box); });
+  EXPECT_NE(touch.find("touch at the start"), std::string::npos) << touch;
+  EXPECT_NE(touch.find("across the periodic boundary"), std::string::npos) << touch;
+  const std::string overlap = refusal([&] { scene::requireNoOverlap({&first, &overlapping}, paths, 0.05, box); });
+  EXPECT_NE(overlap.find("overlap at the start"), std::string::npos) << overlap;
+  EXPECT_NE(overlap.find("shifted by (-6, 0, 0)"), std::string::npos) << overlap;
+  EXPECT_EQ(refusal([&] { scene::requireNoOverlap({&first, &apart}, paths, 0.05, box); }), "accepted");
 }
 
 } // namespace

@@ -17,10 +17,12 @@
 
 namespace capsula::operators {
 
-/// The fluid a Green's function describes; 'Wall/Enabled' must agree with it.
+/// The walls of the fluid a Green's function describes; 'Wall/Enabled' and
+/// 'Wall/Channel height' must agree with it (domain/Domain.hpp).
 enum class FluidDomain {
   Unbounded, ///< no boundary: Wall/Enabled = false
-  AboveWall  ///< the half space y > 0 over the no-slip plane y = 0: Wall/Enabled = true
+  AboveWall, ///< the half space y > 0 over the no-slip plane y = 0: Wall/Enabled = true
+  Channel    ///< the layer 0 < y < H between two no-slip planes: Wall/Channel height = H > 0
 };
 
 /// What the deck knows about a registered kernel.
@@ -30,6 +32,10 @@ struct KernelInfo {
   /// The kernel's own keys (defaults, validators, doc strings), declared as the deck
   /// sublist 'Operator/<name>' and handed to the factory; null: the kernel has none.
   Teuchos::RCP<const Teuchos::ParameterList> validParameters;
+  /// true: the kernel is periodic along the walls, with the periods the deck gives
+  /// ('Domain/Periodic length x', 'z'); false: it serves only domains without a periodic
+  /// direction.
+  bool periodic = false;
 };
 
 template <class Factory>

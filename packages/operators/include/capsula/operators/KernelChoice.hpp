@@ -4,8 +4,10 @@
 // 'Operator/<name>'. The same for 2D and 3D: only the registry's KernelInfo is needed.
 //
 // Auto keeps every deck written before kernels could be named working: it is Wall with
-// 'Wall/Enabled' = true and FreeSpace otherwise. A named kernel must be for the fluid the
-// deck describes (KernelInfo::domain), so the wall cannot be half switched on.
+// 'Wall/Enabled' = true and FreeSpace otherwise, in a domain without a channel or periodic
+// direction. A named kernel must be for the domain the deck describes (KernelInfo::domain
+// and ::periodic), so a wall or a period cannot be half switched on.
+#include <capsula/domain/Domain.hpp>
 #include <capsula/operators/KernelCatalogue.hpp>
 
 #include <Teuchos_ParameterList.hpp>
@@ -25,11 +27,20 @@ struct KernelChoice {
 /// described in the doc string) and the sublist of each kernel with settings.
 void declareKernelParameters(Teuchos::ParameterList& operatorList, const std::map<std::string, KernelInfo>& kernels);
 
-/// The kernel `operatorList` selects for a fluid with (`wall`) or without the wall y = 0.
-/// A list without 'Kernel' means Auto. Throws core::InputError naming the registered
-/// kernels for an unknown name, and naming 'Operator/Kernel' and 'Wall/Enabled' when the
-/// kernel is for the other fluid domain.
+/// The kernel `operatorList` selects for `domain`. A list without 'Kernel' means Auto: Wall
+/// or FreeSpace for a domain without a channel or a periodic direction, otherwise the
+/// registered kernel that serves the domain. Throws core::InputError naming the registered
+/// kernels for an unknown name, naming 'Operator/Kernel' and the domain's keys when the
+/// kernel is for another domain, and naming the domain's keys when no kernel serves it.
+KernelChoice readKernelChoice(const Teuchos::ParameterList& operatorList,
+                              const std::map<std::string, KernelInfo>& kernels, const domain::Domain& domain);
+
+/// readKernelChoice for a domain without periodic directions, with (`wall`) or without the
+/// wall y = 0 (the 2D model).
 KernelChoice readKernelChoice(const Teuchos::ParameterList& operatorList,
                               const std::map<std::string, KernelInfo>& kernels, bool wall);
+
+/// Whether a kernel registered with `info` serves `domain` (its walls and periodicity).
+bool servesDomain(const KernelInfo& info, const domain::Domain& domain);
 
 } // namespace capsula::operators

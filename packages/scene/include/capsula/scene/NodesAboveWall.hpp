@@ -1,6 +1,6 @@
 #pragma once
-// The domain of a scene with a wall: every node above y = 0. The wall kernel meets its own
-// image there, and the contact repulsion diverges as a node approaches it, so a state with a
+// The domain of a scene with walls: every node strictly inside the fluid (above y = 0, and
+// below y = H in a channel; domain/Domain.hpp). The wall kernels meet their own images there, and the contact repulsion diverges as a node approaches it, so a state with a
 // node on or below the wall is outside the model.
 //
 // requireNodesAboveWall is the 3D runs' domain check (timeint TimeIntegrator::setDomainCheck):
@@ -10,13 +10,17 @@
 // fails only when the step falls below 'Time integration/Minimum step'.
 #include "capsula/scene/Scene.hpp"
 
+#include <string>
 #include <vector>
 
 namespace capsula::scene {
 
 /// Throws timeint::StateOutsideDomain naming the first node (its cell, its index, its
-/// height) of `positions` (3 per node, the scene's numbering) on or below the wall y = 0 or
-/// with a non-finite height. Nothing to check without a wall.
+/// height) of `positions` (3 per node, the scene's numbering) on or through a wall of the
+/// scene's domain or with a non-finite height. Nothing to check without a wall.
 void requireNodesAboveWall(const Scene& scene, const std::vector<double>& positions);
+
+/// "the wall" (the lower wall y = 0) or "the upper wall": the wall nearest to x, for messages.
+std::string nearestWallName(const domain::Domain& domain, const double* x);
 
 } // namespace capsula::scene

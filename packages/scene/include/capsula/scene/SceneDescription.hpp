@@ -7,6 +7,8 @@
 #include <capsula/adhesion/AdhesionParameters.hpp>
 #include <capsula/adhesion/ContactParameters.hpp>
 #include <capsula/adhesion/TetherParameters.hpp>
+#include <capsula/domain/Domain.hpp>
+#include <capsula/domain/FlowProfile.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/RedistributionParameters.hpp>
 #include <capsula/operators/ShearRate.hpp>
@@ -37,8 +39,11 @@ struct CellDescription {
 struct SceneDescription {
   double capillaryNumber = 1.0;
   double viscosityRatio = 1.0;
-  operators::ShearRate shearRate; ///< 'Flow/Shear rate': k(t) over its mean
-  bool wall = true;
+  operators::ShearRate shearRate;                      ///< 'Flow/Shear rate': k(t) over its mean
+  domain::Domain domain = domain::Domain::aboveWall(); ///< 'Wall', 'Domain': walls and periodic box
+  /// 'Flow/Profile' in `domain`: simple shear, plane Couette or plane Poiseuille flow
+  domain::FlowProfile flowProfile{domain::FlowProfileKind::Shear, domain::Domain::aboveWall()};
+  bool wall = true; ///< domain.hasLowerWall(): the lower wall y = 0
   std::vector<CellDescription> cells;
   double minimumGap = 0.05;                        ///< 'Cells/Minimum gap': closer surfaces stop the run
   double minimumWallGap = 0.025;                   ///< 'Wall/Minimum gap': a new run must start farther up
