@@ -108,3 +108,22 @@ set_tests_properties(app_twocell3d_sweep_gathers_the_table PROPERTIES LABELS app
 add_test(NAME app_twocell3d_sweep_table_content COMMAND ${CMAKE_COMMAND} -E cat ${_twoout}/sweep.csv)
 set_tests_properties(app_twocell3d_sweep_table_content PROPERTIES LABELS app FIXTURES_REQUIRED twocell3d_sweep
   PASS_REGULAR_EXPRESSION "demo.xml,finished,0.05,final,1,1.25,0.0,0.0,2.5,0.5,[^\n]*,2\\.5000[0-9]+,")
+
+# Cells of two kinds in one scene: Cell 0 with its own 'Viscosity ratio' 5, Cell 1 with the
+# flow's 1 (tests/unit/scene/test_scene.cpp checks each moves as alone with its ratio). The
+# run reports both ratios; 1 and 2 ranks agree to 1e-10 as the lambda = 5 cell3d runs do (the
+# GMRES inner products are summed in a rank-dependent order).
+set(_mixed ${_twoshort} --set "Cells/Cell 0/Viscosity ratio=5")
+add_test(NAME regression_twocell3d_mixed_ratios_one_rank
+  COMMAND twocell3d ${_twodecks}/demo.xml --output ${_twoout}/mixed_one_rank ${_mixed})
+set_tests_properties(regression_twocell3d_mixed_ratios_one_rank PROPERTIES
+  FIXTURES_SETUP twocell3d_mixed_ratios LABELS "mpi;regression"
+  PASS_REGULAR_EXPRESSION "viscosity ratio 5 \\(Cell 0\\), 1 \\(Cell 1\\): double layer.*Done: finished at t = 0\\.2")
+capsula_add_mpi_command_test(regression_twocell3d_mixed_ratios_two_ranks
+  COMMAND $<TARGET_FILE:twocell3d> ${_twodecks}/demo.xml --output ${_twoout}/mixed_two_ranks ${_mixed}
+  LABELS regression TIMEOUT 300)
+set_tests_properties(regression_twocell3d_mixed_ratios_two_ranks PROPERTIES FIXTURES_SETUP twocell3d_mixed_ratios)
+add_test(NAME regression_twocell3d_mixed_ratios_ranks_agree
+  COMMAND check_metrics same ${_twoout}/mixed_one_rank/metrics.csv ${_twoout}/mixed_two_ranks/metrics.csv 1e-10)
+set_tests_properties(regression_twocell3d_mixed_ratios_ranks_agree PROPERTIES
+  FIXTURES_REQUIRED twocell3d_mixed_ratios LABELS "mpi;regression")

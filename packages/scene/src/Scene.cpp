@@ -53,6 +53,21 @@ std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMes
   return line.str();
 }
 
+// "5", or per cell where they differ: "5 (Cell 0), 1 (Cell 1)".
+std::string describeViscosityRatios(const SceneDescription& description)
+{
+  const std::vector<double> ratios = description.viscosityRatios();
+  std::ostringstream line;
+  if (std::all_of(ratios.begin(), ratios.end(), [&](double lambda) { return lambda == ratios.front(); })) {
+    line << ratios.front();
+    return line.str();
+  }
+  for (std::size_t c = 0; c < ratios.size(); ++c) {
+    line << (c > 0 ? ", " : "") << ratios[c] << " (" << description.cells[c].path.substr(6) << ")";
+  }
+  return line.str();
+}
+
 // The cells' surfaces as the deck describes them (the state at t = 0), with room in the
 // domain and clear of its walls.
 std::vector<mesh::SurfaceMesh> initialSurfaces(const SceneDescription& description)
@@ -143,7 +158,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   buildExternalForces();
 
   // The boundary-integral operator for the kernel the geometry needs.
-  operators::CellSurfaces surfaces(cells_, description_.viscosityRatio);
+  operators::CellSurfaces surfaces(cells_, description_.viscosityRatios());
   initialPositions_ = surfaces.positions();
   // Decks of the scene tests carry no "Operator" list: Auto, as in a validated deck.
   const Teuchos::ParameterList noOperatorList;
@@ -163,10 +178,10 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   }
   {
     std::ostringstream line;
-    if (description_.viscosityRatio == 1.0) {
+    if (description_.allViscosityRatiosOne()) {
       line << "viscosity ratio 1: explicit velocity (no double layer, no linear solve)";
     } else {
-      line << "viscosity ratio " << description_.viscosityRatio << ": double layer and Belos "
+      line << "viscosity ratio " << describeViscosityRatios(description_) << ": double layer and Belos "
            << solverParameters.method << " (tolerance " << solverParameters.tolerance
            << (solverParameters.warmStart ? ", warm start" : "") << ")";
     }

@@ -5,6 +5,7 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/domain/DomainParameters.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace capsula::scene {
@@ -115,6 +116,21 @@ void requireUsableTether(const SceneDescription& scene)
 
 } // namespace
 
+std::vector<double> SceneDescription::viscosityRatios() const
+{
+  std::vector<double> ratios;
+  for (const auto& cell : cells) {
+    ratios.push_back(cell.viscosityRatio);
+  }
+  return ratios;
+}
+
+bool SceneDescription::allViscosityRatiosOne() const
+{
+  return std::all_of(cells.begin(), cells.end(),
+                     [](const CellDescription& cell) { return cell.viscosityRatio == 1.0; });
+}
+
 SceneDescription describeScene(const Teuchos::ParameterList& deck)
 {
   SceneDescription scene;
@@ -146,6 +162,8 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
     cell.shearModulus = list.get<double>("Shear modulus");
     cell.areaDilation = list.get<double>("Area dilation C");
     cell.prestress = list.get<double>("Prestress");
+    const double ownRatio = list.isParameter("Viscosity ratio") ? list.get<double>("Viscosity ratio") : 0.0;
+    cell.viscosityRatio = ownRatio > 0.0 ? ownRatio : scene.viscosityRatio;
     cell.bendingModulus = list.get<double>("Bending modulus");
     cell.spontaneousCurvature = list.get<double>("Spontaneous curvature");
     cell.bendingReference = list.get<std::string>("Bending reference");

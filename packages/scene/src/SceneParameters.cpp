@@ -100,6 +100,12 @@ void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double
                       "curvature c0 everywhere. 'Initial shape': each material point's own 2H in "
                       "the cell's initial shape, so that the shape the deck builds (a biconcave red "
                       "cell, say) is free of bending moments.");
+  core::declareReal(cell, "Viscosity ratio", 0.0,
+                    "lambda of this cell (its internal viscosity over the external one), for suspensions of "
+                    "cells of different kinds (red cells at 5, platelets at 1). 0, the default: "
+                    "'Flow/Viscosity ratio'. A scene where any cell has lambda != 1 adds the double layer "
+                    "and a Krylov solve ('Solver/Method').",
+                    core::atLeast(0.0));
   core::declareBool(cell, "Fixed height", false,
                     "Hold the height of the cell's centroid above the wall fixed (thesis Section "
                     "5.1): the cell's mean vertical velocity is removed from all its nodes.");
@@ -121,9 +127,9 @@ void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::Parame
                     "over the membrane shear modulus G (eq 3.16).",
                     core::greaterThan(0.0));
   core::declareReal(flow, "Viscosity ratio", 1.0,
-                    "lambda = internal / external viscosity. 1 gives the explicit velocity (eq "
-                    "3.38 without the double layer); any other value adds the double layer and a "
-                    "Krylov solve ('Solver/Method').",
+                    "lambda = internal / external viscosity, of every cell without a 'Viscosity ratio' of its "
+                    "own. 1 gives the explicit velocity (eq 3.38 without the double layer); any other value "
+                    "adds the double layer and a Krylov solve ('Solver/Method').",
                     core::greaterThan(0.0));
   operators::declareShearRateParameters(core::declareSublist(
       flow, "Shear rate", "The shear rate k(t) over its mean: steady, pulsatile or a tabulated waveform."));

@@ -55,7 +55,7 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
     }
   }
   frozen_ = kernels.create(scene.kernelKey(), scene.comm(),
-                           operators::CellSurfaces(std::move(cells), description.viscosityRatio), discretisation,
+                           operators::CellSurfaces(std::move(cells), description.viscosityRatios()), discretisation,
                            operators::readSolverParameters(deck.sublist("Solver")), scene.kernelParameters());
   const int numNodes = scene.numNodes();
   map_ = Teuchos::rcp(
@@ -63,10 +63,13 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   if (settings_.preconditioned) {
     preconditioner_ = Teuchos::rcp(new LocalMobilityPreconditioner(map_));
   }
-  const double lambda = description.viscosityRatio;
-  coefficient_.assign(static_cast<std::size_t>(numNodes),
-                      -1.0 / (4.0 * M_PI * (1.0 + lambda) * scene.flow().capillaryNumber));
-  flowFactor_.assign(static_cast<std::size_t>(numNodes), 2.0 / (1.0 + lambda));
+  // Eq 3.38 per node with the lambda of its cell.
+  for (int c = 0; c < scene.numCells(); ++c) {
+    const double lambda = description.cells[static_cast<std::size_t>(c)].viscosityRatio;
+    coefficient_.insert(coefficient_.end(), static_cast<std::size_t>(scene.cell(c).numNodes()),
+                        -1.0 / (4.0 * M_PI * (1.0 + lambda) * scene.flow().capillaryNumber));
+    flowFactor_.insert(flowFactor_.end(), static_cast<std::size_t>(scene.cell(c).numNodes()), 2.0 / (1.0 + lambda));
+  }
   gmres_.restart = settings_.stage.restart;
   gmres_.maximumIterations = settings_.stage.maximumIterations;
   solver_ = std::make_unique<operators::StageSolver>(
@@ -194,7 +197,7 @@ std::string VelocityJacobian::describe() const
          << (scene_.description().contact.enabled && scene_.description().wall ? " and of the wall contact" : "");
   }
   line << ", frozen each step";
-  if (scene_.description().viscosityRatio != 1.0) {
+  if (!scene_.description().allViscosityRatiosOne()) {
     line << " (double layer left out)";
   }
   if (scene_.hasConstraints()) {

@@ -28,6 +28,7 @@ struct CellDescription {
   double shearModulus = 1.0;         ///< relative to the G of the capillary number
   double areaDilation = 0.0;         ///< C (Skalak)
   double prestress = 0.0;            ///< alpha (eq 3.45)
+  double viscosityRatio = 1.0;       ///< lambda: the cell's 'Viscosity ratio', else 'Flow/Viscosity ratio'
   double bendingModulus = 0.0;       ///< E_b = k_b / (G a^2); 0: no bending term
   double spontaneousCurvature = 0.0; ///< c0 a
   std::string bendingReference;      ///< "Flat" or "Initial shape"
@@ -38,8 +39,8 @@ struct CellDescription {
 
 struct SceneDescription {
   double capillaryNumber = 1.0;
-  double viscosityRatio = 1.0;
-  operators::ShearRate shearRate;                      ///< 'Flow/Shear rate': k(t) over its mean
+  double viscosityRatio = 1.0;    ///< 'Flow/Viscosity ratio': the lambda of cells without their own
+  operators::ShearRate shearRate; ///< 'Flow/Shear rate': k(t) over its mean
   domain::Domain domain = domain::Domain::aboveWall(); ///< 'Wall', 'Domain': walls and periodic box
   /// 'Flow/Profile' in `domain`: simple shear, plane Couette or plane Poiseuille flow
   domain::FlowProfile flowProfile{domain::FlowProfileKind::Shear, domain::Domain::aboveWall()};
@@ -54,6 +55,10 @@ struct SceneDescription {
   adhesion::TetherSettings tether;                 ///< 'Tether': one permanent bond to an anchor on the wall
 
   int numCells() const { return static_cast<int>(cells.size()); }
+  /// Each cell's lambda, in cell order.
+  std::vector<double> viscosityRatios() const;
+  /// Whether every cell has lambda = 1 (no double layer, no linear solve).
+  bool allViscosityRatiosOne() const;
   bool anyFixedHeight() const;
 };
 
