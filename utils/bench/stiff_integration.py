@@ -75,17 +75,16 @@ def run(build, runs, name, deck, sets, timeout):
 
 
 def run_versions(runs):
-    """The code versions of the runs in RUNS (summary.json), with how many runs each: finished
-    runs are reused, so they may be older than the report."""
-    counts = {}
+    """The code versions of the runs in RUNS (summary.json): finished runs are reused, so they
+    may be older than the report."""
+    summaries = []
     for name in sorted(os.listdir(runs)):
         try:
             with open(os.path.join(runs, name, "summary.json")) as f:
-                sha = json.load(f)["version"]["git sha"]
-        except (OSError, KeyError, ValueError):
+                summaries.append(json.load(f))
+        except (OSError, ValueError):
             continue
-        counts[sha] = counts.get(sha, 0) + 1
-    return ", ".join(f"git {sha} ({n} runs)" for sha, n in counts.items()) or "no recorded version"
+    return report_helpers.generated_pages.run_versions(summaries)
 
 
 def metrics_rows(path):
