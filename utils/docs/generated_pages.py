@@ -195,12 +195,16 @@ def unlisted_pages(root, listed):
 
 
 def check(root, generators):
+    """The problems of every page, and the pages that say on the page that they are stale."""
     problems = unlisted_pages(root, generators)
-    stale_noted = 0
+    stale_noted = []
     for page, (_, files, _) in sorted(generators.items()):
-        problems += check_page(root, page, files)
-        with open(os.path.join(root, page), encoding="utf-8") as f:
-            stale_noted += bool(NOTICE.search("".join(f.readline() for _ in range(HEAD_LINES))))
+        found = check_page(root, page, files)
+        problems += found
+        if not found:
+            with open(os.path.join(root, page), encoding="utf-8") as f:
+                if NOTICE.search("".join(f.readline() for _ in range(HEAD_LINES))):
+                    stale_noted.append(page)
     return problems, stale_noted
 
 
@@ -277,10 +281,12 @@ def main():
     if args.action != "check":
         parser.error("say list, check or --self-test")
     problems, stale_noted = check(args.root, GENERATORS)
+    for page in stale_noted:
+        print(f"{page}: stale, and says so on the page (regenerate: {GENERATORS[page][0]}; {GENERATORS[page][2]})")
     for problem in problems:
         print(problem)
     print(f"{len(GENERATORS)} generated pages checked: {len(problems)} problems, "
-          f"{stale_noted} marked stale on the page (generated_pages.py list: the command that regenerates each)")
+          f"{len(stale_noted)} marked stale on the page")
     return 1 if problems else 0
 
 
