@@ -23,6 +23,9 @@ packages=(
   libgtest-dev libbenchmark-dev
   # plotting and output checks (Debian's python3, not a pyenv one)
   python3 python3-numpy python3-matplotlib python3-h5py
+  # ParaView, the viewer of the snapshots: the test figures_demo_snapshots_open_in_both_paraview_readers
+  # reads them with its two XDMF readers (pvpython)
+  paraview python3-paraview
 )
 
 missing=()

@@ -9,6 +9,7 @@
 //            level 2, lambda = 5 with its GMRES solve), one rank; and the geometry update.
 // Wall times on a shared machine: compare runs made at the same load (utils/bench/bench_targets.py
 // records the load; docs/accuracy-cost.md).
+#include <capsula/core/CommandLine.hpp>
 #include <capsula/core/MpiSessionDirectory.hpp>
 #include <capsula/mesh/Shapes.hpp>
 #include <capsula/operators/BuiltInKernels.hpp>
@@ -18,6 +19,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <iostream>
 #include <memory>
 #include <vector>
 
@@ -159,8 +161,35 @@ BENCHMARK(geometryUpdate)->DenseRange(1, 3)->Unit(benchmark::kMillisecond);
 
 } // namespace
 
+// Our usage, with Google Benchmark's flags that matter here and their defaults (version 1.7).
+constexpr const char* usageText =
+    "Usage: bench_kernels [--benchmark_filter=REGEX] [--benchmark_repetitions=N]\n"
+    "                     [--benchmark_min_time=SECONDS] [--benchmark_format=console|json|csv]\n"
+    "                     [--benchmark_out=FILE] [--benchmark_list_tests]\n"
+    "\n"
+    "Google Benchmark microbenchmarks of the boundary-integral kernels and operators, one rank:\n"
+    "the regular sums of one target block against a level-3 cell (singleLayerSums, doubleLayerSums;\n"
+    "free-space and wall kernels), one node-velocity evaluation of a sphere above the wall\n"
+    "(nodeVelocities, levels 1-3 at lambda = 1, level 2 at lambda = 5) and the geometry update.\n"
+    "\n"
+    "  --benchmark_filter=REGEX        run the benchmarks whose name matches (default: all)\n"
+    "  --benchmark_repetitions=N       run each N times and report mean, median, stddev (default 1)\n"
+    "  --benchmark_min_time=SECONDS    least time per benchmark (default 0.5)\n"
+    "  --benchmark_format=FORMAT       console, json or csv (default console)\n"
+    "  --benchmark_out=FILE            also write the results to FILE (json unless\n"
+    "                                  --benchmark_out_format says otherwise)\n"
+    "  --benchmark_list_tests          print the benchmarks' names and exit\n"
+    "  --help                          this text\n"
+    "\n"
+    "utils/bench/accuracy-cost.sh runs it for docs/accuracy-cost.md.\n";
+
 int main(int argc, char* argv[])
 {
+  // Our usage before MPI and Kokkos start (Kokkos answers --help with its own options).
+  if (capsula::core::asksForHelp(argc, argv)) {
+    std::cout << usageText;
+    return 0;
+  }
   // Tpetra (and MPI) around the whole run: the operators use a Teuchos communicator.
   const capsula::core::MpiSessionDirectory sessionDirectory; // outlives MPI
   Tpetra::ScopeGuard scope(&argc, &argv);

@@ -18,6 +18,7 @@
 //              for the owned nodes (no corrections): the floor the evaluation is compared to;
 //   memory     the peak resident memory of every rank (MiB) after the evaluations with
 //              --summation, before a Treecode run builds its Direct reference.
+#include <capsula/core/CommandLine.hpp>
 #include <capsula/core/Error.hpp>
 #include <capsula/core/MpiSessionDirectory.hpp>
 #include <capsula/core/PeakMemory.hpp>
@@ -38,6 +39,7 @@
 #include <ctime>
 #include <cstdio>
 #include <functional>
+#include <iostream>
 #include <limits>
 #include <string>
 
@@ -278,13 +280,11 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
 
 int main(int argc, char* argv[])
 {
-  const capsula::core::MpiSessionDirectory sessionDirectory; // outlives MPI
-  Tpetra::ScopeGuard scope(&argc, &argv);
-  const auto comm = Tpetra::getDefaultComm();
   BenchOptions options;
   std::string kernel = "Wall";
   Teuchos::CommandLineProcessor clp(false, true);
-  clp.setDocString("Times one velocity evaluation of the boundary-integral operators.");
+  clp.setDocString("Times one velocity evaluation of the boundary-integral operators "
+                   "(mpiexec -n N bench_operators [options]).");
   clp.setOption("level", &options.level, "icosphere level of the cells (3: 2562 nodes each)");
   clp.setOption("kernel", &kernel, "Wall, FreeSpace, or WallTensors (the wall kernel without the contracted forms)");
   clp.setOption("lambda", &options.lambda, "viscosity ratio (1: explicit; otherwise GMRES)");
@@ -296,6 +296,14 @@ int main(int argc, char* argv[])
   clp.setOption("tolerance", &options.tolerance, "treecode tolerance (Operator/Treecode/Tolerance)");
   clp.setOption("leaf-size", &options.leafSize, "treecode leaf size (Operator/Treecode/Leaf size)");
   clp.setOption("batch-size", &options.batchSize, "most targets in a treecode batch (<= 128)");
+  // Our usage, with the defaults, before MPI and Kokkos start (Kokkos answers --help with its own).
+  if (capsula::core::asksForHelp(argc, argv)) {
+    clp.printHelpMessage("bench_operators", std::cout);
+    return 0;
+  }
+  const capsula::core::MpiSessionDirectory sessionDirectory; // outlives MPI
+  Tpetra::ScopeGuard scope(&argc, &argv);
+  const auto comm = Tpetra::getDefaultComm();
   if (clp.parse(argc, argv) != Teuchos::CommandLineProcessor::PARSE_SUCCESSFUL) {
     return 1;
   }

@@ -68,7 +68,7 @@ if [[ -x $build/apps/bench_kernels/bench_kernels ]]; then
   fi
   kernels=(--kernels "$runs/bench_kernels.json")
 fi
-ACCURACY_COST_COMMAND="utils/bench/accuracy-cost.sh $args" /usr/bin/python3 "$bench/accuracy_cost.py" all \
+ACCURACY_COST_COMMAND="bash utils/bench/accuracy-cost.sh $args" /usr/bin/python3 "$bench/accuracy_cost.py" all \
   --build "$build" --runs "$runs" --report "$report" --targets "$runs/targets.json" "${kernels[@]}" \
   "${quick[@]}" "${check[@]}"
 echo "== accuracy-cost.sh done in $(( $(date +%s) - start )) s"

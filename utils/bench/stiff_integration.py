@@ -74,6 +74,19 @@ def run(build, runs, name, deck, sets, timeout):
     return record
 
 
+def run_versions(runs):
+    """The code versions of the runs in RUNS (summary.json): finished runs are reused, so they
+    may be older than the report."""
+    summaries = []
+    for name in sorted(os.listdir(runs)):
+        try:
+            with open(os.path.join(runs, name, "summary.json")) as f:
+                summaries.append(json.load(f))
+        except (OSError, ValueError):
+            continue
+    return report_helpers.generated_pages.run_versions(summaries)
+
+
 def metrics_rows(path):
     """time, step, u_slip_spline, D12, u_slip of every output row."""
     import csv
@@ -101,6 +114,14 @@ def lowest_tension(path):
 
 def relative(value, reference):
     return abs(value - reference) / abs(reference) if reference else float("nan")
+
+
+def accuracy_columns(record, ref):
+    """u_slip (instantaneous), D12, their deviations from the reference (%), then u_slip_spline and its deviation."""
+    def deviation(key):
+        return 100 * relative(record[key], ref[key]) if ok(ref) else float("nan")
+    return [f"{record['u_slip_inst']:.6f}", f"{record['D12']:.6f}", deviation("u_slip_inst"), deviation("D12"),
+            f"{record['u_slip_spline']:.6f}", deviation("u_slip_spline")]
 
 
 def ok(record):
@@ -200,9 +221,10 @@ def stiff(args, report):
                       for m, tol in (("ROS34PW2", "1e-4"), ("Auto", "1e-4"), ("ROS34PW2", "1e-5"))}
         full_explicit = level <= 2
         explicit_end = end if full_explicit else short_end
-        # These tables compare u_slip_spline, the slope of the spline through the outputs
-        # (which depends on the output interval): the full explicit run keeps the others'
-        # interval, so its u_slip_spline compares with theirs.
+        # The instantaneous u_slip (the centroid velocity of the state) is the primary column;
+        # u_slip_spline, the slope of the spline through the outputs, depends on the output
+        # interval: the full explicit run keeps the others' interval, so its u_slip_spline
+        # compares with theirs.
         explicit = run(args.build, args.runs, f"{name}-rkf45", deck,
                        sets if full_explicit else dict(sets, **{"Time integration/End time": f"{explicit_end:g}",
                                                                 "Output/Interval": f"{explicit_end / 4:g}"}),
@@ -220,34 +242,32 @@ def stiff(args, report):
             note = explicit.get("status", "?")
         for label, r in [(f"ROS34PW2 {reference_tolerance} (reference)", ref)] + list(stiff_runs.items()):
             if not ok(r):
-                rows.append([label, r.get("status", "?")] + [float("nan")] * 8)
+                rows.append([label, r.get("status", "?")] + [float("nan")] * 9)
                 continue
-            rows.append([label, r["steps"], r["applications"], f"{r['u_slip_spline']:.6f}", f"{r['D12']:.6f}",
-                         100 * relative(r["u_slip_spline"], ref["u_slip_spline"]) if ok(ref) else float("nan"),
-                         100 * relative(r["D12"], ref["D12"]) if ok(ref) else float("nan"),
-                         r["cpu"], cpu / r["cpu"]])
+            rows.append([label, r["steps"], r["applications"]] + accuracy_columns(r, ref) + [r["cpu"], cpu / r["cpu"]])
         if full_explicit and ok(explicit):
-            rows.append(["RKF45 1e-6 + stability limit", explicit["steps"], explicit["applications"],
-                         f"{explicit['u_slip_spline']:.6f}", f"{explicit['D12']:.6f}",
-                         100 * relative(explicit["u_slip_spline"], ref["u_slip_spline"]) if ok(ref) else float("nan"),
-                         100 * relative(explicit["D12"], ref["D12"]) if ok(ref) else float("nan"), explicit["cpu"], 1.0])
+            rows.append(["RKF45 1e-6 + stability limit", explicit["steps"], explicit["applications"]]
+                        + accuracy_columns(explicit, ref) + [explicit["cpu"], 1.0])
         else:
-            rows.append([f"RKF45 1e-6 + stability limit ({note})", fmt(steps, 3), fmt(apps, 3), "-", "-", "-", "-",
-                         cpu, 1.0])
+            rows.append([f"RKF45 1e-6 + stability limit ({note})", fmt(steps, 3), fmt(apps, 3)] + ["-"] * 6
+                        + [cpu, 1.0])
         report.append(f"### Mesh level {level}\n")
-        report.append(table(["method, tolerance", "steps", "applications", "u_slip_spline", "D12", "u_slip_spline vs reference (%)",
-                             "D12 vs reference (%)", "CPU s", "speed-up (CPU) over RKF45"], rows) + "\n")
+        report.append(table(["method, tolerance", "steps", "applications", "u_slip (instantaneous)", "D12",
+                             "u_slip vs reference (%)", "D12 vs reference (%)", "u_slip_spline",
+                             "u_slip_spline vs reference (%)", "CPU s", "speed-up (CPU) over RKF45"], rows) + "\n")
         ros = stiff_runs["ROS34PW2 1e-4"]
         if ok(ref) and ok(ros) and math.isfinite(apps):
             report.append(
-                f"ROS34PW2 at 1e-4 gives u_slip_spline and D12 at t = {end:g} within "
-                f"{100 * relative(ros['u_slip_spline'], ref['u_slip_spline']):.3f}% and {100 * relative(ros['D12'], ref['D12']):.3f}% "
+                f"ROS34PW2 at 1e-4 gives the instantaneous u_slip and D12 at t = {end:g} within "
+                f"{100 * relative(ros['u_slip_inst'], ref['u_slip_inst']):.3f}% and {100 * relative(ros['D12'], ref['D12']):.3f}% "
                 f"of the reference with {ros['steps']} steps; RKF45 under its stability limit needs "
                 f"{apps / ros['applications']:.0f} times its operator applications and "
                 f"{cpu / ros['cpu']:.0f} times its CPU time ({note}).\n")
         if ok(ref):
             tail = [r for r in ref["rows"] if r["time"] >= end / 2]
-            report.append("u_slip_spline of the reference at t = " + ", ".join(f"{r['time']:g}: {r['u_slip_spline']:.6f}" for r in tail)
+            report.append("u_slip (instantaneous) of the reference at t = "
+                          + ", ".join(f"{r['time']:g}: {r['u_slip']:.6f}" for r in tail)
+                          + "; u_slip_spline at t = " + ", ".join(f"{r['time']:g}: {r['u_slip_spline']:.6f}" for r in tail)
                           + "; D12 at t = " + ", ".join(f"{r['time']:g}: {r['D12']:.6f}" for r in tail) + ".\n")
             tension = lowest_tension(os.path.join(args.runs, f"{name}-reference", "metrics.csv"))
             if tension is not None:
@@ -388,12 +408,14 @@ def main():
     os.makedirs(args.runs, exist_ok=True)
     report_path = args.report or (os.path.join(args.runs, "stiff-integration-results.md") if args.quick
                                   else os.path.join(ROOT, "docs/stiff-integration-results.md"))
-    report = ["# Stiff time integration: measured accuracy and cost (cell3d)\n",
-              f"Generated by `utils/bench/stiff_integration.py{' --quick' if args.quick else ''}` from git "
-              f"{report_helpers.git_sha()}; one rank. Method and keys: docs/stiff-integration.md.\n"]
+    command = "/usr/bin/python3 utils/bench/stiff_integration.py --build build" + (" --quick" if args.quick else "")
+    report = ["# Stiff time integration: measured accuracy and cost (cell3d)\n"]
     failed = False
     for name in args.case or list(CASES):
         CASES[name](args, report)
+    # After the runs: the versions of the runs the report reads (reused ones included).
+    report.insert(1, f"{report_helpers.generated_pages.header_line(command, ROOT)} The runs ran "
+                     f"{run_versions(args.runs)}; one rank. Method and keys: docs/stiff-integration.md.\n")
     loads = []
     for name in os.listdir(args.runs):
         if name.endswith(".json"):

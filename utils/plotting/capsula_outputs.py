@@ -13,11 +13,17 @@ Debian's /usr/bin/python3 with python3-numpy, python3-h5py, python3-matplotlib.
 """
 import json
 import os
+import shlex
+import sys
 import tempfile
 import xml.etree.ElementTree as ET
 
 import h5py
 import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "utils", "docs"))
+import generated_pages  # noqa: E402 (the first line of a table of runs: command and code versions)
 
 
 class OutputError(Exception):
@@ -239,6 +245,19 @@ def find_runs(roots, application=None):
 
 
 # --- figures ---------------------------------------------------------------------------------
+
+def write_markdown_table(path, lines, runs):
+    """Writes the Markdown table `lines` of `runs` to `path` (atomically) under the line that
+    names the command that wrote it, the code it ran in and the code versions of the runs
+    (docs/developer-guide.md, "Generated pages")."""
+    args = [os.path.relpath(a, ROOT) if os.path.isabs(a) and a.startswith(ROOT + os.sep) else a for a in sys.argv[1:]]
+    command = shlex.join(["/usr/bin/python3", os.path.relpath(os.path.abspath(sys.argv[0]), ROOT)] + args)
+    header = (generated_pages.header_line(command, ROOT)[:-1] + "; the runs ran "
+              + generated_pages.run_versions(run.summary for run in runs) + ".")
+    with open(path + ".tmp", "w", encoding="utf-8") as f:
+        f.write(header + "\n\n" + "\n".join(lines) + "\n")
+    os.replace(path + ".tmp", path)
+
 
 def use_agg():
     """Draw without a display (CI, ssh)."""

@@ -243,7 +243,7 @@ def rolling_figure(rows, out, plt):
     return co.save_figure(fig, out, "cell3d_adhesion_rolling.png")
 
 
-def write_table(rows, path):
+def write_table(rows, path, runs):
     lines = ["| run | Ca | k_off0 / k | gamma / a | Bell force / (mu k a^2) | t_end | status | V / (a k) "
              "| V / V_free | regime | pause fraction | bonds (late mean, end) | contact area / a^2 | lowest gap / a | y_c / a at the end "
              "| largest D12 | largest volume change |",
@@ -258,9 +258,7 @@ def write_table(rows, path):
         else:
             lines.append(f"| {r['name']} | {r['ca']:g} | | | | {r['end']:g} | {r['status']} | {r['velocity']:.4f} "
                          f"| 1 | (no adhesion) | | | | | {r['y'][-1]:.4f} | {r['d12']:.4f} | {r['volume_drift']:.2g} |")
-    with open(path + ".tmp", "w", encoding="utf-8") as f:
-        f.write("\n".join(lines) + "\n")
-    os.replace(path + ".tmp", path)
+    co.write_markdown_table(path, lines, runs)
     print(f"wrote {path}")
 
 
@@ -336,7 +334,7 @@ def main(argv=None):
     state_diagram([r for r in rows if r["adhesion"]], args.out, plt)
     rolling_figure(rows, args.out, plt)
     if args.table:
-        write_table(rows, args.table)
+        write_table(rows, args.table, runs)
     trends = check_trends([r for r in rows if r["adhesion"]])
     return 0 if trends or not args.check_trends else 1
 

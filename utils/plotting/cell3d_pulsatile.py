@@ -179,15 +179,12 @@ def table_lines(rows, steady):
     return header, body
 
 
-def write_tables(rows, steady, out):
+def write_tables(rows, steady, out, co, runs):
     header, body = table_lines(rows, steady)
     os.makedirs(out, exist_ok=True)
     md = os.path.join(out, "cell3d_pulsatile_table.md")
-    with open(md + ".tmp", "w", encoding="utf-8") as f:
-        f.write("| " + " | ".join(header) + " |\n|" + "---|" * len(header) + "\n")
-        for line in body:
-            f.write("| " + " | ".join(line) + " |\n")
-    os.replace(md + ".tmp", md)
+    co.write_markdown_table(md, ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+                            + ["| " + " | ".join(line) + " |" for line in body], runs)
     csv = os.path.join(out, "cell3d_pulsatile_table.csv")
     with open(csv + ".tmp", "w", encoding="utf-8") as f:
         f.write(",".join(h.replace(" ", "_") for h in header) + "\n")
@@ -362,7 +359,7 @@ def main(argv=None):
     if not steady:
         print("cell3d_pulsatile: no steady run of the same Ca and height: no tau, no migration reference",
               file=sys.stderr)
-    write_tables(rows, steady, args.out)
+    write_tables(rows, steady, args.out, co, [r["run"] for r in runs])
     plt = co.use_agg()
     response_figure(rows, args.out, plt, co)
     lags_figure(rows, steady, args.out, plt, co)

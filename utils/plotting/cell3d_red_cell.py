@@ -28,7 +28,7 @@ COLUMNS = ["setting", "ca", "lam", "regime", "mean_theta", "swing", "ratio", "D1
            "steps", "stiff_steps", "seconds", "volume_drift", "level", "status", "time"]
 
 
-def write_tables(rows, folder, name):
+def write_tables(rows, folder, name, co, runs):
     os.makedirs(folder, exist_ok=True)
     cell = (lambda row, c: vr.text(row[c] if c != "setting" else vr.setting_of(row)))
     with open(os.path.join(folder, f"{name}_table.csv"), "w", encoding="utf-8") as f:
@@ -36,10 +36,8 @@ def write_tables(rows, folder, name):
         for row in rows:
             f.write(",".join(cell(row, c) for c in COLUMNS) + "\n")
     path = os.path.join(folder, f"{name}_table.md")
-    with open(path, "w", encoding="utf-8") as f:
-        f.write("| " + " | ".join(COLUMNS) + " |\n|" + "---|" * len(COLUMNS) + "\n")
-        for row in rows:
-            f.write("| " + " | ".join(cell(row, c) for c in COLUMNS) + " |\n")
+    co.write_markdown_table(path, ["| " + " | ".join(COLUMNS) + " |", "|" + "---|" * len(COLUMNS)]
+                            + ["| " + " | ".join(cell(row, c) for c in COLUMNS) + " |" for row in rows], runs)
     print(f"wrote {path}")
 
 
@@ -104,7 +102,8 @@ def main(argv=None):
         parser.error(f"--name: '{args.name}' is not a file-name prefix (no '/', not empty)")
     import capsula_outputs as co
     rows = []
-    for run in co.find_runs(args.runs, "cell3d"):
+    runs = co.find_runs(args.runs, "cell3d")
+    for run in runs:
         row = vr.describe(run, args.transient, args.swing_threshold)
         row["D12_history"] = np.asarray(run.table()["D12"], dtype=float)
         rows.append(row)
@@ -112,7 +111,7 @@ def main(argv=None):
         print("cell3d_red_cell: no cell3d runs found", file=sys.stderr)
         return 1
     rows.sort(key=lambda r: (-r["height"], r["lam"], r["ca"]))
-    write_tables(rows, args.out, args.name)
+    write_tables(rows, args.out, args.name, co, runs)
     plt = co.use_agg()
     regimes_figure(rows, args.out, args.name, plt, co)
     histories_figure(rows, args.out, args.name, plt, co)

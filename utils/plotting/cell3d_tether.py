@@ -184,9 +184,7 @@ def table(runs3d, runs2d, path):
                      f"({largest['time_of_max_tether_force']:.2f}) | "
                      f"{h['force'][-1]:.2f} | {h['time'][-1]:.1f} | {rate:.2g} | {h['force_x'][-1]:.2f} | | "
                      f"{h['pivot'][-1]:.1f} | {h['height'][-1]:.3f} |")
-    with open(path + ".tmp", "w", encoding="utf-8") as f:
-        f.write("\n".join(lines) + "\n")
-    os.replace(path + ".tmp", path)
+    co.write_markdown_table(path, lines, list(runs3d) + list(runs2d))
     print(f"wrote {path}")
 
 

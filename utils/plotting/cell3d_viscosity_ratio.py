@@ -190,7 +190,7 @@ def text(value):
     return "" if value is None else str(value)
 
 
-def write_tables(rows, folder):
+def write_tables(rows, folder, co, runs):
     os.makedirs(folder, exist_ok=True)
     with open(os.path.join(folder, "cell3d_viscosity_ratio_table.csv"), "w", encoding="utf-8") as f:
         f.write(",".join(COLUMNS) + "\n")
@@ -200,10 +200,9 @@ def write_tables(rows, folder):
              "u_slip", "u_lift", "omega_z", "wall_stress_max", "gmres", "steps", "stiff_steps", "seconds_per_step",
              "cost_vs_lambda1"]
     path = os.path.join(folder, "cell3d_viscosity_ratio_table.md")
-    with open(path, "w", encoding="utf-8") as f:
-        f.write("| " + " | ".join(shown) + " |\n|" + "---|" * len(shown) + "\n")
-        for row in rows:
-            f.write("| " + " | ".join(text(row[c] if c != "setting" else setting_of(row)) for c in shown) + " |\n")
+    co.write_markdown_table(path, ["| " + " | ".join(shown) + " |", "|" + "---|" * len(shown)]
+                            + ["| " + " | ".join(text(row[c] if c != "setting" else setting_of(row)) for c in shown) + " |"
+                               for row in rows], runs)
     print(f"wrote {path}")
 
 
@@ -356,13 +355,14 @@ def main(argv=None):
     if not args.out or not args.runs:
         parser.error("give --out FIGDIR and at least one run folder (or --self-test)")
     import capsula_outputs as co
-    rows = [describe(r, args.transient, args.swing_threshold) for r in co.find_runs(args.runs, "cell3d")]
+    runs = co.find_runs(args.runs, "cell3d")
+    rows = [describe(r, args.transient, args.swing_threshold) for r in runs]
     if not rows:
         print("cell3d_viscosity_ratio: no cell3d runs found", file=sys.stderr)
         return 1
     rows.sort(key=lambda r: (-r["height"], r["shape"] != "Spheroid", r["law"] != "Skalak", r["ca"], r["lam"]))
     add_cost_ratios(rows)
-    write_tables(rows, args.out)
+    write_tables(rows, args.out, co, runs)
     plt = co.use_agg()
     phase_diagram(rows, args.out, plt, co)
     trend_figure(rows, args.out, plt, co, "cell3d_viscosity_ratio_inclination.png",

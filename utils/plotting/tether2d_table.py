@@ -65,9 +65,7 @@ def main(argv=None):
     text = table([row(r) for r in runs])
     if args.out:
         path = os.path.join(args.out, "tether2d_table.md") if os.path.isdir(args.out) else args.out
-        with open(path + ".tmp", "w") as f:
-            f.write(text)
-        os.replace(path + ".tmp", path)
+        co.write_markdown_table(path, text.rstrip("\n").split("\n"), runs)
         print(f"wrote {path} ({len(runs)} runs)")
     else:
         sys.stdout.write(text)

@@ -119,11 +119,9 @@ int runApplication(int argc, char** argv, const AppDescription& app, const Valid
 {
   // --help is answered before Kokkos starts: Kokkos also takes --help and would print its
   // own forty lines of options above ours.
-  for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-      std::cout << usage(app);
-      return 0;
-    }
+  if (asksForHelp(argc, argv)) {
+    std::cout << usage(app);
+    return 0;
   }
   // An app that continues from checkpoints stops cleanly on SIGTERM/SIGINT (its time loop
   // asks for them, run::InterruptionWatch); the others keep the default: killed at once.

@@ -6,6 +6,17 @@
 
 namespace capsula::core {
 
+bool asksForHelp(int argc, const char* const* argv)
+{
+  for (int i = 1; i < argc; ++i) {
+    const std::string option = argv[i];
+    if (option == "--help" || option == "-h") {
+      return true;
+    }
+  }
+  return false;
+}
+
 CommandLineOptions parseCommandLine(int argc, const char* const* argv)
 {
   CommandLineOptions options;

@@ -39,15 +39,28 @@ std::string attributeType(int components)
   }
 }
 
+// The shape of a field's data item. On a structured grid it is the grid's own shape ("17 25"
+// for its nodes, "16 24" for its cells, then the components): the legacy XDMF reader
+// (ParaView's XDMFReader, Xdmf2) takes the first dimension of a structured grid's attribute
+// as its number of tuples, so "425" was read as 17 values of the 425 nodes.
+std::string fieldDimensions(const SnapshotLayout::BlockLayout& block, int components, bool onNodes)
+{
+  if (block.topology != Topology::StructuredGrid) {
+    return dimensions(onNodes ? block.nodes : block.cells, static_cast<std::size_t>(components));
+  }
+  const std::int64_t shift = onNodes ? 0 : 1;
+  std::string dims = std::to_string(block.gridShape[0] - shift) + " " + std::to_string(block.gridShape[1] - shift);
+  return components == 1 ? dims : dims + " " + std::to_string(components);
+}
+
 void attributes(std::ostream& out, const std::string& fileName, const SnapshotLayout& snapshot,
                 const SnapshotLayout::BlockLayout& block, const std::vector<SnapshotLayout::FieldLayout>& fields,
                 bool onNodes)
 {
-  const std::size_t count = onNodes ? block.nodes : block.cells;
   for (const auto& f : fields) {
     out << "          <Attribute Name=\"" << core::xmlEscaped(f.name) << "\" AttributeType=\""
         << attributeType(f.components) << "\" Center=\"" << (onNodes ? "Node" : "Cell") << "\">\n";
-    dataItem(out, "            ", dimensions(count, static_cast<std::size_t>(f.components)), false, fileName,
+    dataItem(out, "            ", fieldDimensions(block, f.components, onNodes), false, fileName,
              snapshot.group + "/" + block.name + (onNodes ? "/node_fields/" : "/cell_fields/") + f.name);
     out << "          </Attribute>\n";
   }

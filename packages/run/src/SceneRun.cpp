@@ -279,8 +279,11 @@ void SceneRunner::progress(const timeint::IntegrationState& state)
   std::ostringstream line;
   line << std::setprecision(4) << "t = " << state.time << " / " << end << " (" << std::setprecision(3)
        << 100.0 * state.time / end << "%)  step " << state.statistics.acceptedSteps << "  dt " << std::scientific
-       << std::setprecision(2) << state.statistics.lastStep << std::defaultfloat << std::setprecision(4) << "  D12 "
-       << outputs_.lastD12() << "  ETA " << wallClock(timeLeft(elapsed, simulatedStart_, state.time, end));
+       << std::setprecision(2) << state.statistics.lastStep << std::defaultfloat << std::setprecision(4);
+  if (const std::optional<double> d12 = outputs_.d12At(state.time)) { // measured at outputs only
+    line << "  D12 " << *d12;
+  }
+  line << "  ETA " << wallClock(timeLeft(elapsed, simulatedStart_, state.time, end));
   if (jacobian_) { // the stiff methods: which one runs, and the Krylov work so far
     const auto& stats = state.statistics;
     line << "  [" << integrator_.activeMethodName(state) << std::setprecision(3) << ", "

@@ -58,6 +58,21 @@ TEST(CommandLine, UsageListsOptionsAndExamples)
   }
 }
 
+// The apps and the benches answer --help before MPI and Kokkos start (Kokkos answers it with
+// its own option list): the check finds --help or -h anywhere, and nothing else.
+TEST(CommandLine, AsksForHelpFindsHelpAnywhere)
+{
+  const auto asks = [](std::vector<const char*> args) {
+    args.insert(args.begin(), "app");
+    return core::asksForHelp(static_cast<int>(args.size()), args.data());
+  };
+  EXPECT_TRUE(asks({"--help"}));
+  EXPECT_TRUE(asks({"deck.xml", "--set", "Flow/Capillary number=0.3", "-h"}));
+  EXPECT_TRUE(asks({"--level=2", "--help", "--kernel=Wall"}));
+  EXPECT_FALSE(asks({}));
+  EXPECT_FALSE(asks({"deck.xml", "--helpful", "--kokkos-help=false", "-hh"}));
+}
+
 TEST(CommandLine, ClosestMatchFindsTyposOnly)
 {
   EXPECT_EQ(core::editDistance("kitten", "sitting"), 3u);

@@ -19,6 +19,10 @@ struct CommandLineOptions {
   bool version = false;
 };
 
+/// Whether argv asks for --help (or -h). Programs answer it before MPI and Kokkos start:
+/// Kokkos takes --help too and would print its own option list instead.
+bool asksForHelp(int argc, const char* const* argv);
+
 /// Parses argv (argv[0] is the program). Throws InputError naming the bad option.
 CommandLineOptions parseCommandLine(int argc, const char* const* argv);
 

@@ -67,7 +67,15 @@ public:
   /// The time of the last output, its samples, and the first cell's D12 there.
   double lastTime() const { return lastTime_; }
   const std::vector<CellSample>& lastSamples() const { return lastSamples_; }
-  double lastD12() const { return lastSamples_.empty() ? 0.0 : lastSamples_.front().shape.deformation.D12; }
+  /// The first cell's D12 at `time` if the last output of this process was at that time;
+  /// none before the first output and between outputs (the state has moved on since).
+  std::optional<double> d12At(double time) const
+  {
+    if (lastSamples_.empty() || lastTime_ != time) {
+      return std::nullopt;
+    }
+    return lastSamples_.front().shape.deformation.D12;
+  }
   /// The scene's entries of summary.json.
   void addResults(io::JsonValue& summary) const;
   /// What a failure message should add when, at the last output, the membrane law of some
