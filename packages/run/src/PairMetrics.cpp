@@ -13,10 +13,12 @@ using scene::SurfaceGap;
 
 namespace {
 
+// The gap between cell i and the nearest periodic image of cell j (SurfaceGap.hpp).
 SurfaceGap gapBetween(const scene::Scene& scene, const std::vector<double>& positions, int i, int j)
 {
-  return minimumSurfaceGap(scene.cell(i), positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(i)),
-                           scene.cell(j), positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(j)));
+  return scene::minimumSurfaceGap(scene.cell(i), positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(i)),
+                                  scene.cell(j), positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(j)),
+                                  scene.description().domain);
 }
 
 // The local element size of `cell` (at `x`) near `point`: that of its nearest node.
@@ -47,7 +49,9 @@ std::vector<PairSample> pairSamples(const scene::Scene& scene, const std::vector
       PairSample pair;
       pair.first = i;
       pair.second = j;
+      // The nearest image's separation in a periodic box (domain/Domain.hpp).
       pair.separation = a.shape.centroid - b.shape.centroid;
+      scene.description().domain.nearestImage(pair.separation.data());
       pair.distance = pair.separation.norm();
       pair.relativeVelocity = a.instantVelocity - b.instantVelocity;
       pair.relativeSlip = a.slipVelocity() - b.slipVelocity();

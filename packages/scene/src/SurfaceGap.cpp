@@ -147,4 +147,32 @@ SurfaceGap minimumSurfaceGap(const mesh::SurfaceMesh& a, const mesh::SurfaceMesh
   return minimumSurfaceGap(a, a.positionData(), b, b.positionData());
 }
 
+SurfaceGap minimumSurfaceGap(const mesh::SurfaceMesh& a, const double* xa, const mesh::SurfaceMesh& b, const double* xb,
+                             const domain::Domain& domain)
+{
+  if (!domain.isPeriodic()) {
+    return minimumSurfaceGap(a, xa, b, xb);
+  }
+  const std::size_t count = 3 * static_cast<std::size_t>(b.numNodes());
+  std::vector<double> image(count);
+  SurfaceGap best;
+  best.distance = HUGE_VAL;
+  const int nx = domain.isPeriodic(domain::flowAxis) ? 1 : 0;
+  const int nz = domain.isPeriodic(domain::vorticityAxis) ? 1 : 0;
+  for (int i = -nx; i <= nx; ++i) {
+    for (int k = -nz; k <= nz; ++k) {
+      const mesh::Vec3 shift(i * domain.period(domain::flowAxis), 0.0, k * domain.period(domain::vorticityAxis));
+      for (std::size_t n = 0; n < count; ++n) {
+        image[n] = xb[n] + shift[static_cast<int>(n % 3)];
+      }
+      SurfaceGap gap = minimumSurfaceGap(a, xa, b, image.data());
+      if (gap.distance < best.distance) {
+        gap.onSecond -= shift;
+        best = gap;
+      }
+    }
+  }
+  return best;
+}
+
 } // namespace capsula::scene

@@ -244,4 +244,29 @@ TEST(CellPlacement, CellsTouchingAcrossThePeriodicBoundary)
   EXPECT_EQ(refusal([&] { scene::requireNoOverlap({&first, &apart}, paths, 0.05, box); }), "accepted");
 }
 
+// The gap to the nearest periodic image: unit spheres at x = 1.1 and x = 7.0 in a box of
+// L_x = 8 are 5.9 apart directly but 2.1 through the boundary, and their gap is that of the
+// same pair with the second sphere placed at x = -1.0 inside the box, to round-off (the
+// meshes are the same up to a translation by L_x). The closest point is reported on the
+// second sphere itself (near x = 7 - 1), not on its image.
+TEST(SurfaceGap, NearestPeriodicImage)
+{
+  domain::DomainShape shape;
+  shape.periodX = 8.0;
+  const domain::Domain box(shape);
+  const auto first = sphereAt(1.1, 2.0, 0.0);
+  const auto across = sphereAt(7.0, 2.0, 0.0);
+  const auto inside = sphereAt(-1.0, 2.0, 0.0);
+  const auto periodic = scene::minimumSurfaceGap(first, first.positionData(), across, across.positionData(), box);
+  const auto direct = scene::minimumSurfaceGap(first, inside);
+  EXPECT_NEAR(periodic.distance, direct.distance, 1e-12);
+  EXPECT_NEAR(direct.distance, 0.1, 0.01); // 0.1 between the spheres, the facets' sag at level 2
+  EXPECT_NEAR(periodic.onSecond[0], direct.onSecond[0] + 8.0, 1e-12);
+  // Without the period the same pair is 3.9 apart.
+  EXPECT_GT(scene::minimumSurfaceGap(first, across).distance, 3.8);
+  const auto unbounded =
+      scene::minimumSurfaceGap(first, first.positionData(), across, across.positionData(), domain::Domain::aboveWall());
+  EXPECT_EQ(unbounded.distance, scene::minimumSurfaceGap(first, across).distance);
+}
+
 } // namespace

@@ -20,7 +20,7 @@ namespace capsula::run {
 
 struct PairSample {
   int first = 0, second = 1;
-  mesh::Vec3 separation = mesh::Vec3::Zero();       ///< x_c(i) - x_c(j)
+  mesh::Vec3 separation = mesh::Vec3::Zero();       ///< x_c(i) - x_c(j), of the nearest periodic image
   double distance = 0.0;                            ///< |x_c(i) - x_c(j)|
   mesh::Vec3 relativeVelocity = mesh::Vec3::Zero(); ///< dx_c/dt(i) - dx_c/dt(j), instantaneous
   double relativeSlip = 0.0;                        ///< u_slip(i) - u_slip(j) (eq 3.55)

@@ -11,6 +11,7 @@
 // gap of the discrete surfaces is exact for flat facets and overestimates the gap of the
 // curved ones by at most one sag. It is not a signed distance: surfaces that cross give a
 // small positive number (surfacesOverlap in CellPlacement.hpp detects overlap).
+#include <capsula/domain/Domain.hpp>
 #include <capsula/mesh/SurfaceMesh.hpp>
 #include <capsula/mesh/Vec3.hpp>
 
@@ -35,5 +36,13 @@ SurfaceGap minimumSurfaceGap(const mesh::SurfaceMesh& a, const double* xa, const
 
 /// The same at the meshes' own positions.
 SurfaceGap minimumSurfaceGap(const mesh::SurfaceMesh& a, const mesh::SurfaceMesh& b);
+
+/// The gap between surface `a` and the nearest periodic image of surface `b` in `domain`:
+/// the smallest over b shifted by 0 and +-1 period along each periodic axis, which holds the
+/// nearest image of every point of a cell shorter than a period (CellPlacement.hpp's
+/// requireRoomInDomain). onSecond is given on b itself, not on its image. Without periodic
+/// directions, minimumSurfaceGap(a, xa, b, xb).
+SurfaceGap minimumSurfaceGap(const mesh::SurfaceMesh& a, const double* xa, const mesh::SurfaceMesh& b, const double* xb,
+                             const domain::Domain& domain);
 
 } // namespace capsula::scene
