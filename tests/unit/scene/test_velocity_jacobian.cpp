@@ -256,6 +256,29 @@ TEST(VelocityJacobian, RespectsTheVolumeConstraint)
   EXPECT_GT(std::abs(flux[0]), 1e-6 * scale) << "the direction carries no flux: the check would not discriminate";
 }
 
+// Both constraints at once: every J~ v keeps the centroid's height and carries no net flux
+// (to round-off), so neither correction undoes the other; without them J~ v does both
+// (the checks discriminate).
+TEST(VelocityJacobian, RespectsTheVolumeAndFixedHeightConstraintsTogether)
+{
+  double flux[2] = {0.0, 0.0}, rise[2] = {0.0, 0.0};
+  double scale = 0.0;
+  for (const bool constrained : {false, true}) {
+    auto deck = smallDeck(1, 1.6, true, [&](Teuchos::ParameterList& d) {
+      d.sublist("Cells").sublist("Cell 0").set("Conserve volume", constrained);
+      d.sublist("Cells").sublist("Cell 0").set("Fixed height", constrained);
+    });
+    const StartProduct p = productAtStart(*deck);
+    flux[constrained ? 1 : 0] = scene::normalFlux(p.cell, p.Jv.data());
+    rise[constrained ? 1 : 0] = scene::centroidVelocity(p.cell, p.Jv.data())[1];
+    scale = std::max(scale, maxAbs(p.Jv));
+  }
+  EXPECT_LT(std::abs(flux[1]), 1e-12 * scale);
+  EXPECT_LT(std::abs(rise[1]), 1e-12 * scale);
+  EXPECT_GT(std::abs(flux[0]), 1e-6 * scale) << "the direction carries no flux: the check would not discriminate";
+  EXPECT_GT(std::abs(rise[0]), 1e-6 * scale) << "the direction does not rise: the check would not discriminate";
+}
+
 // The contour-integral load has no tangent stiffness: refused, naming the key.
 TEST(VelocityJacobian, ContourIntegralLoadIsRefused)
 {
