@@ -4,13 +4,19 @@
 //                                [--quadrature-points=7]
 //                                [--rings=2] [--repeat=3] [--cells=1]
 //                                [--summation=Direct|Treecode] [--tolerance=1e-5]
+//                                [--cell-gap=0.2] [--wall-gap=0.2] [--single-layer=table|float|double]
 //
 // One spherical cell (radius 1, centre 2 above the wall) under a smooth non-uniform load;
 // with --cells=N > 1, N unit spheres 0.2 above the wall on a square grid of pitch 2.2 in
-// the wall plane (gaps of 0.2, no overlap). --summation picks the far-field back-end of the
-// regular sums ('Operator/Summation'; Treecode to --tolerance, docs/fastsum.md); for
-// Treecode the velocities are also computed with Direct and their relative difference
-// (2-norm) printed. Prints, as the maximum over ranks of the best of --repeat runs:
+// the wall plane (gaps of 0.2, no overlap; --cell-gap and --wall-gap set the gaps between
+// neighbours and above the wall). --summation picks the far-field back-end of the
+// regular sums ('Operator/Summation'; Treecode to --tolerance, docs/fastsum.md; the single
+// layer's precision from the tolerance's table row or, with --single-layer, float or
+// double); for Treecode the velocities are also computed with Direct and their relative
+// difference (2-norm) printed, and the single and double layers' errors per node: the
+// largest |u_i - u_i,Direct| over max_i |u_i,Direct| (u_i the node's 3-vector), beside the
+// 2-norm relative error the tolerance table is measured in. Prints, as the maximum over ranks
+// of the best of --repeat runs:
 //   geometry   rebuilding the quadrature caches after the nodes moved;
 //   velocity   one node-velocity evaluation (singular and near-singular corrections, the
 //              sums, and for lambda != 1 the GMRES solve, with its iterations);
@@ -122,20 +128,35 @@ struct BenchOptions {
   double tolerance = 1e-5;
   int leafSize = fastsum::TreecodeParameters{}.leafSize;
   int batchSize = fastsum::TreecodeParameters{}.batchSize;
+  double cellGap = 0.2;
+  double wallGap = -1.0; ///< < 0: 1 for one cell (centre 2 above the wall), else 0.2
+  std::string singleLayer = "table";
 };
 
-// The centres of the cells: one 2 above the wall, or a square grid 0.2 above it.
-std::vector<mesh::Vec3> cellCentres(int n)
+// The centres of the unit cells: one 2 above the wall, or a square grid 0.2 above it, the
+// neighbours 0.2 apart (other gaps from --wall-gap and --cell-gap).
+std::vector<mesh::Vec3> cellCentres(const BenchOptions& options)
 {
-  if (n == 1) {
-    return {mesh::Vec3(0.0, 2.0, 0.0)};
-  }
+  const int n = options.cells;
+  const double height = 1.0 + (options.wallGap >= 0.0 ? options.wallGap : n == 1 ? 1.0 : 0.2);
+  const double pitch = 2.0 + options.cellGap;
   const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
   std::vector<mesh::Vec3> centres;
   for (int c = 0; c < n; ++c) {
-    centres.emplace_back(2.2 * (c % columns), 1.2, 2.2 * (c / columns));
+    centres.emplace_back(pitch * (c % columns), height, pitch * (c / columns));
   }
   return centres;
+}
+
+// The largest error of a node's 3-vector against the reference's, over the reference's largest.
+double largestNodeError(const std::vector<double>& u, const std::vector<double>& reference)
+{
+  double error = 0.0, size = 0.0;
+  for (std::size_t k = 0; k + 2 < u.size(); k += 3) {
+    error = std::max(error, std::hypot(u[k] - reference[k], u[k + 1] - reference[k + 1], u[k + 2] - reference[k + 2]));
+    size = std::max(size, std::hypot(reference[k], reference[k + 1], reference[k + 2]));
+  }
+  return error / size;
 }
 
 double relativeDifference(const std::vector<double>& u, const std::vector<double>& reference)
@@ -148,6 +169,33 @@ double relativeDifference(const std::vector<double>& u, const std::vector<double
   return std::sqrt(difference / norm);
 }
 
+struct LayerErrors {
+  double singleLargest = 0.0, single2 = 0.0, doubleLargest = 0.0, double2 = 0.0;
+};
+
+// The single layer of the membrane load and the double layer (subtracted form) of a smooth
+// density, the rigid rotation about z plus a stretch, against the direct sums.
+LayerErrors layerErrors(BoundaryIntegralSolver& fast, BoundaryIntegralSolver& direct, const std::vector<double>& loads)
+{
+  LayerErrors out;
+  const LoadDensity load = LoadDensity::constantOverElements(loads);
+  const std::vector<double> single = fast.singleLayer(load), singleReference = direct.singleLayer(load);
+  out.singleLargest = largestNodeError(single, singleReference);
+  out.single2 = relativeDifference(single, singleReference);
+  std::vector<double> density = direct.surfaces().positions();
+  for (std::size_t g = 0; 3 * g < density.size(); ++g) {
+    const double x = density[3 * g], y = density[3 * g + 1];
+    density[3 * g] = -y + 0.2 * x;
+    density[3 * g + 1] = x;
+    density[3 * g + 2] = 0.1;
+  }
+  const std::vector<double> dbl = fast.doubleLayer(density.data(), DoubleLayerForm::Subtracted);
+  const std::vector<double> dblReference = direct.doubleLayer(density.data(), DoubleLayerForm::Subtracted);
+  out.doubleLargest = largestNodeError(dbl, dblReference);
+  out.double2 = relativeDifference(dbl, dblReference);
+  return out;
+}
+
 template <class Kernel>
 int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& options)
 {
@@ -156,7 +204,9 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
   const int repeat = options.repeat;
   const double lambda = options.lambda;
   core::require<core::InputError>(options.cells >= 1, "--cells=", options.cells, ": give at least 1 cell.");
-  const std::vector<mesh::Vec3> centres = cellCentres(options.cells);
+  core::require<core::InputError>(options.cellGap > 0.0 && options.wallGap != 0.0, "--cell-gap=", options.cellGap,
+                                  ", --wall-gap=", options.wallGap, ": the cells must not touch.");
+  const std::vector<mesh::Vec3> centres = cellCentres(options);
   std::vector<mesh::SurfaceMesh> cells;
   for (const mesh::Vec3& centre : centres) {
     mesh::Placement placement;
@@ -171,6 +221,11 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
     auto parameters = fastsum::treecodeParametersForTolerance(options.tolerance);
     parameters.leafSize = options.leafSize;
     parameters.batchSize = options.batchSize;
+    if (options.singleLayer != "table") {
+      core::require<core::InputError>(options.singleLayer == "float" || options.singleLayer == "double",
+                                      "--single-layer=", options.singleLayer, ": use table, float or double.");
+      parameters.singlePrecision = options.singleLayer == "float";
+    }
     discretisation.farField = std::make_shared<fastsum::TreecodeBackEnd>(parameters);
   } else if (options.summation != "Direct") {
     throw core::InputError(core::message("--summation=", options.summation, ": use Direct or Treecode."));
@@ -205,6 +260,7 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
   Timing directTime;
   double difference = -1.0;
   Timing reference;
+  LayerErrors layers;
   if (options.summation == "Direct") {
     directTime = timeIt(*comm, repeat, [&] { sink += directSum(solver.layerPotentials(), loads, direct); });
   } else {
@@ -216,6 +272,7 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
       exact = directSolver.nodeVelocities(LoadDensity::constantOverElements(loads), flow);
     });
     difference = relativeDifference(solution.velocities, exact.velocities);
+    layers = layerErrors(solver, directSolver, loads);
   }
   const long long nearLocal = solver.layerPotentials().nearSingularElementCount();
   long long nearTotal = 0;
@@ -230,7 +287,8 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
                 options.summation.c_str());
     if (options.summation == "Treecode") {
       const auto p = fastsum::treecodeParametersForTolerance(options.tolerance);
-      const char* precision = p.singlePrecision ? "single layer in float" : "double";
+      const bool single = options.singleLayer == "table" ? p.singlePrecision : options.singleLayer == "float";
+      const char* precision = single ? "single layer in float" : "double";
       std::printf(" (tolerance %.0e: degree %d, theta %.2f, leaf size %d, %s)", options.tolerance, p.degree, p.theta,
                   options.leafSize, precision);
     }
@@ -254,6 +312,9 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
       std::printf("  speed-up over Direct     %8.2f  %8.2f\n", reference.wall / velocity.wall,
                   reference.cpu / velocity.cpu);
       std::printf("  relative difference from Direct (2-norm over the node velocities): %.2e\n", difference);
+      std::printf("  layers against Direct: single layer largest node error %.2e (2-norm %.2e), double layer "
+                  "largest node error %.2e (2-norm %.2e)\n",
+                  layers.singleLargest, layers.single2, layers.doubleLargest, layers.double2);
       const auto* fast = dynamic_cast<const fastsum::TreecodeSummation<Kernel>*>(&solver.layerPotentials().farField());
       if (fast) {
         const auto& lists = fast->treecode().interactionLists();
@@ -296,6 +357,9 @@ int main(int argc, char* argv[])
   clp.setOption("tolerance", &options.tolerance, "treecode tolerance (Operator/Treecode/Tolerance)");
   clp.setOption("leaf-size", &options.leafSize, "treecode leaf size (Operator/Treecode/Leaf size)");
   clp.setOption("batch-size", &options.batchSize, "most targets in a treecode batch (<= 128)");
+  clp.setOption("cell-gap", &options.cellGap, "gap between neighbouring cells (units of the radius)");
+  clp.setOption("wall-gap", &options.wallGap, "gap between the cells and the wall (default 1 for one cell, else 0.2)");
+  clp.setOption("single-layer", &options.singleLayer, "treecode single layer: table (the tolerance's), float, double");
   // Our usage, with the defaults, before MPI and Kokkos start (Kokkos answers --help with its own).
   if (capsula::core::asksForHelp(argc, argv)) {
     clp.printHelpMessage("bench_operators", std::cout);

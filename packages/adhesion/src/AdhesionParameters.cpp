@@ -140,11 +140,15 @@ void declareAdhesionParameters(Teuchos::ParameterList& adhesion)
                       "y^2 / (2 k_B T)), forward rate k_on0 n_L exp(-sigma_ts y^2 / (2 k_B T)) (Dembo, "
                       "Torney, Saxman & Hammer, Proc R Soc B 234:55, 1988).");
   core::declareChoice(adhesion, "Kinetics", stochasticName, {stochasticName, meanFieldName},
-                      "'Stochastic': each receptor binds with probability 1 - exp(-k_on dt) and each "
-                      "bond breaks with 1 - exp(-k_off dt) per step, from random numbers drawn per "
-                      "receptor and step (the same whatever the number of MPI ranks). 'Mean field': "
-                      "each receptor carries its expected bond occupancy, advanced by the exact "
-                      "solution of dp/dt = k_on (1 - p) - k_off p over the step (deterministic).");
+                      "'Stochastic': each receptor follows the two-state chain free <-> bound exactly "
+                      "over the step, binding and breaking as often as its rates make it (a bond "
+                      "breaks with probability 1 - exp(-k_off dt), a free receptor is bound at the end "
+                      "with k_on / (k_on + k_off) (1 - exp(-(k_on + k_off) dt))), from random numbers "
+                      "drawn per receptor and step (the same whatever the number of MPI ranks), so the "
+                      "bound fraction does not depend on the step. 'Mean field': each receptor carries "
+                      "its expected bond occupancy, advanced by the exact solution of dp/dt = k_on (1 "
+                      "- p) - k_off p over the step (deterministic). The rates are those at the end of "
+                      "the step, held over it.");
   core::declareInt(adhesion, "Seed", 1,
                    "Seed of the receptor placement and of the stochastic kinetics: the same seed "
                    "gives the same receptors and the same bond events.",

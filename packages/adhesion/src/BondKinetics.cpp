@@ -47,4 +47,18 @@ double eventProbability(double rate, double dt)
   return -std::expm1(-rate * dt);
 }
 
+double bindingProbability(double onRate, double offRate, double dt)
+{
+  const double sum = onRate + offRate;
+  if (onRate <= 0.0 || dt <= 0.0) {
+    return 0.0;
+  }
+  return onRate / sum * -std::expm1(-sum * dt);
+}
+
+double breakageTime(double rate, double u)
+{
+  return -std::log1p(-u) / rate;
+}
+
 } // namespace capsula::adhesion

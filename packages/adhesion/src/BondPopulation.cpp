@@ -45,22 +45,31 @@ void BondPopulation::setState(int r, const BondState& state)
 void BondPopulation::stochasticStep(BondState& state, const mesh::Vec3& x, double dt, std::uint64_t receptor,
                                     std::uint64_t step, BondEvents& events) const
 {
+  const std::uint64_t key = streamOf(stream_, receptor);
+  // A free receptor (from the start of the step, or from its bond's breakage at time s)
+  // binds a fresh bond to the point below it: the chain free <-> bound with that bond's rates.
+  const double kOn = onRate(settings_, x[1], x[0], x[2]);
+  const auto binds = [&](double interval) {
+    return kOn > 0.0 && counterUniform(settings_.seed, key, step, static_cast<std::uint64_t>(DrawPurpose::Formation)) <
+                            bindingProbability(kOn, offRate(settings_, std::abs(x[1])), interval);
+  };
   if (state.occupancy > 0.0) {
-    const double p = eventProbability(offRate(settings_, (x - state.anchor).norm()), dt);
-    if (counterUniform(settings_.seed, streamOf(stream_, receptor), step,
-                       static_cast<std::uint64_t>(DrawPurpose::Breakage)) < p) {
-      state.occupancy = 0.0;
-      ++events.broken;
+    const double kOff = offRate(settings_, (x - state.anchor).norm());
+    const double u = counterUniform(settings_.seed, key, step, static_cast<std::uint64_t>(DrawPurpose::Breakage));
+    if (u >= eventProbability(kOff, dt)) {
+      return; // survives the step
     }
+    ++events.broken;
+    state = BondState{};
+    if (!binds(dt - breakageTime(kOff, u))) {
+      return;
+    }
+  } else if (!binds(dt)) {
     return;
   }
-  const double p = eventProbability(onRate(settings_, x[1], x[0], x[2]), dt);
-  if (p > 0.0 && counterUniform(settings_.seed, streamOf(stream_, receptor), step,
-                                static_cast<std::uint64_t>(DrawPurpose::Formation)) < p) {
-    state.occupancy = 1.0;
-    state.anchor = footOnWall(x);
-    ++events.formed;
-  }
+  state.occupancy = 1.0;
+  state.anchor = footOnWall(x);
+  ++events.formed;
 }
 
 void BondPopulation::meanFieldStep(BondState& state, const mesh::Vec3& x, double dt) const

@@ -14,7 +14,9 @@ Teuchos::RCP<const Teuchos::ParameterList> validTreecodeParameters()
                     "Relative error (2-norm over the targets) allowed in the regular sums; sets the "
                     "interpolation degree, the acceptance parameter theta and the precision of the "
                     "single layer's sums (float from 1e-6 up, whose round-off of ~1e-7 it then "
-                    "allows) from a measured table (docs/fastsum.md). 1e-5 keeps it below the "
+                    "allows) from a measured table (docs/fastsum.md). One node's error, also where "
+                    "cells nearly touch, stays below max(2 x this, 3e-6) of the largest velocity "
+                    "(3e-6: the float round-off; 1e-7 sums in double). 1e-5 keeps it below the "
                     "discretisation error at level 3 (~1e-4).",
                     core::atLeast(1e-7), core::atMost(1e-1));
   core::declareInt(*treecode, "Leaf size", defaults.leafSize,

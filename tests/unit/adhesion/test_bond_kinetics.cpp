@@ -1,5 +1,6 @@
 // Bond kinetics against the master equation: lifetimes under a fixed force (Bell and Dembo),
-// the relaxation of the bound fraction under constant rates, and the mean field's exactness.
+// the relaxation of the bound fraction under constant rates, the mean field's exactness, and
+// the steady bound fraction of a clamped population at steps from 1e-3 to 1 times 1 / k_off.
 #include <capsula/adhesion/BondKinetics.hpp>
 #include <capsula/adhesion/BondPopulation.hpp>
 #include <capsula/adhesion/Receptors.hpp>
@@ -7,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace adhesion = capsula::adhesion;
@@ -184,4 +187,124 @@ TEST(BondKinetics, MeanFieldSurvivalIsTheExponentialOfTheOffRate)
     // exp(-k dt) applied 50 times: exact up to 50 roundings.
     EXPECT_NEAR(bonds.state(0).occupancy, std::exp(-k * 50 * dt), 1e-13);
   }
+}
+
+namespace {
+
+// The KineticsEnsemble flattened onto the plane y = height: every receptor at that height,
+// all with the same rates, held still (a clamped population).
+struct ClampedEnsemble : KineticsEnsemble {
+  explicit ClampedEnsemble(double height)
+  {
+    for (std::size_t i = 1; i < x.size(); i += 3) {
+      x[i] = height;
+    }
+  }
+};
+
+struct SteadyFraction {
+  double mean = 0.0;
+  double standardError = 0.0;
+};
+
+// The bound fraction of a clamped stochastic population started at the exact steady fraction
+// `exact`, stepped with dt for 3 relaxation times 1 / (k_on + k_off) and then averaged over
+// every step of `window` relaxation times (at least 16 steps). Its standard error, of the
+// two-state chain: the steps' fractions have variance p (1 - p) / N and correlation
+// rho = exp(-(k_on + k_off) dt) from one step to the next, so the mean of M steps has variance
+// p (1 - p) / (N M) (1 + rho) / (1 - rho) (to O(1/M)).
+SteadyFraction stochasticSteadyFraction(const adhesion::AdhesionSettings& s, const ClampedEnsemble& e, double rate,
+                                        double exact, double dt, double window)
+{
+  adhesion::BondPopulation bonds(s, 0, e.receptors.size());
+  const int n = e.receptors.size();
+  for (int r = 0; r < static_cast<int>(std::lround(exact * n)); ++r) {
+    const Vec3 p = e.receptors.position(e.sphere, e.x.data(), r);
+    bonds.setState(r, {1.0, Vec3(p[0], 0.0, p[2])});
+  }
+  const auto burnIn = static_cast<std::uint64_t>(std::ceil(3.0 / (rate * dt)));
+  const auto averaged = std::max<std::uint64_t>(16, static_cast<std::uint64_t>(std::ceil(window / (rate * dt))));
+  double sum = 0.0;
+  for (std::uint64_t step = 1; step <= burnIn + averaged; ++step) {
+    bonds.update(e.sphere, e.receptors, e.x.data(), dt, step);
+    if (step > burnIn) {
+      sum += bonds.bondCount() / n;
+    }
+  }
+  const double rho = std::exp(-rate * dt), m = static_cast<double>(averaged);
+  return {sum / m, std::sqrt(exact * (1.0 - exact) / (n * m) * (1.0 + rho) / (1.0 - rho))};
+}
+
+// Steps the mean-field occupancy of one clamped receptor from 0 for 40 relaxation times
+// (exp(-40) ~ 4e-18 of the start left) and returns it.
+double meanFieldSteadyFraction(adhesion::AdhesionSettings s, const ClampedEnsemble& e, double rate, double dt)
+{
+  s.kinetics = adhesion::BondKinetics::MeanField;
+  adhesion::BondPopulation bonds(s, 0, e.receptors.size());
+  const auto steps = static_cast<std::uint64_t>(std::ceil(40.0 / (rate * dt)));
+  for (std::uint64_t step = 1; step <= steps; ++step) {
+    bonds.update(e.sphere, e.receptors, e.x.data(), dt, step, 0, 1);
+  }
+  return bonds.state(0).occupancy;
+}
+
+// The steady fraction of a clamped population at steps dt = c / k_off, c = 1e-3 .. 1: the
+// mean field from 0 to round-off, the stochastic one (>= 12,000 receptors averaged over 20
+// relaxation times) to 1%.
+void expectSteadyFractionAtEveryStep(const adhesion::AdhesionSettings& s, double height)
+{
+  const ClampedEnsemble e(height);
+  ASSERT_GE(e.receptors.size(), 10000);
+  const Vec3 x0 = e.receptors.position(e.sphere, e.x.data(), 0);
+  const double kOn = adhesion::onRate(s, height, x0[0], x0[2]), kOff = adhesion::offRate(s, height);
+  const double rate = kOn + kOff, exact = kOn / rate;
+  for (const double c : {1e-3, 1e-2, 1e-1, 1.0}) {
+    const double dt = c / kOff;
+    // The mean field solves the master equation exactly over each step: round-off only.
+    EXPECT_NEAR(meanFieldSteadyFraction(s, e, rate, dt), exact, 1e-12) << "k_off dt = " << c;
+    // 20 relaxation times hold a standard error of 0.2% of p for p ~ 2/3: 1% is 5 SE.
+    const SteadyFraction f = stochasticSteadyFraction(s, e, rate, exact, dt, 20.0);
+    ASSERT_LT(4.0 * f.standardError, 0.01 * exact) << "the window is too short to test 1%";
+    EXPECT_NEAR(f.mean, exact, 0.01 * exact) << "k_off dt = " << c;
+    std::printf("k_off dt = %-6g stochastic %.5f (SE %.5f), exact %.5f, one event per step would give %.5f\n", c,
+                f.mean, f.standardError, exact,
+                adhesion::eventProbability(kOn, dt) /
+                    (adhesion::eventProbability(kOn, dt) + adhesion::eventProbability(kOff, dt)));
+  }
+}
+
+} // namespace
+
+// One event per receptor per step settles at p_on / (p_on + p_off): 0.578 at k_on = 2, k_off =
+// 1, dt = 1 against 2/3. The exact two-state chain over the step settles at 2/3 at every step.
+TEST(BondKinetics, SteadyFractionDoesNotDependOnTheStep)
+{
+  adhesion::AdhesionSettings s; // rates independent of the stretch (sigma ~ 0), as above
+  s.springConstant = 1e-12;
+  s.reactiveCompliance = 0.0;
+  s.thermalEnergy = 1.0;
+  s.reactionDistance = 0.05;
+  s.onRate = 0.02;
+  s.ligandDensity = 100.0; // k_on = 2
+  s.offRate = 1.0;
+  expectSteadyFractionAtEveryStep(s, 0.03);
+}
+
+// Bell loading: bonds stretched by y = 0.01 (|F| = 0.1, gamma |F| / kT = 1: k_off = e), the
+// on-rate from detailed balance (k_on = k_on0 n_L exp(sigma y (gamma - y/2) / kT) = 300
+// e^-4 = 5.49): the same at every step, the force being fixed while the cell is held still.
+TEST(BondKinetics, BellSteadyFractionDoesNotDependOnTheStep)
+{
+  adhesion::AdhesionSettings s;
+  s.springConstant = 10.0;
+  s.equilibriumLength = 0.02;
+  s.reactiveCompliance = 1e-3;
+  s.thermalEnergy = 1e-4;
+  s.reactionDistance = 0.05;
+  s.onRate = 3.0;
+  s.ligandDensity = 100.0;
+  s.offRate = 1.0;
+  EXPECT_NEAR(adhesion::offRate(s, 0.03), std::exp(1.0), 1e-14 * std::exp(1.0));
+  EXPECT_NEAR(adhesion::onRate(s, 0.03, 0.0, 0.0), 300.0 * std::exp(-4.0), 1e-12);
+  expectSteadyFractionAtEveryStep(s, 0.03);
 }

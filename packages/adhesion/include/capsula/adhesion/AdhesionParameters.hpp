@@ -23,7 +23,7 @@ enum class BondModel {
 
 /// How bonds form and break.
 enum class BondKinetics {
-  Stochastic, ///< Monte Carlo per receptor and step
+  Stochastic, ///< Monte Carlo per receptor: the exact two-state chain over each step
   MeanField   ///< the expected bond occupancy per receptor, deterministic
 };
 

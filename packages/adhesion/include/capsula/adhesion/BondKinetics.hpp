@@ -25,8 +25,20 @@ double offRate(const AdhesionSettings& s, double length);
 double onRate(const AdhesionSettings& s, double height, double x, double z);
 
 /// 1 - exp(-rate dt): the probability that a Poisson event of the given rate happens within
-/// dt (the Monte Carlo step of Hammer & Apte 1992).
+/// dt (a bond's breakage within a step).
 double eventProbability(double rate, double dt);
+
+/// The probability that a receptor free at the start of an interval dt is bound at its end,
+/// for the two-state chain free <-> bound of constant rates k_on, k_off:
+///   P = k_on / (k_on + k_off) (1 - exp(-(k_on + k_off) dt)),
+/// binding and breaking as often as the rates make them within dt (exact for any k dt; the
+/// bound fraction of a clamped population settles at k_on / (k_on + k_off) for every step).
+double bindingProbability(double onRate, double offRate, double dt);
+
+/// The time at which a bond of off-rate `rate` breaks, given the draw u in [0, 1) that
+/// broke it within the step (u < eventProbability(rate, dt)): the inverse of the
+/// exponential law's distribution, -ln(1 - u) / rate, in [0, dt).
+double breakageTime(double rate, double u);
 
 /// |F| = sigma |L - lambda|, the magnitude of the bond's spring force.
 double bondForceMagnitude(const AdhesionSettings& s, double length);

@@ -9,12 +9,20 @@
 //   F = -sigma (L - lambda) (x - anchor) / L     (times p in the mean field),
 // towards the anchor when stretched, away when compressed.
 //
-// Stochastic step (rates from BondKinetics.hpp at the start of the step): a free receptor
-// binds if u_f < 1 - exp(-k_on dt), a bond breaks if u_b < 1 - exp(-k_off dt); a bond formed
-// in a step does not break in the same step. u_f, u_b are counter-based draws of (seed,
-// stream, receptor, step) (CounterRandom.hpp), so the events do not depend on which rank
-// holds a receptor or on the order receptors are visited: update() takes a range of
-// receptors, and ranges updated in any order or on any rank give the same states.
+// Stochastic step, with the rates of BondKinetics.hpp at the receptor's position after the
+// step, frozen over it: the exact two-state chain free <-> bound over dt, a receptor binding
+// and breaking as often as the rates make it. A bond breaks if u_b < 1 - exp(-k_off dt), at
+// s = -ln(1 - u_b) / k_off; a receptor free at the start (or from s on) is bound at the end
+// if u_f < k_on / (k_on + k_off') (1 - exp(-(k_on + k_off') t)), t = dt (or dt - s), k_off'
+// the rate of a fresh bond to the point below it, where that bond is anchored. For rates
+// constant over the step this is the law of the continuous-time process for every k dt: the
+// bound fraction of a clamped population settles at k_on / (k_on + k_off) whatever the step
+// (one event per receptor per step, the Monte Carlo of Hammer & Apte 1992, settles at
+// p_on / (p_on + p_off), p = 1 - exp(-k dt), instead: 0.578 for k_on = 2, k_off = 1, dt = 1,
+// against 2/3). u_f, u_b are counter-based draws of (seed, stream, receptor, step)
+// (CounterRandom.hpp), so the events do not depend on which rank holds a receptor or on the
+// order receptors are visited: update() takes a range of receptors, and ranges updated in any
+// order or on any rank give the same states.
 //
 // Mean-field step: p <- p_eq + (p - p_eq) exp(-(k_on + k_off) dt), p_eq = k_on / (k_on +
 // k_off), the exact solution of the master equation dp/dt = k_on (1 - p) - k_off p with the
