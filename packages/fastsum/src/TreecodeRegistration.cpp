@@ -15,7 +15,8 @@ Teuchos::RCP<const Teuchos::ParameterList> validTreecodeParameters()
                     "interpolation degree, the acceptance parameter theta and the precision of the "
                     "single layer's sums (float from 1e-6 up, whose round-off of ~1e-7 it then "
                     "allows) from a measured table (docs/fastsum.md). 1e-5 keeps it below the "
-                    "discretisation error at level 3 (~1e-4).",
+                    "discretisation error at level 3 (~1e-4). Has no effect under another "
+                    "'Operator/Summation': a value other than the default is refused there.",
                     core::atLeast(1e-7), core::atMost(1e-1));
   core::declareInt(*treecode, "Leaf size", defaults.leafSize,
                    "Most quadrature points in a leaf cluster of the source tree; smaller leaves mean "
