@@ -19,6 +19,7 @@
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/operators/ShearRate.hpp>
 #include <capsula/scene/NodesAboveWall.hpp>
+#include <capsula/scene/SceneBounds.hpp>
 #include <capsula/scene/UnfoldedMembranes.hpp>
 #include <capsula/scene/SceneDescription.hpp>
 #include <capsula/scene/VelocityJacobian.hpp>
@@ -62,6 +63,12 @@ timeint::TimeIntegrationSettings integrationSettings(const Teuchos::ParameterLis
                                                      const scene::SceneDescription& description)
 {
   auto settings = timeint::timeIntegrationSettings(deck.sublist("Time integration"));
+  // Auto judges stiffness by the stability limit: the deck's false (the 3D apps' default is
+  // true) would be overridden.
+  core::require<core::InputError>(settings.method != timeint::Method::Auto || settings.stabilityLimit,
+                                  "'Time integration/Stability limit' = false cannot hold with 'Time "
+                                  "integration/Method' = Auto, which judges stiffness by that limit: set it to true, "
+                                  "or choose RKF45 (explicit without the limit) or ROS34PW2 (stiff throughout).");
   settings.steadyCriterion = timeint::SteadyStateCriterion::Off;
   operators::requireNoSteadyStop(description.shearRate, "Flow/Shear rate", settings.steadyTolerance);
   settings.maximumStep = operators::limitStepToPeriod(settings.maximumStep, description.shearRate);
@@ -156,6 +163,14 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
     restore();
   }
   live_.build();
+  if (integrator_.settings().adaptive) { // the cells as the deck builds them (a restart's too)
+    std::vector<mesh::SurfaceMesh> cells;
+    for (int c = 0; c < live_.scene().numCells(); ++c) {
+      cells.push_back(live_.scene().cell(c));
+    }
+    scene::requireToleranceBelowCellSize(integrator_.settings().tolerance, "Time integration/Tolerance", description_,
+                                         scene::smallestSemiAxes(cells));
+  }
   outputs_.setCheckpointSections({&stateSection_, &outputs_, &live_, &tether_});
   // A stage state or step result with a node through the wall or a folded membrane rejects
   // the attempt (NodesAboveWall.hpp, UnfoldedMembranes.hpp).

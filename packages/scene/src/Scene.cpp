@@ -1,6 +1,7 @@
 #include "capsula/scene/Scene.hpp"
 
 #include "capsula/scene/CellPlacement.hpp"
+#include "capsula/scene/SceneBounds.hpp"
 
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
@@ -63,6 +64,7 @@ std::vector<mesh::SurfaceMesh> initialSurfaces(const SceneDescription& descripti
       requireWallGap(cells.back(), cell.path, description.minimumWallGap);
     }
   }
+  requireSceneWithinBounds(description, cells);
   return cells;
 }
 
