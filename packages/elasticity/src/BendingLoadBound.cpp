@@ -2,6 +2,7 @@
 
 #include <capsula/core/Error.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace capsula::elasticity {
