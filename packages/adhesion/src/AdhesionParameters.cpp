@@ -23,7 +23,8 @@ void declareDensitiesAndPatch(Teuchos::ParameterList& list)
   core::declareReal(list, "Receptor density", 50.0,
                     "Receptors per unit reference membrane area, in 1/a^2 (a the cell radius): each "
                     "element carries density x its reference area of them, placed at material points "
-                    "(50 puts ~630 on a sphere of radius a).",
+                    "(50 puts ~630 on a sphere of radius a). At most as many as fit in the "
+                    "machine's memory and in a receptor index (2^31 - 1) over the cells' reference area.",
                     core::atLeast(0.0));
   core::declareReal(list, "Ligand density", 100.0,
                     "Ligands per unit wall area, in 1/a^2. The forward rate of a receptor within reach "
@@ -45,7 +46,7 @@ void declareBondMechanics(Teuchos::ParameterList& list)
                     core::atLeast(0.0));
   core::declareReal(list, "Equilibrium length", 0.02,
                     "lambda / a: the unstressed bond length, in cell radii (20 nm on a 1 um cell "
-                    "is 0.02).",
+                    "is 0.02). At most 'Reaction distance' and, with contact, 'Contact/Range'.",
                     core::atLeast(0.0));
   core::declareReal(list, "Reaction distance", 0.05,
                     "r_0 / a: a free receptor can bind only while its height above the wall is at "
@@ -57,7 +58,9 @@ void declareBondMechanics(Teuchos::ParameterList& list)
                     "(on the unstressed shape): the bond pulls at the weighted mean of the 7-point "
                     "quadrature points within rho, weights w_q h_s (1 - r^2 / rho^2)^2, and its force "
                     "is shared by them, as a tether's foot. 0: a point, its force on its element's "
-                    "six nodes. A patch must hold at least three quadrature points.",
+                    "six nodes. A patch must hold at least three quadrature points, and its pulling "
+                    "point lie less than 'Reaction distance' - 'Equilibrium length' inside the "
+                    "unstressed membrane (on a sphere of radius R the depth is about rho^2 / (8 R)).",
                     core::atLeast(0.0));
   core::declareReal(list, "Thermal energy", 1e-4,
                     "k_B T / (G a^2): the thermal energy over the membrane's energy scale. Sets how "

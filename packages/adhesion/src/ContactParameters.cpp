@@ -16,8 +16,10 @@ void declareContactParameters(Teuchos::ParameterList& contact)
                     "(ContactRepulsion.hpp).");
   core::declareReal(contact, "Range", 0.05,
                     "delta / a: the gap, in cell radii, below which the repulsion acts (zero at and "
-                    "beyond it, smoothly). Keep it above the bonds' 'Equilibrium length' so that bonds "
-                    "can form where the repulsion holds the membrane.",
+                    "beyond it, smoothly). Must be below the smallest semi-axis of every cell (a wider "
+                    "repulsion reaches across the cell and folds it) and, with adhesion, at least the "
+                    "bonds' 'Equilibrium length' (so that bonds can form where the repulsion holds the "
+                    "membrane).",
                     core::greaterThan(0.0));
   core::declareReal(contact, "Strength", 10.0,
                     "p_0 / (G / a): the pressure scale. The pressure grows as p_0 delta / d at small "

@@ -22,6 +22,12 @@ CommandLineOptions parseCommandLine(int argc, const char* const* argv)
   CommandLineOptions options;
   const auto valueOf = [&](int& i, const std::string& option) -> std::string {
     require<InputError>(i + 1 < argc, "Option ", option, " needs a value (see --help).");
+    // An option in the value's place means the value was forgotten ("--set --output DIR"):
+    // taking it as the value would report the wrong mistake (DIR as a second deck).
+    const std::string next = argv[i + 1];
+    require<InputError>(next.rfind("--", 0) != 0, "Option ", option,
+                        " needs a value, but the next argument is the option '", next, "': give ", option,
+                        option == "--set" ? " \"List/Sub/Key=value\"" : " DIR", " before it (see --help).");
     return argv[++i];
   };
   for (int i = 1; i < argc; ++i) {

@@ -17,7 +17,8 @@ Teuchos::RCP<const Teuchos::ParameterList> validTreecodeParameters()
                     "allows) from a measured table (docs/fastsum.md). One node's error, also where "
                     "cells nearly touch, stays below max(2 x this, 3e-6) of the largest velocity "
                     "(3e-6: the float round-off; 1e-7 sums in double). 1e-5 keeps it below the "
-                    "discretisation error at level 3 (~1e-4).",
+                    "discretisation error at level 3 (~1e-4). Has no effect under another "
+                    "'Operator/Summation': a value other than the default is refused there.",
                     core::atLeast(1e-7), core::atMost(1e-1));
   core::declareInt(*treecode, "Leaf size", defaults.leafSize,
                    "Most quadrature points in a leaf cluster of the source tree; smaller leaves mean "

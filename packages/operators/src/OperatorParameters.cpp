@@ -142,12 +142,17 @@ SolverParameters readSolverParameters(const Teuchos::ParameterList& solver)
   return p;
 }
 
-void validate(const DiscretisationParameters& p)
+void requireTriangleRule(int points, const std::string& key)
 {
   const auto counts = quadrature::supportedTriangleRules();
-  core::require<core::InputError>(std::find(counts.begin(), counts.end(), p.quadraturePoints) != counts.end(),
-                                  "'Discretisation/Quadrature points' = ", p.quadraturePoints,
-                                  " has no symmetric triangle rule; use one of ", supportedRuleList(), ".");
+  core::require<core::InputError>(std::find(counts.begin(), counts.end(), points) != counts.end(), "'", key,
+                                  "' = ", points, " has no symmetric triangle rule; use one of ", supportedRuleList(),
+                                  ".");
+}
+
+void validate(const DiscretisationParameters& p)
+{
+  requireTriangleRule(p.quadraturePoints, "Discretisation/Quadrature points");
   core::require<core::InputError>(p.singularQuadraturePoints >= 2 && p.singularQuadraturePoints <= 32,
                                   "'Discretisation/Singular quadrature points' = ", p.singularQuadraturePoints,
                                   " must lie in [2, 32].");

@@ -138,14 +138,16 @@ void declareShearRateParameters(Teuchos::ParameterList& shearRate)
                       "Period). Tabulated: the two columns (time, shear rate) of 'Waveform file', "
                       "interpolated linearly and repeated with the period of its last time, divided by "
                       "their mean. The undisturbed flow of the instant is (k(t) y, 0, 0).");
-  core::declareReal(shearRate, "Amplitude", 0.5,
+  core::declareReal(shearRate, "Amplitude", kDefaultAmplitude,
                     "Pulsatile: the amplitude A of k = 1 + A sin(2 pi t / T), relative to the mean. A > 1 "
-                    "reverses the flow for part of the period and needs 'Allow reversal'.",
+                    "reverses the flow for part of the period and needs 'Allow reversal'. Another 'Form' "
+                    "with a value other than the default is refused (it would have no effect).",
                     core::atLeast(0.0));
-  core::declareReal(shearRate, "Period", 10.0,
+  core::declareReal(shearRate, "Period", kDefaultPeriod,
                     "Pulsatile: the period T, in units of 1/k_mean. 'Output/Interval' (tether2d: times "
-                    "lambda) must divide it into a whole number of outputs or be a whole number of "
-                    "periods, and the time step is at most T/20.",
+                    "lambda) must divide it into a whole number of outputs, be a whole number of "
+                    "periods or 0, and the time step is at most T/20. Another 'Form' with a value other "
+                    "than the default is refused (it would have no effect).",
                     core::greaterThan(0.0));
   core::declareString(shearRate, "Waveform file", "",
                       "Tabulated: a text file of two columns, time (from 0; the last time is the "
@@ -227,20 +229,42 @@ ShearRate readWaveformFile(const std::string& fileName, const std::string& key, 
   }
 }
 
+namespace {
+
+// A key of another form than the deck's, set to a value other than its default, would have
+// no effect: refused, as every key a scene does not use (docs/user-guide.md, "Keys without
+// effect").
+void requireUnusedAtDefault(bool unused, bool atDefault, const std::string& path, const std::string& key,
+                            const std::string& value, const std::string& form, const std::string& usedBy)
+{
+  core::require<core::InputError>(!unused || atDefault, "'", path, "/", key, "' = ", value, " has no effect with '",
+                                  path, "/Form' = ", form, ": it is read by Form ", usedBy, ". Set '", path,
+                                  "/Form' = ", usedBy, " or remove the key.");
+}
+
+} // namespace
+
 ShearRate readShearRate(const Teuchos::ParameterList& shearRate, const std::string& path)
 {
   const std::string form = shearRate.get<std::string>("Form");
+  const double amplitude = shearRate.get<double>("Amplitude"), period = shearRate.get<double>("Period");
+  const std::string waveform = shearRate.get<std::string>("Waveform file");
+  requireUnusedAtDefault(form != "Pulsatile", amplitude == kDefaultAmplitude, path, "Amplitude",
+                         core::message(amplitude), form, "Pulsatile");
+  requireUnusedAtDefault(form != "Pulsatile", period == kDefaultPeriod, path, "Period", core::message(period), form,
+                         "Pulsatile");
+  requireUnusedAtDefault(form != "Tabulated", waveform.empty(), path, "Waveform file", "'" + waveform + "'", form,
+                         "Tabulated");
   const bool allowReversal = shearRate.get<bool>("Allow reversal");
   if (form == "Pulsatile") {
-    const double amplitude = shearRate.get<double>("Amplitude");
     core::require<core::InputError>(allowReversal || amplitude <= 1.0, "'", path, "/Amplitude' = ", amplitude,
                                     " > 1 reverses the flow for part of the period (k = 1 + A sin(2 pi t / T) < 0); "
                                     "lower it to at most 1 or set '",
                                     path, "/Allow reversal' = true.");
-    return ShearRate::pulsatile(amplitude, shearRate.get<double>("Period"));
+    return ShearRate::pulsatile(amplitude, period);
   }
   if (form == "Tabulated") {
-    return readWaveformFile(shearRate.get<std::string>("Waveform file"), path + "/Waveform file", allowReversal);
+    return readWaveformFile(waveform, path + "/Waveform file", allowReversal);
   }
   return ShearRate();
 }
@@ -262,7 +286,8 @@ double limitStepToPeriod(double maximumStep, const ShearRate& rate)
 void requireOutputsCommensurate(const ShearRate& rate, const std::string& ratePath, double interval,
                                 const std::string& intervalKey, double timeScale)
 {
-  if (!rate.periodic()) {
+  // Interval 0 writes only the start and the end: no output falls at a phase of the period.
+  if (!rate.periodic() || interval == 0.0) {
     return;
   }
   const double period = rate.period();

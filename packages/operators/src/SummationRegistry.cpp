@@ -5,6 +5,8 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
 
+#include <sstream>
+
 namespace capsula::operators {
 
 namespace {
@@ -89,11 +91,43 @@ void declareSummationParameters(Teuchos::ParameterList& operatorList, const Summ
   }
 }
 
+namespace {
+
+// The settings of a back-end other than the chosen one have no effect: a value other than
+// its default is refused, as every key a scene does not use (docs/user-guide.md, "Keys
+// without effect").
+void requireUnusedBackEndsAtDefault(const Teuchos::ParameterList& operatorList, const SummationRegistry& summations,
+                                    const std::string& chosen)
+{
+  for (const auto& name : summations.names()) {
+    const auto& defaults = summations.validParameters(name);
+    if (name == chosen || defaults.is_null() || !operatorList.isSublist(name)) {
+      continue;
+    }
+    const Teuchos::ParameterList& given = operatorList.sublist(name);
+    for (auto it = given.begin(); it != given.end(); ++it) {
+      const std::string& key = given.name(it);
+      const Teuchos::ParameterEntry& entry = given.entry(it);
+      if (!defaults->isParameter(key) || entry.getAny() == defaults->getEntry(key).getAny()) {
+        continue;
+      }
+      std::ostringstream value;
+      value << entry.getAny();
+      throw core::InputError(core::message("'Operator/", name, "/", key, "' = ", value.str(),
+                                           " has no effect with 'Operator/Summation' = ", chosen,
+                                           ": set 'Operator/Summation' = ", name, " or remove the key."));
+    }
+  }
+}
+
+} // namespace
+
 std::shared_ptr<const FarFieldBackEnd> readFarFieldBackEnd(const Teuchos::ParameterList& operatorList,
                                                            const SummationRegistry& summations)
 {
   const std::string name =
       operatorList.isParameter("Summation") ? operatorList.get<std::string>("Summation") : directSummation;
+  requireUnusedBackEndsAtDefault(operatorList, summations, name);
   const Teuchos::ParameterList none;
   return summations.create(name, operatorList.isSublist(name) ? operatorList.sublist(name) : none);
 }

@@ -3,8 +3,10 @@
 #include "capsula/run/Collective.hpp"
 #include "capsula/run/IntegrationStateSection.hpp"
 #include "capsula/run/InterruptionWatch.hpp"
+#include "capsula/run/MethodSwitchRecord.hpp"
 #include "capsula/run/PairMetrics.hpp"
 #include "capsula/run/RestartDeck.hpp"
+#include "capsula/run/RestartRecord.hpp"
 #include "capsula/run/RunOutputs.hpp"
 #include "capsula/run/RunScene.hpp"
 #include "capsula/run/RunSummary.hpp"
@@ -19,6 +21,7 @@
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/operators/ShearRate.hpp>
 #include <capsula/scene/NodesAboveWall.hpp>
+#include <capsula/scene/SceneBounds.hpp>
 #include <capsula/scene/UnfoldedMembranes.hpp>
 #include <capsula/scene/SceneDescription.hpp>
 #include <capsula/scene/VelocityJacobian.hpp>
@@ -62,6 +65,12 @@ timeint::TimeIntegrationSettings integrationSettings(const Teuchos::ParameterLis
                                                      const scene::SceneDescription& description)
 {
   auto settings = timeint::timeIntegrationSettings(deck.sublist("Time integration"));
+  // Auto judges stiffness by the stability limit: the deck's false (the 3D apps' default is
+  // true) would be overridden.
+  core::require<core::InputError>(settings.method != timeint::Method::Auto || settings.stabilityLimit,
+                                  "'Time integration/Stability limit' = false cannot hold with 'Time "
+                                  "integration/Method' = Auto, which judges stiffness by that limit: set it to true, "
+                                  "or choose RKF45 (explicit without the limit) or ROS34PW2 (stiff throughout).");
   settings.steadyCriterion = timeint::SteadyStateCriterion::Off;
   operators::requireNoSteadyStop(description.shearRate, "Flow/Shear rate", settings.steadyTolerance);
   settings.maximumStep = operators::limitStepToPeriod(settings.maximumStep, description.shearRate);
@@ -121,7 +130,7 @@ private:
   // The stiff methods' Jacobian, built for the scene it belongs to (again after an adaption).
   std::shared_ptr<scene::VelocityJacobian> jacobian_;
   const scene::Scene* jacobianScene_ = nullptr;
-  std::vector<std::pair<double, std::string>> methodSwitches_; // Auto's, this process's
+  MethodSwitchRecord switches_; // Auto's, since the start of the run (a checkpoint section)
   bool restarted_ = false;
   bool tooClose_ = false;
   std::string stopReason_;
@@ -156,7 +165,15 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
     restore();
   }
   live_.build();
-  outputs_.setCheckpointSections({&stateSection_, &outputs_, &live_, &tether_});
+  if (integrator_.settings().adaptive) { // the cells as the deck builds them (a restart's too)
+    std::vector<mesh::SurfaceMesh> cells;
+    for (int c = 0; c < live_.scene().numCells(); ++c) {
+      cells.push_back(live_.scene().cell(c));
+    }
+    scene::requireToleranceBelowCellSize(integrator_.settings().tolerance, "Time integration/Tolerance", description_,
+                                         scene::smallestSemiAxes(cells));
+  }
+  outputs_.setCheckpointSections({&stateSection_, &outputs_, &live_, &tether_, &switches_});
   // A stage state or step result with a node through the wall or a folded membrane rejects
   // the attempt (NodesAboveWall.hpp, UnfoldedMembranes.hpp).
   integrator_.setDomainCheck([this](const std::vector<double>& y) {
@@ -202,7 +219,9 @@ void SceneRunner::restore()
   }
   requireSameApplication(checkpoint, options_.application, path);
   requireSameRun(deck_, checkpoint.deckXml, path);
-  io::loadSections(checkpoint, path, {&stateSection_, &outputs_, &live_, &tether_});
+  io::loadSections(checkpoint, path, {&stateSection_, &outputs_, &live_, &tether_, &switches_});
+  // The record the run continues, checked before anything is written.
+  requireTableUpToCheckpoint(*options_.restartDirectory, "metrics.csv", state_.time, outputs_.outputsWritten());
   const double end = integrator_.settings().endTime;
   core::require<core::InputError>(!state_.steady, "--restart ", *options_.restartDirectory,
                                   ": the run reached a steady state at t = ", state_.time,
@@ -249,7 +268,7 @@ timeint::ObserverVerdict SceneRunner::afterStep(timeint::IntegrationState& state
                                                 bool atOutputTime)
 {
   if (!report.switchReason.empty()) {
-    methodSwitches_.emplace_back(state.time, report.switchReason);
+    switches_.add(state.time, report.switchReason);
     log() << std::setprecision(6) << "t = " << state.time << ": " << report.switchReason << "\n";
   }
   attachJacobian(); // RunScene, observed first, may have rebuilt the scene
@@ -306,7 +325,7 @@ io::JsonValue SceneRunner::summary(const std::string& status, const std::string&
   return summary_.json(status, note, time, state_.statistics, [this](io::JsonValue& json) {
     json["time integration"]["method"] = timeint::toString(integrator_.settings().method);
     json["time integration"]["in use"] = integrator_.activeMethodName(state_);
-    for (const auto& [switchTime, reason] : methodSwitches_) {
+    for (const auto& [switchTime, reason] : switches_.switches()) {
       io::JsonValue change = io::JsonValue::object();
       change["time"] = switchTime;
       change["reason"] = reason;

@@ -2,6 +2,7 @@
 
 #include "capsula/scene/CellPlacement.hpp"
 #include "capsula/scene/NodesAboveWall.hpp"
+#include "capsula/scene/SceneBounds.hpp"
 
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
@@ -81,6 +82,7 @@ std::vector<mesh::SurfaceMesh> initialSurfaces(const SceneDescription& descripti
                         description.minimumGap);
     requireWallGaps(cells.back(), cell.path, description.domain, description.minimumWallGap);
   }
+  requireSceneWithinBounds(description, cells);
   return cells;
 }
 

@@ -1,5 +1,7 @@
 #include "capsula/scene/SceneBonds.hpp"
 
+#include "capsula/scene/ReceptorBounds.hpp"
+
 #include <capsula/core/Error.hpp>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -16,6 +18,7 @@ SceneBonds::SceneBonds(const adhesion::AdhesionSettings& settings, const std::ve
 {
   core::require(cells.size() == references.size(), "SceneBonds: ", references.size(), " reference shapes for ",
                 cells.size(), " cells");
+  requireReceptorsFit(settings_, cells, references);
   receptors_.reserve(cells.size());
   bonds_.reserve(cells.size());
   for (std::size_t c = 0; c < cells.size(); ++c) {
@@ -23,6 +26,7 @@ SceneBonds::SceneBonds(const adhesion::AdhesionSettings& settings, const std::ve
     receptors_.emplace_back(cells[c], references[c], settings_.receptorDensity, settings_.seed, stream);
     if (settings_.patchRadius > 0.0) {
       receptors_.back().spreadOverPatches(cells[c], references[c], settings_.patchRadius, "Adhesion/Patch radius");
+      requirePatchesWithinReach(settings_, receptors_.back(), cells[c], references[c]);
     }
     bonds_.emplace_back(settings_, stream, receptors_.back().size());
   }

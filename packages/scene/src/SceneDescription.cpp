@@ -41,9 +41,13 @@ void requireConsistentBending(const CellDescription& cell)
   core::require<core::InputError>(std::isfinite(cell.spontaneousCurvature), "'", cell.path,
                                   "/Spontaneous curvature' = ", cell.spontaneousCurvature, " is not a finite number.");
   if (cell.bendingModulus == 0.0) {
+    // Keys without effect are refused (docs/user-guide.md, "Keys without effect").
     core::require<core::InputError>(
         cell.spontaneousCurvature == 0.0, "'", cell.path, "/Spontaneous curvature' = ", cell.spontaneousCurvature,
         " has no effect without bending: set '", cell.path, "/Bending modulus' > 0 or the curvature to 0.");
+    core::require<core::InputError>(cell.bendingReference == "Flat", "'", cell.path, "/Bending reference' = '",
+                                    cell.bendingReference, "' has no effect without bending: set '", cell.path,
+                                    "/Bending modulus' > 0 or the reference to 'Flat'.");
     return;
   }
   core::require<core::InputError>(std::isfinite(cell.bendingModulus), "'", cell.path,
@@ -68,6 +72,22 @@ void requireUsableAdhesion(const SceneDescription& scene)
   core::require<core::InputError>(scene.wall,
                                   "'Adhesion/Enabled' is true but 'Wall/Enabled' is false: the "
                                   "bonds tie the membrane to ligands on the wall y = 0, which needs the wall.");
+  // A bond forms only within the reach r_0 and rests at lambda: with lambda > r_0 every new
+  // bond pulls the membrane down, and with lambda above the contact range the repulsion holds
+  // the membrane where no bond is at rest (no bond formed at t = 0.1 in either case).
+  const adhesion::AdhesionSettings& bonds = scene.adhesion;
+  core::require<core::InputError>(bonds.equilibriumLength <= bonds.reactionDistance,
+                                  "'Adhesion/Equilibrium length' = ", bonds.equilibriumLength,
+                                  " is above 'Adhesion/Reaction distance' = ", bonds.reactionDistance,
+                                  ": a bond forms only within the reach, and would pull the membrane below it at once. "
+                                  "Give a length <= ",
+                                  bonds.reactionDistance, " (or a longer reach).");
+  core::require<core::InputError>(!scene.contact.enabled || bonds.equilibriumLength <= scene.contact.range,
+                                  "'Adhesion/Equilibrium length' = ", bonds.equilibriumLength,
+                                  " is above 'Contact/Range' = ", scene.contact.range,
+                                  ": the repulsion holds the membrane at a gap where no bond is at rest. Give a length "
+                                  "<= ",
+                                  scene.contact.range, " (or a wider range).");
   for (const auto& cell : scene.cells) {
     core::require<core::InputError>(cell.membraneForces == "Virtual work", "'Adhesion/Enabled' is true but '",
                                     cell.path,

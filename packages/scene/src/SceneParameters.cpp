@@ -88,18 +88,21 @@ void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double
                     "capillary number times the cell radius squared (Helfrich energy (k_b/2) int "
                     "(2H - c0)^2 dA, docs/membrane-forces.md). 0 builds no bending term. A red cell "
                     "has E_b ~ 0.005-0.03 (k_b ~ 2e-19 J, G ~ 5e-6 N/m, a ~ 2.8 um). Needs 'Membrane "
-                    "forces' = 'Virtual work'.",
+                    "forces' = 'Virtual work'. At most 1e100 Ca / (|c0| + 1/l3)^3 (l3 the smallest "
+                    "semi-axis of the cell): beyond it the bending loads overflow the run's arithmetic.",
                     core::atLeast(0.0));
   core::declareReal(cell, "Spontaneous curvature", 0.0,
                     "c0 a: the total curvature 2H at which the membrane carries no bending moment, "
                     "times the cell radius (outward normal: a sphere of radius R has 2H = 2/R, so a "
                     "sphere with c0 = 2/R is free of bending moments). Needs a 'Bending modulus' > 0 "
-                    "and 'Bending reference' = 'Flat'.");
+                    "and 'Bending reference' = 'Flat'. |c0| at most (1e100 Ca / E_b)^(1/3) - 1/l3 (l3 "
+                    "the smallest semi-axis of the cell): beyond it the bending loads overflow.");
   core::declareChoice(cell, "Bending reference", "Flat", {"Flat", "Initial shape"},
                       "The curvature at which the bending energy vanishes. 'Flat': the spontaneous "
                       "curvature c0 everywhere. 'Initial shape': each material point's own 2H in "
                       "the cell's initial shape, so that the shape the deck builds (a biconcave red "
-                      "cell, say) is free of bending moments.");
+                      "cell, say) is free of bending moments. 'Initial shape' needs a 'Bending modulus' "
+                      "> 0 (refused without it, as a key without effect).");
   core::declareReal(cell, "Viscosity ratio", 0.0,
                     "lambda of this cell (its internal viscosity over the external one), for suspensions of "
                     "cells of different kinds (red cells at 5, platelets at 1). 0, the default: "

@@ -46,13 +46,8 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   operators::DiscretisationParameters discretisation =
       operators::readDiscretisationParameters(deck.sublist("Discretisation"));
   if (settings_.quadraturePoints > 0) {
+    operators::requireTriangleRule(settings_.quadraturePoints, "Solver/Stiff/Quadrature points");
     discretisation.quadraturePoints = settings_.quadraturePoints;
-    try {
-      operators::validate(discretisation);
-    } catch (const core::InputError& e) {
-      throw core::InputError(core::message("'Solver/Stiff/Quadrature points' = ", settings_.quadraturePoints,
-                                           " has no symmetric triangle rule: ", e.what()));
-    }
   }
   frozen_ = kernels.create(scene.kernelKey(), scene.comm(),
                            operators::CellSurfaces(std::move(cells), description.viscosityRatios()), discretisation,

@@ -5,9 +5,11 @@
 #include <capsula/contour/ContourMetrics.hpp>
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
+#include <capsula/elasticity/BendingLoadBound.hpp>
 #include <capsula/elasticity/HookeanLaw2D.hpp>
 #include <capsula/elasticity/Prestress2D.hpp>
 
+#include <cmath>
 #include <optional>
 #include <sstream>
 
@@ -49,6 +51,13 @@ CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& com
   core::require<core::InputError>(!flow.wall || cell.lowestPointHeight > 0.0,
                                   "Cell/Lowest point height must be > 0 above the wall, got ", cell.lowestPointHeight,
                                   ": raise it or set Wall/Enabled to false.");
+  elasticity::BendingBoundInput bending; // the ellipse's sharpest curvature a / b^2 = AR^(3/2)
+  bending.modulus = cell.bendingModulus;
+  bending.shapeCurvature = std::pow(cell.aspectRatio, 1.5);
+  bending.capillaryNumber = flow.conditions.capillaryNumber;
+  bending.modulusKey = "Cell/Bending modulus";
+  bending.capillaryKey = "Flow/Capillary number";
+  elasticity::requireRepresentableBending(bending);
   const contour::Contour initial(referenceNodes_);
   referenceLength_ = initial.length();
   referenceArea_ = contour::enclosedArea(initial);

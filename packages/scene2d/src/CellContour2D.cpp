@@ -53,7 +53,7 @@ void declareCellParameters2D(Teuchos::ParameterList& cell)
                       "Initial shape: the curvature of the membrane's unstressed reference contour at each "
                       "material point (the initial contour, shrunk by 1 + Cell/Prestress), so that the "
                       "initial cell is free of bending moment when unstressed. Only read when Bending "
-                      "modulus > 0.");
+                      "modulus > 0 (refused without it, as a key without effect).");
 }
 
 CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell)
@@ -71,6 +71,11 @@ CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell)
                                   " needs 'Cell/Tether spline ends' = NotAKnot: Natural ends force kappa = 0 at "
                                   "the tether, which the bending load turns into a spurious tether force that grows "
                                   "with the number of points (docs/tether2d.md)");
+  // Keys without effect are refused (docs/user-guide.md, "Keys without effect").
+  core::require<core::InputError>(s.bendingModulus > 0.0 || cell.get<std::string>("Bending reference") == "Flat",
+                                  "'Cell/Bending reference' = '", cell.get<std::string>("Bending reference"),
+                                  "' has no effect without bending: set 'Cell/Bending modulus' > 0 or the reference to "
+                                  "'Flat'.");
   s.bendingReference = cell.get<std::string>("Bending reference") == "Flat"
                            ? elasticity::BendingReference2D::Flat
                            : elasticity::BendingReference2D::InitialShape;

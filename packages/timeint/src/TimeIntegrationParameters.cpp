@@ -28,7 +28,8 @@ void declareTimeIntegrationParameters(Teuchos::ParameterList& list, bool stabili
   declareReal(list, "Tolerance", 1.0e-6,
               "Local error tolerance. RKF45: eps of eq 3.50 on the largest coordinate error "
               "|x5 - x4| of a step (the thesis used 1e-10 in 3D, 1e-6 in 2D). DormandPrince45: "
-              "absolute tolerance of the scaled RMS error norm.",
+              "absolute tolerance of the scaled RMS error norm. cell3d and twocell3d (lengths in cell "
+              "radii): at most 1% of the smallest semi-axis of any cell.",
               greaterThan(0.0));
   declareReal(list, "Relative tolerance", 0.0,
               "DormandPrince45 only: relative tolerance added to 'Tolerance' in the error "
@@ -48,7 +49,8 @@ void declareTimeIntegrationParameters(Teuchos::ParameterList& list, bool stabili
               "iteration, a few extra right-hand sides every 'Stability check interval' steps) "
               "and r the method's real stability boundary (3.02 for RKF45). Without it a loose "
               "'Tolerance' lets the error control accept steps on which an elastic membrane's "
-              "fastest mode grows, and the membrane folds.");
+              "fastest mode grows, and the membrane folds. Method Auto always uses it: in cell3d "
+              "and twocell3d (default true) a deck's false is refused with Auto.");
   declareInt(list, "Stability check interval", 10,
              "Accepted steps between two estimates of the fastest decay rate (the first is made "
              "at the first step, and again after anything moves the nodes between steps).",

@@ -268,6 +268,17 @@ TEST(SummationParameters, DeckSelectsTheBackEndFromTheRegistry)
   const auto& parameters = dynamic_cast<const fastsum::TreecodeBackEnd&>(*backEnd).parameters();
   EXPECT_EQ(parameters.degree, fastsum::treecodeParametersForTolerance(1e-3).degree);
   EXPECT_EQ(parameters.leafSize, fastsum::TreecodeParameters().leafSize);
+  // Back to Direct with the treecode's tolerance left at 1e-3: a key without effect, refused.
+  deck.set("Summation", "Direct");
+  try {
+    operators::readFarFieldBackEnd(deck, summations);
+    FAIL() << "a treecode tolerance under Direct summation was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'Operator/Treecode/Tolerance' = 0.001 has no effect with "
+                                         "'Operator/Summation' = Direct: set 'Operator/Summation' = Treecode"),
+              std::string::npos)
+        << e.what();
+  }
 
   Teuchos::ParameterList wrong("Operator");
   wrong.set("Summation", "FMM");

@@ -173,6 +173,28 @@ TEST(ShearRate, ReadsTheDeckAndRefusesAReversingAmplitude)
   EXPECT_EQ(capsula::operators::readShearRate(list, "Flow/Shear rate").minimum(), 0.0);
 }
 
+// A pulsatile key under another form, or a waveform file under a form that reads none, would
+// be ignored: refused, naming the key, its value and the form that reads it.
+TEST(ShearRate, KeysOfAnotherFormAreRefused)
+{
+  Teuchos::ParameterList steady = shearRateList("Steady");
+  steady.set("Amplitude", 0.3);
+  const std::string amplitude = inputError([&] { capsula::operators::readShearRate(steady, "Flow/Shear rate"); });
+  EXPECT_NE(amplitude.find("'Flow/Shear rate/Amplitude' = 0.3 has no effect with 'Flow/Shear rate/Form' = Steady"),
+            std::string::npos)
+      << amplitude;
+  EXPECT_NE(amplitude.find("Set 'Flow/Shear rate/Form' = Pulsatile"), std::string::npos) << amplitude;
+  Teuchos::ParameterList pulsatile = shearRateList("Pulsatile");
+  pulsatile.set("Waveform file", std::string("w.dat"));
+  const std::string waveform = inputError([&] { capsula::operators::readShearRate(pulsatile, "Flow/Shear rate"); });
+  EXPECT_NE(waveform.find("'Flow/Shear rate/Waveform file' = 'w.dat' has no effect with 'Flow/Shear rate/Form' = "
+                          "Pulsatile"),
+            std::string::npos)
+      << waveform;
+  // At their defaults the other form's keys are what every validated deck holds.
+  EXPECT_EQ(inputError([&] { capsula::operators::readShearRate(shearRateList("Steady"), "Flow/Shear rate"); }), "");
+}
+
 TEST(ShearRate, OutputsMustSampleEveryPeriodAtTheSamePhases)
 {
   using capsula::operators::requireOutputsCommensurate;
@@ -181,6 +203,7 @@ TEST(ShearRate, OutputsMustSampleEveryPeriodAtTheSamePhases)
   EXPECT_EQ(inputError([&] { requireOutputsCommensurate(rate, path, 0.1, key); }), ""); // 10 per period
   EXPECT_EQ(inputError([&] { requireOutputsCommensurate(rate, path, 1.0, key); }), "");
   EXPECT_EQ(inputError([&] { requireOutputsCommensurate(rate, path, 3.0, key); }), ""); // every third period
+  EXPECT_EQ(inputError([&] { requireOutputsCommensurate(rate, path, 0.0, key); }), ""); // the start and the end only
   const std::string message = inputError([&] { requireOutputsCommensurate(rate, path, 0.3, key); });
   EXPECT_NE(message.find("'Output/Interval' = 0.3 does not divide"), std::string::npos) << message;
   EXPECT_NE(message.find("'Flow/Shear rate/Period'"), std::string::npos) << message;

@@ -84,6 +84,9 @@ DiscretisationParameters readDiscretisationParameters(const Teuchos::ParameterLi
 /// 'Solver/Belos/<key>' for an entry the chosen method does not take.
 SolverParameters readSolverParameters(const Teuchos::ParameterList& solver);
 
+/// Throws core::InputError naming `key` unless a symmetric triangle rule has `points` points.
+void requireTriangleRule(int points, const std::string& key);
+
 /// Throws core::InputError naming the offending field unless the values are usable (for the
 /// solver: also the method and its Belos entries, validateKrylovSettings in KrylovMethod.hpp).
 void validate(const DiscretisationParameters& parameters);

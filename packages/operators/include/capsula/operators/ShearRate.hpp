@@ -59,6 +59,10 @@ private:
   std::vector<double> values_;
 };
 
+/// The defaults of the pulsatile form's keys (a key of another form must keep its default).
+constexpr double kDefaultAmplitude = 0.5;
+constexpr double kDefaultPeriod = 10.0;
+
 /// Declares Form, Amplitude, Period, Waveform file and Allow reversal in `shearRate` (the
 /// "Flow/Shear rate" sublist).
 void declareShearRateParameters(Teuchos::ParameterList& shearRate);

@@ -66,6 +66,8 @@ public:
 
   /// The time of the last output, its samples, and the first cell's D12 there.
   double lastTime() const { return lastTime_; }
+  /// The rows written to metrics.csv since the start of the run (a restart's included).
+  std::int64_t outputsWritten() const { return outputsWritten_; }
   const std::vector<CellSample>& lastSamples() const { return lastSamples_; }
   /// The first cell's D12 at `time` if the last output of this process was at that time;
   /// none before the first output and between outputs (the state has moved on since).
