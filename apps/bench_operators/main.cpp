@@ -24,6 +24,7 @@
 //              for the owned nodes (no corrections): the floor the evaluation is compared to;
 //   memory     the peak resident memory of every rank (MiB) after the evaluations with
 //              --summation, before a Treecode run builds its Direct reference.
+#include <capsula/fastsum/LargestNodeError.hpp>
 #include <capsula/core/CommandLine.hpp>
 #include <capsula/core/Error.hpp>
 #include <capsula/core/MpiSessionDirectory.hpp>
@@ -148,16 +149,7 @@ std::vector<mesh::Vec3> cellCentres(const BenchOptions& options)
   return centres;
 }
 
-// The largest error of a node's 3-vector against the reference's, over the reference's largest.
-double largestNodeError(const std::vector<double>& u, const std::vector<double>& reference)
-{
-  double error = 0.0, size = 0.0;
-  for (std::size_t k = 0; k + 2 < u.size(); k += 3) {
-    error = std::max(error, std::hypot(u[k] - reference[k], u[k + 1] - reference[k + 1], u[k + 2] - reference[k + 2]));
-    size = std::max(size, std::hypot(reference[k], reference[k + 1], reference[k + 2]));
-  }
-  return error / size;
-}
+using capsula::fastsum::largestNodeError; // fastsum/LargestNodeError.hpp
 
 double relativeDifference(const std::vector<double>& u, const std::vector<double>& reference)
 {

@@ -3,6 +3,7 @@
 // the direct sums to the treecode tolerance (the exact singular and near-singular
 // corrections are the same in both), the deck keys select the back-end, and a kernel the
 // back-end does not support is refused naming the key.
+#include <capsula/fastsum/LargestNodeError.hpp>
 #include <capsula/core/Error.hpp>
 #include <capsula/fastsum/TreecodeRegistration.hpp>
 #include <capsula/fastsum/TreecodeBackEnd.hpp>
@@ -96,17 +97,7 @@ std::vector<double> smoothDensity(const operators::BoundaryIntegralSolver& solve
   return density;
 }
 
-// max_i |u_i - reference_i| / max_i |reference_i| over the nodes' 3-vectors: the largest
-// error of one node, against the largest velocity.
-double largestNodeError(const std::vector<double>& u, const std::vector<double>& reference)
-{
-  double error = 0.0, size = 0.0;
-  for (std::size_t k = 0; k + 2 < u.size(); k += 3) {
-    error = std::max(error, std::hypot(u[k] - reference[k], u[k + 1] - reference[k + 1], u[k + 2] - reference[k + 2]));
-    size = std::max(size, std::hypot(reference[k], reference[k + 1], reference[k + 2]));
-  }
-  return error / size;
-}
+using capsula::fastsum::largestNodeError; // fastsum/LargestNodeError.hpp
 
 double relativeDifference(const std::vector<double>& u, const std::vector<double>& reference)
 {

@@ -2,6 +2,8 @@
 // other, of their periodic images and of both walls by the gaps asked for; the same seed
 // gives the same cells; the deck's keys rebuild each cell; a packing that jams and a
 // hematocrit the box cannot resolve are refused.
+#include "SuspensionTesting.hpp"
+
 #include <capsula/core/Error.hpp>
 #include <capsula/domain/Domain.hpp>
 #include <capsula/mesh/Placement.hpp>
@@ -23,11 +25,7 @@ using mesh::Vec3;
 
 domain::Domain box(double lx, double height, double lz)
 {
-  domain::DomainShape shape;
-  shape.channelHeight = height;
-  shape.periodX = lx;
-  shape.periodZ = lz;
-  return domain::Domain(shape);
+  return capsula::suspension::testing::periodicChannel(lx, height, lz);
 }
 
 // Red-cell-sized spheroids (radius 1, half-thickness 0.4) and platelet-sized ones (0.4, 0.1).

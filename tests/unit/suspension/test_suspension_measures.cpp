@@ -1,6 +1,8 @@
 // The suspension measures on arrangements with a known answer: the hematocrit profile of one
 // sphere, the cell-free layer of a sphere in a periodic channel (closed form, also across the
 // periodic boundary and far from the box), the wall-normal distribution of given heights.
+#include "SuspensionTesting.hpp"
+
 #include <capsula/core/Error.hpp>
 #include <capsula/domain/Domain.hpp>
 #include <capsula/mesh/Placement.hpp>
@@ -21,14 +23,7 @@ namespace mesh = capsula::mesh;
 namespace suspension = capsula::suspension;
 using mesh::Vec3;
 
-domain::Domain periodicChannel(double lx, double height, double lz)
-{
-  domain::DomainShape shape;
-  shape.channelHeight = height;
-  shape.periodX = lx;
-  shape.periodZ = lz;
-  return domain::Domain(shape);
-}
+using capsula::suspension::testing::periodicChannel;
 
 mesh::SurfaceMesh unitSphereAt(const Vec3& centre, int level)
 {
