@@ -21,6 +21,8 @@ packages=(
   libopenmpi-dev openmpi-bin libhdf5-openmpi-dev
   libcgal-dev libeigen3-dev libboost-dev
   libgtest-dev libbenchmark-dev
+  # FFTs of the spectral Ewald sums (packages/ewald)
+  libfftw3-dev
   # plotting and output checks (Debian's python3, not a pyenv one)
   python3 python3-numpy python3-matplotlib python3-h5py
   # ParaView, the viewer of the snapshots: the test figures_demo_snapshots_open_in_both_paraview_readers

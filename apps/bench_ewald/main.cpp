@@ -1,0 +1,131 @@
+// bench_ewald: the cost of one spectral Ewald evaluation of the doubly periodic Stokeslet
+// (packages/ewald, SpectralEwald2P.hpp) for N random sources, which are also the targets.
+//
+//   bench_ewald [--tolerance=1e-6] [--sizes=1000,10000,100000] [--repeat=3] [--density=1]
+//
+// The points fill a cube periodic in x and z, of side (N / density)^{1/3}, with random forces.
+// Prints per N the best of --repeat wall-clock times of one evaluation, split into the local
+// part and the smooth part, xi and the grid, and the time divided by N log2 N (constant when
+// the cost grows like N log N).
+#include <capsula/ewald/SpectralEwald2P.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Options {
+  double tolerance = 1e-6;
+  std::vector<int> sizes{1000, 10000, 100000};
+  int repeat = 3;
+  double density = 1.0;
+};
+
+void printUsage()
+{
+  std::printf("Usage: bench_ewald [options]\n"
+              "  --tolerance=TOL     relative tolerance of the sum (default: 1e-6)\n"
+              "  --sizes=N1,N2,...   numbers of points (default: 1000,10000,100000)\n"
+              "  --repeat=R          evaluations per size, the best is printed (default: 3)\n"
+              "  --density=RHO       points per unit volume (default: 1)\n");
+}
+
+/// Parses --key=value flags; false (after a message) on anything else.
+bool parseOptions(int argc, char** argv, Options& options)
+{
+  for (int a = 1; a < argc; ++a) {
+    const std::string arg = argv[a];
+    const auto equals = arg.find('=');
+    const std::string key = arg.substr(0, equals);
+    const std::string value = equals == std::string::npos ? "" : arg.substr(equals + 1);
+    if (key == "--tolerance" && std::atof(value.c_str()) > 0.0 && std::atof(value.c_str()) < 1.0) {
+      options.tolerance = std::atof(value.c_str());
+    } else if (key == "--repeat" && std::atoi(value.c_str()) > 0) {
+      options.repeat = std::atoi(value.c_str());
+    } else if (key == "--density" && std::atof(value.c_str()) > 0.0) {
+      options.density = std::atof(value.c_str());
+    } else if (key == "--sizes" && !value.empty()) {
+      options.sizes.clear();
+      std::stringstream list(value);
+      std::string item;
+      while (std::getline(list, item, ',')) {
+        if (std::atoi(item.c_str()) < 2) {
+          std::fprintf(stderr, "bench_ewald: error: --sizes needs integers >= 2, got '%s'\n", item.c_str());
+          return false;
+        }
+        options.sizes.push_back(std::atoi(item.c_str()));
+      }
+    } else {
+      std::fprintf(stderr, "bench_ewald: error: unknown or invalid option '%s' (--help lists them)\n", arg.c_str());
+      return false;
+    }
+  }
+  return true;
+}
+
+double secondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void runSize(int count, const Options& options)
+{
+  using namespace capsula::ewald;
+  const double side = std::cbrt(count / options.density);
+  const PeriodicLayer layer{side, side};
+  std::mt19937 generator(12345u + static_cast<unsigned>(count));
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<double> points(3 * count), forces(3 * count);
+  for (int n = 0; n < 3 * count; ++n) {
+    points[n] = side * unit(generator);
+    forces[n] = 2.0 * unit(generator) - 1.0;
+  }
+  const SpectralEwaldSettings settings = spectralEwaldSettings(layer, options.tolerance, 0.0, side, count);
+  double bestLocal = 1e300, bestSmooth = 1e300, bestTotal = 1e300;
+  for (int r = 0; r < options.repeat; ++r) {
+    std::vector<double> u(3 * count, 0.0);
+    const auto start = Clock::now();
+    addLocalPart2P(layer, settings, points, forces, points, u);
+    const double local = secondsSince(start);
+    const auto smoothStart = Clock::now();
+    addSmoothPart2P(layer, settings, points, forces, points, u);
+    const double smooth = secondsSince(smoothStart);
+    bestLocal = std::min(bestLocal, local);
+    bestSmooth = std::min(bestSmooth, smooth);
+    bestTotal = std::min(bestTotal, local + smooth);
+  }
+  const double nLogN = count * std::log2(static_cast<double>(count));
+  std::printf("%8d %10.4f %10.4f %10.4f %7.3f %4d x %4d x %4d %12.3e\n", count, bestTotal, bestLocal, bestSmooth,
+              settings.xi, settings.gridX, settings.gridY, settings.gridZ, bestTotal / nLogN * 1e6);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  for (int a = 1; a < argc; ++a) {
+    if (std::string(argv[a]) == "--help" || std::string(argv[a]) == "-h") {
+      printUsage();
+      return 0;
+    }
+  }
+  Options options;
+  if (!parseOptions(argc, argv, options)) {
+    return 2;
+  }
+  std::printf("spectral Ewald 2P, tolerance %.1e, density %.3g\n", options.tolerance, options.density);
+  std::printf("%8s %10s %10s %10s %7s %18s %12s\n", "N", "total (s)", "local (s)", "smooth (s)", "xi", "grid",
+              "us/(N log2N)");
+  for (int count : options.sizes) {
+    runSize(count, options);
+  }
+  return 0;
+}
