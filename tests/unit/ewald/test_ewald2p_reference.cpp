@@ -75,6 +75,22 @@ TEST(Ewald2PReference, IndependentOfTheSplittingParameter)
   }
 }
 
+TEST(Ewald2PReference, TruncationErrorIsBelowTheTolerance)
+{
+  // ewaldTruncation's r_c and k_c leave out terms below tol relative to |G| (the e^{-2} margin
+  // covers the prefactors of the neglected images and modes); measured against tol = 1e-16 over
+  // xi = 0.8..3 and tol = 1e-4..1e-10.
+  for (const auto& xh : samplePoints) {
+    for (double xi : {0.8, 3.0}) {
+      const Tensor exact = periodicG(rectangle, xi, xh);
+      for (double tolerance : {1e-4, 1e-7, 1e-10}) {
+        EXPECT_LT(maxDifference(periodicG(rectangle, xi, xh, tolerance), exact), tolerance * maxAbs(exact))
+            << "xi " << xi << " tolerance " << tolerance;
+      }
+    }
+  }
+}
+
 TEST(Ewald2PReference, SymmetricUnderExchangeOfFieldPointAndPole)
 {
   // Lorentz reciprocity G_ij(x, x0) = G_ji(x0, x), i.e. G_ij(xh) = G_ji(-xh); the off-diagonal
