@@ -1,6 +1,7 @@
 #include "capsula/ewald/Ewald2PReference.hpp"
 
 #include "capsula/ewald/EwaldSplit.hpp"
+#include "capsula/ewald/LatticeSums2P.hpp"
 #include "capsula/ewald/ZeroMode2P.hpp"
 
 #include <cmath>
@@ -52,21 +53,6 @@ void setZero(double G[3][3])
   }
 }
 
-void checkLayer(const PeriodicLayer& layer)
-{
-  if (!(layer.lengthX > 0.0) || !(layer.lengthZ > 0.0)) {
-    throw std::invalid_argument("ewald: the periods of a 2P layer must be positive");
-  }
-}
-
-/// xh shifted by whole periods into [-L/2, L/2) along x and z.
-void foldIntoCell(const PeriodicLayer& layer, const double xh[3], double folded[3])
-{
-  folded[0] = xh[0] - layer.lengthX * std::floor(xh[0] / layer.lengthX + 0.5);
-  folded[1] = xh[1];
-  folded[2] = xh[2] - layer.lengthZ * std::floor(xh[2] / layer.lengthZ + 0.5);
-}
-
 } // namespace
 
 EwaldTruncation ewaldTruncation(double xi, double tolerance)
@@ -89,69 +75,46 @@ ModeProfiles modeProfiles(double a, double y, double xi)
   p.j0 = sum / (8.0 * a * a * a) - y * difference / (8.0 * a * a) + invSqrtPi * gauss / (4.0 * xi * a * a);
   p.j0Prime = -y * sum / (8.0 * a);
   p.j0Second = -sum / (8.0 * a) - y * difference / 8.0;
+  p.j0Third = -difference / 4.0 - y * a * sum / 8.0 + 0.5 * invSqrtPi * xi * y * gauss;
   return p;
 }
 
 void periodicStokesletReal2P(const PeriodicLayer& layer, const EwaldTruncation& truncation, const double xh[3],
                              double G[3][3])
 {
-  checkLayer(layer);
   setZero(G);
-  double folded[3];
-  foldIntoCell(layer, xh, folded);
-  const double rc = truncation.realCutoff;
-  const int mMax = static_cast<int>(std::ceil(rc / layer.lengthX)) + 1;
-  const int nMax = static_cast<int>(std::ceil(rc / layer.lengthZ)) + 1;
-  for (int m = -mMax; m <= mMax; ++m) {
-    for (int n = -nMax; n <= nMax; ++n) {
-      const double shifted[3] = {folded[0] + m * layer.lengthX, folded[1], folded[2] + n * layer.lengthZ};
-      const double r2 = shifted[0] * shifted[0] + shifted[1] * shifted[1] + shifted[2] * shifted[2];
-      if (r2 >= rc * rc) {
-        continue;
-      }
-      double term[3][3];
-      screenedStokeslet3D(shifted, truncation.xi, term);
-      addScaled(G, term);
-    }
-  }
+  forEachImageWithin(layer, truncation.realCutoff, xh, [&](const double shifted[3]) {
+    double term[3][3];
+    screenedStokeslet3D(shifted, truncation.xi, term);
+    addScaled(G, term);
+  });
 }
 
 void periodicStokesletFourier2P(const PeriodicLayer& layer, const EwaldTruncation& truncation, const double xh[3],
                                 double G[3][3])
 {
-  checkLayer(layer);
   setZero(G);
   const double xi = truncation.xi;
   const double area = layer.lengthX * layer.lengthZ;
   const double y = xh[1];
-  const double kc = truncation.wavenumberCutoff;
-  const int mMax = static_cast<int>(std::floor(kc * layer.lengthX / (2.0 * pi)));
-  const int nMax = static_cast<int>(std::floor(kc * layer.lengthZ / (2.0 * pi)));
-  // The modes (m, n) and (-m, -n) together give real terms: cos on the even entries and
+  // The modes (kx, kz) and (-kx, -kz) together give real terms: cos on the even entries and
   // -sin (from i e^{i theta}) on the parallel-y ones; half of the plane is summed, doubled.
-  for (int m = 0; m <= mMax; ++m) {
-    for (int n = (m == 0 ? 1 : -nMax); n <= nMax; ++n) {
-      const double kx = 2.0 * pi * m / layer.lengthX;
-      const double kz = 2.0 * pi * n / layer.lengthZ;
-      const double a2 = kx * kx + kz * kz;
-      if (a2 > kc * kc) {
-        continue;
+  forEachModeWithin(layer, truncation.wavenumberCutoff, true, [&](double kx, double kz) {
+    const double a2 = kx * kx + kz * kz;
+    const ModeProfiles p = modeProfiles(std::sqrt(a2), y, xi);
+    const double theta = kx * xh[0] + kz * xh[2];
+    const double c = 2.0 * std::cos(theta);
+    const double s = -2.0 * std::sin(theta);
+    const double kPar[3] = {kx, 0.0, kz};
+    for (int i : {0, 2}) {
+      for (int j : {0, 2}) {
+        G[i][j] += c * (-kPar[i] * kPar[j] * p.j0 + (i == j ? a2 * p.j0 - p.j0Second : 0.0));
       }
-      const ModeProfiles p = modeProfiles(std::sqrt(a2), y, xi);
-      const double theta = kx * xh[0] + kz * xh[2];
-      const double c = 2.0 * std::cos(theta);
-      const double s = -2.0 * std::sin(theta);
-      const double kPar[3] = {kx, 0.0, kz};
-      for (int i : {0, 2}) {
-        for (int j : {0, 2}) {
-          G[i][j] += c * (-kPar[i] * kPar[j] * p.j0 + (i == j ? a2 * p.j0 - p.j0Second : 0.0));
-        }
-        G[i][1] += s * kPar[i] * p.j0Prime;
-        G[1][i] += s * kPar[i] * p.j0Prime;
-      }
-      G[1][1] += c * a2 * p.j0;
+      G[i][1] += s * kPar[i] * p.j0Prime;
+      G[1][i] += s * kPar[i] * p.j0Prime;
     }
-  }
+    G[1][1] += c * a2 * p.j0;
+  });
   const double zero = smoothZeroModeProfile(y, xi);
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {

@@ -53,11 +53,13 @@ void periodicStokesletReal2P(const PeriodicLayer& layer, const EwaldTruncation& 
 void periodicStokesletFourier2P(const PeriodicLayer& layer, const EwaldTruncation& truncation, const double xh[3],
                                 double G[3][3]);
 
-/// The ky-integral profiles of one mode: J0, J0', J0'' at height y for |(kx, kz)| = a > 0.
+/// The ky-integral profiles of one mode: J0 and its first three y-derivatives at height y for
+/// |(kx, kz)| = a > 0 (the third, -D/4 - y a P/8 + xi y g / (2 sqrt(pi)), serves the stresslet).
 struct ModeProfiles {
   double j0 = 0.0;
   double j0Prime = 0.0;
   double j0Second = 0.0;
+  double j0Third = 0.0;
 };
 ModeProfiles modeProfiles(double a, double y, double xi);
 

@@ -36,4 +36,14 @@ inline double zeroModeProfile(double y)
   return -4.0 * pi * std::fabs(y);
 }
 
+/// The stresslet's zero mode (StressletReference2P.hpp) times A: the y-derivative of the
+/// Stokeslet's, -4 pi sign(y) for the whole sum and, for the smooth part,
+/// h'(y) = -4 pi [erf(xi y) + xi y e^{-xi^2 y^2} / sqrt(pi)].
+inline double smoothStressletZeroModeProfile(double y, double xi)
+{
+  constexpr double pi = 3.14159265358979323846;
+  constexpr double invSqrtPi = 0.56418958354775628695;
+  return -4.0 * pi * (std::erf(xi * y) + invSqrtPi * xi * y * std::exp(-xi * xi * y * y));
+}
+
 } // namespace capsula::ewald
