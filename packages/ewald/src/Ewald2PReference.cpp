@@ -11,7 +11,7 @@ namespace capsula::ewald {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double referenceSumPi = 3.14159265358979323846;
 constexpr double invSqrtPi = 0.56418958354775628695;
 
 /// erfcx(z) = e^{z^2} erfc(z) for z >= 0: directly while erfc(z) is a normal number, beyond
@@ -118,7 +118,7 @@ void periodicStokesletFourier2P(const PeriodicLayer& layer, const EwaldTruncatio
   const double zero = smoothZeroModeProfile(y, xi);
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
-      G[i][j] *= 8.0 * pi / area;
+      G[i][j] *= 8.0 * referenceSumPi / area;
     }
   }
   G[0][0] += zero / area;
