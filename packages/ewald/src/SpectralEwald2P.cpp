@@ -5,16 +5,12 @@
 
 namespace capsula::ewald {
 
-std::vector<double> spectralEwald2P(const PeriodicLayer& layer, double tolerance, const std::vector<double>& sources,
-                                    const std::vector<double>& forces, const std::vector<double>& targets, double xi)
+SpectralEwaldSettings spectralEwaldSettingsFor(const PeriodicLayer& layer, double tolerance,
+                                               const std::vector<double>& sources, const std::vector<double>& targets,
+                                               double xi)
 {
-  if (sources.size() % 3 != 0 || forces.size() != sources.size() || targets.size() % 3 != 0) {
-    throw std::invalid_argument("ewald: sources, forces and targets need 3 numbers per point, "
-                                "one force per source");
-  }
-  std::vector<double> velocities(targets.size(), 0.0);
   if (sources.empty() || targets.empty()) {
-    return velocities;
+    throw std::invalid_argument("ewald: spectral Ewald settings need sources and targets");
   }
   double yMin = sources[1], yMax = sources[1];
   for (const auto* points : {&sources, &targets}) {
@@ -23,8 +19,20 @@ std::vector<double> spectralEwald2P(const PeriodicLayer& layer, double tolerance
       yMax = std::max(yMax, (*points)[n]);
     }
   }
-  const SpectralEwaldSettings settings =
-      spectralEwaldSettings(layer, tolerance, yMin, yMax, static_cast<int>(sources.size() / 3), xi);
+  return spectralEwaldSettings(layer, tolerance, yMin, yMax, static_cast<int>(sources.size() / 3), xi);
+}
+
+std::vector<double> spectralEwald2P(const PeriodicLayer& layer, double tolerance, const std::vector<double>& sources,
+                                    const std::vector<double>& forces, const std::vector<double>& targets, double xi)
+{
+  if (sources.size() % 3 != 0 || forces.size() != sources.size() || targets.size() % 3 != 0) {
+    throw std::invalid_argument("ewald: sources, forces and targets need 3 numbers per point, one force per source");
+  }
+  std::vector<double> velocities(targets.size(), 0.0);
+  if (sources.empty() || targets.empty()) {
+    return velocities;
+  }
+  const SpectralEwaldSettings settings = spectralEwaldSettingsFor(layer, tolerance, sources, targets, xi);
   addLocalPart2P(layer, settings, sources, forces, targets, velocities);
   addSmoothPart2P(layer, settings, sources, forces, targets, velocities);
   return velocities;

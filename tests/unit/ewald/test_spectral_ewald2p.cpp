@@ -4,6 +4,8 @@
 #include <capsula/ewald/SpectralEwald2P.hpp>
 #include <capsula/greens/FreeSpace3D.hpp>
 
+#include "EwaldTesting.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,32 +17,11 @@
 namespace {
 
 using namespace capsula::ewald;
+using capsula::ewald::testing::randomForces;
+using capsula::ewald::testing::randomPoints;
+using capsula::ewald::testing::relativeError;
 
 const PeriodicLayer box{2.0, 1.6};
-
-std::vector<double> randomPoints(int count, unsigned seed, double yLow, double yHigh)
-{
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<double> points;
-  for (int n = 0; n < count; ++n) {
-    points.push_back(box.lengthX * unit(generator));
-    points.push_back(yLow + (yHigh - yLow) * unit(generator));
-    points.push_back(box.lengthZ * unit(generator));
-  }
-  return points;
-}
-
-std::vector<double> randomForces(int count, unsigned seed)
-{
-  std::mt19937 generator(seed);
-  std::uniform_real_distribution<double> component(-1.0, 1.0);
-  std::vector<double> forces(3 * count);
-  for (double& f : forces) {
-    f = component(generator);
-  }
-  return forces;
-}
 
 /// sum_n G(x_t - x_n) g_n by the reference sum (to 1e-15).
 std::vector<double> referenceSum(const std::vector<double>& sources, const std::vector<double>& forces,
@@ -63,18 +44,6 @@ std::vector<double> referenceSum(const std::vector<double>& sources, const std::
   return u;
 }
 
-/// max_t |u_t - v_t| / max_t |v_t| (the largest error relative to the largest velocity).
-double relativeError(const std::vector<double>& u, const std::vector<double>& v)
-{
-  double error = 0.0, size = 0.0;
-  for (std::size_t t = 0; t < u.size(); t += 3) {
-    const double d = std::hypot(u[t] - v[t], u[t + 1] - v[t + 1], u[t + 2] - v[t + 2]);
-    error = std::max(error, d);
-    size = std::max(size, std::hypot(v[t], v[t + 1], v[t + 2]));
-  }
-  return error / size;
-}
-
 struct Problem {
   std::vector<double> sources, forces, targets, reference;
 };
@@ -83,9 +52,9 @@ const Problem& sharedProblem()
 {
   static const Problem problem = [] {
     Problem p;
-    p.sources = randomPoints(50, 7, -0.8, 0.8);
+    p.sources = randomPoints(box, 50, 7, -0.8, 0.8);
     p.forces = randomForces(50, 8);
-    p.targets = randomPoints(30, 9, -1.2, 1.0);
+    p.targets = randomPoints(box, 30, 9, -1.2, 1.0);
     p.reference = referenceSum(p.sources, p.forces, p.targets);
     return p;
   }();

@@ -53,6 +53,11 @@ struct SpectralEwaldSettings {
 SpectralEwaldSettings spectralEwaldSettings(const PeriodicLayer& layer, double tolerance, double yMin, double yMax,
                                             int sourceCount, double xi = 0.0, int neighbours = 300);
 
+/// The settings for these sources and targets (their heights' range and the sources' number).
+SpectralEwaldSettings spectralEwaldSettingsFor(const PeriodicLayer& layer, double tolerance,
+                                               const std::vector<double>& sources, const std::vector<double>& targets,
+                                               double xi = 0.0);
+
 /// The local part: u_t += sum over sources and images within r_c of G^R(x_t - x_n - p) g_n
 /// (a coincident pair gives lim (G^R - G_free) g_n = -4 xi / sqrt(pi) g_n). Positions and forces are 3 per point.
 void addLocalPart2P(const PeriodicLayer& layer, const SpectralEwaldSettings& settings,

@@ -1,0 +1,50 @@
+#pragma once
+// Shared by the spectral Ewald tests: random points and densities, and the error measure.
+#include <capsula/ewald/Ewald2PReference.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace capsula::ewald::testing {
+
+/// count points uniform over the cell [0, L_x) x [yLow, yHigh] x [0, L_z), 3 numbers each.
+inline std::vector<double> randomPoints(const PeriodicLayer& box, int count, unsigned seed, double yLow, double yHigh)
+{
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<double> points;
+  for (int n = 0; n < count; ++n) {
+    points.push_back(box.lengthX * unit(generator));
+    points.push_back(yLow + (yHigh - yLow) * unit(generator));
+    points.push_back(box.lengthZ * unit(generator));
+  }
+  return points;
+}
+
+/// count vectors of `components` numbers uniform in [-1, 1].
+inline std::vector<double> randomForces(int count, unsigned seed, int components = 3)
+{
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<double> component(-1.0, 1.0);
+  std::vector<double> forces(static_cast<std::size_t>(components) * count);
+  for (double& f : forces) {
+    f = component(generator);
+  }
+  return forces;
+}
+
+/// max_t |u_t - v_t| / max_t |v_t| (the largest error relative to the largest velocity).
+inline double relativeError(const std::vector<double>& u, const std::vector<double>& v)
+{
+  double error = 0.0, size = 0.0;
+  for (std::size_t t = 0; t < u.size(); t += 3) {
+    const double d = std::hypot(u[t] - v[t], u[t + 1] - v[t + 1], u[t + 2] - v[t + 2]);
+    error = std::max(error, d);
+    size = std::max(size, std::hypot(v[t], v[t + 1], v[t + 2]));
+  }
+  return error / size;
+}
+
+} // namespace capsula::ewald::testing
