@@ -23,10 +23,13 @@ struct FftwFree {
 using RealGrid = std::unique_ptr<double[], FftwFree>;
 using ComplexGrid = std::unique_ptr<fftw_complex[], FftwFree>;
 
-inline RealGrid makeRealGrid(std::size_t size)
+/// A real grid, zeroed when it accumulates (the spread sources) and not when FFTW overwrites it.
+inline RealGrid makeRealGrid(std::size_t size, bool zeroed)
 {
   RealGrid grid(static_cast<double*>(fftw_malloc(sizeof(double) * size)));
-  std::fill(grid.get(), grid.get() + size, 0.0);
+  if (zeroed) {
+    std::fill(grid.get(), grid.get() + size, 0.0);
+  }
   return grid;
 }
 
@@ -59,18 +62,41 @@ void forEachGridPoint(const SpectralEwaldSettings& s, const double* x, Visit vis
   const AxisStencil sy = axisStencil(x[1], s.yOrigin, s.spacingY, s.supportRadius, alpha);
   const AxisStencil sz = axisStencil(x[2], 0.0, s.spacingZ, s.supportRadius, alpha);
   const double normalisation = std::pow(alpha / enginePi, 1.5);
+  // The wrapped z indices once per point, not once per grid point (an integer division each).
+  const std::size_t countZ = sz.weight.size();
+  std::vector<int> wrappedZ(countZ);
+  for (std::size_t c = 0; c < countZ; ++c) {
+    wrappedZ[c] = ((sz.first + static_cast<int>(c)) % s.gridZ + s.gridZ) % s.gridZ;
+  }
   for (std::size_t a = 0; a < sx.weight.size(); ++a) {
     const int i = ((sx.first + static_cast<int>(a)) % s.gridX + s.gridX) % s.gridX;
     for (std::size_t b = 0; b < sy.weight.size(); ++b) {
       const int j = sy.first + static_cast<int>(b);
       const double wxy = normalisation * sx.weight[a] * sy.weight[b];
       const std::size_t row = (static_cast<std::size_t>(i) * s.gridY + j) * s.gridZ;
-      for (std::size_t c = 0; c < sz.weight.size(); ++c) {
-        const int k = ((sz.first + static_cast<int>(c)) % s.gridZ + s.gridZ) % s.gridZ;
-        visit(row + k, wxy * sz.weight[c]);
+      for (std::size_t c = 0; c < countZ; ++c) {
+        visit(row + wrappedZ[c], wxy * sz.weight[c]);
       }
     }
   }
+}
+
+/// The points (3 numbers each) in the order of their grid rows (x index, then y index), so that
+/// consecutive spreading and gathering touch neighbouring memory.
+inline std::vector<std::size_t> gridOrder(const SpectralEwaldSettings& s, const std::vector<double>& points)
+{
+  const std::size_t count = points.size() / 3;
+  std::vector<std::size_t> order(count);
+  std::vector<long long> key(count);
+  for (std::size_t n = 0; n < count; ++n) {
+    order[n] = n;
+    const double xFolded = points[3 * n] - s.gridX * s.spacingX * std::floor(points[3 * n] / (s.gridX * s.spacingX));
+    const long long i = static_cast<long long>(xFolded / s.spacingX);
+    const long long j = static_cast<long long>(std::floor((points[3 * n + 1] - s.yOrigin) / s.spacingY));
+    key[n] = i * (s.gridY + 1) + j;
+  }
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  return order;
 }
 
 /// Signed wavenumber index of FFT index i on n points; n / 2 (Nyquist, even n) returns n.
@@ -181,16 +207,15 @@ void addSmoothPart(const PeriodicLayer& layer, const SpectralEwaldSettings& s, c
   std::vector<RealGrid> spread;
   std::vector<ComplexGrid> spectrum;
   for (int c = 0; c < C; ++c) {
-    spread.push_back(makeRealGrid(points));
+    spread.push_back(makeRealGrid(points, true));
     spectrum.emplace_back(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * modes)));
   }
-  RealGrid field[3] = {makeRealGrid(points), makeRealGrid(points), makeRealGrid(points)};
+  RealGrid field[3] = {makeRealGrid(points, false), makeRealGrid(points, false), makeRealGrid(points, false)};
   ComplexGrid fieldSpectrum[3];
   for (auto& component : fieldSpectrum) {
     component.reset(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * modes)));
   }
-  const std::size_t sourceCount = sources.size() / 3;
-  for (std::size_t n = 0; n < sourceCount; ++n) {
+  for (std::size_t n : gridOrder(s, sources)) {
     const double* q = &densities[C * n];
     forEachGridPoint(s, &sources[3 * n], [&](std::size_t index, double weight) {
       for (int c = 0; c < C; ++c) {
@@ -215,8 +240,7 @@ void addSmoothPart(const PeriodicLayer& layer, const SpectralEwaldSettings& s, c
   }
   addZeroMode<Kernel>(layer, s, spread, field);
   const double cellVolume = s.spacingX * s.spacingY * s.spacingZ;
-  const std::size_t targetCount = targets.size() / 3;
-  for (std::size_t t = 0; t < targetCount; ++t) {
+  for (std::size_t t : gridOrder(s, targets)) {
     double u[3] = {0.0, 0.0, 0.0};
     forEachGridPoint(s, &targets[3 * t], [&](std::size_t index, double weight) {
       for (int c = 0; c < 3; ++c) {

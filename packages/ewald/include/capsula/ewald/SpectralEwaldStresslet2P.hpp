@@ -2,7 +2,7 @@
 // Spectral Ewald fast sum of the stresslet (StressletSplit.hpp) in a layer periodic in x and z,
 // unbounded in y, with the machinery and the tolerance rule of SpectralEwald2P.hpp: for sources
 // x_n carrying tensors S_n (S_jk, e.g. q_j n_k w of a double-layer quadrature),
-//   u_t = sum_n T_ijk(x_t - x_n) S_n,jk        (the double layer's velocity is u_t / (8 pi)),
+//   u_t = sum_n T_ijk(x_t - x_n) S_n,jk,
 // T the periodic stresslet of StressletReference2P.hpp (its zero mode included). T is symmetric
 // in j and k, so only the symmetric part of S enters. A target on a source takes from it
 // lim (T - T_free) S_n, the field of its images (T^F is odd: its value at the pole is zero).
