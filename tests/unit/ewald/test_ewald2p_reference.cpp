@@ -179,6 +179,34 @@ TEST(Ewald2PReference, ForceFreePairTendsToItsFreeSpaceFieldAsThePeriodsGrow)
   }
 }
 
+TEST(Ewald2PReference, ForceFreeFieldIsBoundedAndTendsToTheDocumentedConstant)
+{
+  // Forces g_n at heights y_n with sum g_n = 0: far above and below the layer of sources the
+  // field tends to +(4 pi / A) sign(y) sum g_n y_n on the parallel components and to 0 on y
+  // (ZeroMode2P.hpp); the other modes decay like e^{-2 pi |y| / L} < 1e-13 at |y| = 12.
+  const PeriodicLayer square{2.0, 2.0};
+  const std::vector<std::vector<double>> poles{{0.1, 0.3, 0.2}, {1.2, -0.4, 1.5}, {0.7, 0.9, -0.6}};
+  const std::vector<std::vector<double>> forces{{1.0, 0.4, -0.2}, {-0.3, -0.9, 0.7}, {-0.7, 0.5, -0.5}};
+  const auto truncation = ewaldTruncation(1.0, 1e-16);
+  const double area = square.lengthX * square.lengthZ;
+  for (double sign : {1.0, -1.0}) {
+    double moment[3] = {0.0, 0.0, 0.0};
+    for (std::size_t n = 0; n < poles.size(); ++n) {
+      for (int i = 0; i < 3; ++i) {
+        moment[i] += forces[n][i] * poles[n][1];
+      }
+    }
+    const double x[3] = {0.5, sign * 12.0, 0.3};
+    const auto u = fieldOf([&](const double xh[3], double G[3][3]) { periodicStokeslet2P(square, truncation, xh, G); },
+                           poles, forces, x);
+    const double expected[3] = {4.0 * referencePi / area * sign * moment[0], 0.0,
+                                4.0 * referencePi / area * sign * moment[2]};
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(u[i], expected[i], 1e-11) << "sign " << sign << " component " << i;
+    }
+  }
+}
+
 /// The image sum of a force-free quadrupole (g, -2g, g at x0 - e, x0, x0 + e) over the images
 /// within the disc |p| <= R: it converges absolutely (the field falls like 1/|p|^3).
 std::vector<double> imageSumOfQuadrupole(const PeriodicLayer& layer, const double x[3], double R,

@@ -8,7 +8,7 @@
 // u = G g / (8 pi mu),
 //   <G>_parallel(y - y0) = -4 pi |y - y0| / A,   <G>_yy = 0,   <G>_xy = <G>_yz = <G>_xz = 0,
 // zero at the source's height. The flow of one force grows linearly in |y|; the flow of forces
-// g_n at heights y_n with sum g_n = 0 tends to the constant -(4 pi / A) sign(y) sum g_n y_n (in
+// g_n at heights y_n with sum g_n = 0 tends to the constant +(4 pi / A) sign(y) sum g_n y_n (in
 // G units) as |y| -> infinity, so force-free configurations have a bounded field.
 //
 // In the Ewald split the average of the local part, <G^R>, decays like e^{-xi^2 y^2}; the
