@@ -2,12 +2,15 @@
 // (packages/ewald, SpectralEwald2P.hpp) for N random sources, which are also the targets.
 //
 //   bench_ewald [--tolerance=1e-6] [--sizes=1000,10000,100000] [--repeat=3] [--density=1]
+//               [--kernel=stokeslet|stresslet]
 //
-// The points fill a cube periodic in x and z, of side (N / density)^{1/3}, with random forces.
-// Prints per N the best of --repeat wall-clock times of one evaluation, split into the local
-// part and the smooth part, xi and the grid, and the time divided by N log2 N (constant when
+// The points fill a cube periodic in x and z, of side (N / density)^{1/3}, with random forces
+// (or, with --kernel=stresslet, random tensors S_jk for the stresslet's sum). Prints per N the
+// best of --repeat wall-clock times of one evaluation (for the Stokeslet also split into the
+// local and the smooth part), xi and the grid, and the time divided by N log2 N (constant when
 // the cost grows like N log N).
 #include <capsula/ewald/SpectralEwald2P.hpp>
+#include <capsula/ewald/SpectralEwaldStresslet2P.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -27,6 +30,7 @@ struct Options {
   std::vector<int> sizes{1000, 10000, 100000};
   int repeat = 3;
   double density = 1.0;
+  bool stresslet = false;
 };
 
 void printUsage()
@@ -35,7 +39,8 @@ void printUsage()
               "  --tolerance=TOL     relative tolerance of the sum (default: 1e-6)\n"
               "  --sizes=N1,N2,...   numbers of points (default: 1000,10000,100000)\n"
               "  --repeat=R          evaluations per size, the best is printed (default: 3)\n"
-              "  --density=RHO       points per unit volume (default: 1)\n");
+              "  --density=RHO       points per unit volume (default: 1)\n"
+              "  --kernel=NAME       stokeslet or stresslet (default: stokeslet)\n");
 }
 
 /// Parses --key=value flags; false (after a message) on anything else.
@@ -52,6 +57,8 @@ bool parseOptions(int argc, char** argv, Options& options)
       options.repeat = std::atoi(value.c_str());
     } else if (key == "--density" && std::atof(value.c_str()) > 0.0) {
       options.density = std::atof(value.c_str());
+    } else if (key == "--kernel" && (value == "stokeslet" || value == "stresslet")) {
+      options.stresslet = value == "stresslet";
     } else if (key == "--sizes" && !value.empty()) {
       options.sizes.clear();
       std::stringstream list(value);
@@ -83,14 +90,22 @@ void runSize(int count, const Options& options)
   const PeriodicLayer layer{side, side};
   std::mt19937 generator(12345u + static_cast<unsigned>(count));
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<double> points(3 * count), forces(3 * count);
-  for (int n = 0; n < 3 * count; ++n) {
-    points[n] = side * unit(generator);
-    forces[n] = 2.0 * unit(generator) - 1.0;
+  const int components = options.stresslet ? 9 : 3;
+  std::vector<double> points(3 * count), forces(static_cast<std::size_t>(components) * count);
+  for (double& p : points) {
+    p = side * unit(generator);
+  }
+  for (double& f : forces) {
+    f = 2.0 * unit(generator) - 1.0;
   }
   const SpectralEwaldSettings settings = spectralEwaldSettings(layer, options.tolerance, 0.0, side, count);
   double bestLocal = 1e300, bestSmooth = 1e300, bestTotal = 1e300;
-  for (int r = 0; r < options.repeat; ++r) {
+  for (int r = 0; r < options.repeat && options.stresslet; ++r) {
+    const auto start = Clock::now();
+    const auto u = spectralEwaldStresslet2P(layer, options.tolerance, points, forces, points);
+    bestTotal = std::min(bestTotal, secondsSince(start));
+  }
+  for (int r = 0; r < options.repeat && !options.stresslet; ++r) {
     std::vector<double> u(3 * count, 0.0);
     const auto start = Clock::now();
     addLocalPart2P(layer, settings, points, forces, points, u);
@@ -103,8 +118,13 @@ void runSize(int count, const Options& options)
     bestTotal = std::min(bestTotal, local + smooth);
   }
   const double nLogN = count * std::log2(static_cast<double>(count));
-  std::printf("%8d %10.4f %10.4f %10.4f %7.3f %4d x %4d x %4d %12.3e\n", count, bestTotal, bestLocal, bestSmooth,
-              settings.xi, settings.gridX, settings.gridY, settings.gridZ, bestTotal / nLogN * 1e6);
+  char local[32] = "-", smooth[32] = "-";
+  if (!options.stresslet) {
+    std::snprintf(local, sizeof local, "%.4f", bestLocal);
+    std::snprintf(smooth, sizeof smooth, "%.4f", bestSmooth);
+  }
+  std::printf("%8d %10.4f %10.10s %10.10s %7.3f %4d x %4d x %4d %12.3e\n", count, bestTotal, local, smooth, settings.xi,
+              settings.gridX, settings.gridY, settings.gridZ, bestTotal / nLogN * 1e6);
 }
 
 } // namespace
@@ -121,7 +141,8 @@ int main(int argc, char** argv)
   if (!parseOptions(argc, argv, options)) {
     return 2;
   }
-  std::printf("spectral Ewald 2P, tolerance %.1e, density %.3g\n", options.tolerance, options.density);
+  std::printf("spectral Ewald 2P, %s, tolerance %.1e, density %.3g\n", options.stresslet ? "stresslet" : "Stokeslet",
+              options.tolerance, options.density);
   std::printf("%8s %10s %10s %10s %7s %18s %12s\n", "N", "total (s)", "local (s)", "smooth (s)", "xi", "grid",
               "us/(N log2N)");
   for (int count : options.sizes) {

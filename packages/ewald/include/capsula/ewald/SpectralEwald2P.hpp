@@ -1,7 +1,8 @@
 #pragma once
 // Spectral Ewald fast sum of the Stokeslet in a layer periodic in x and z, unbounded in y
-// (Lindbo & Tornberg 2011 J Comput Phys 230; the free direction as in their 2012 J Chem Phys
-// 2P method): for sources x_n with forces g_n and targets x_t,
+// (Lindbo & Tornberg 2011 J Comput Phys 230; for the free direction cf. their 2012 J Chem Phys
+// 2P method, here plain padding plus the exact 1D zero mode): for sources x_n with forces g_n
+// and targets x_t,
 //   u_t = sum_n G(x_t - x_n) g_n        (G units: the velocity is u_t / (8 pi mu)),
 // G the periodic Stokeslet of Ewald2PReference.hpp (its zero mode included). A target on a
 // source takes from it lim_{xh -> 0} (G(xh) - G_free(xh)) g_n: the field of its images.
@@ -28,8 +29,8 @@
 // sources fill the cell area times their height range (at least a tenth of the shorter period).
 // The margins (+6, +4) were measured: the largest error is 0.05-0.1 tol for tol = 1e-3..1e-8
 // (test_spectral_ewald2p), and at most 0.3 tol for tol down to 1e-10 and xi up to twice the
-// rule's. Grid points then grow like N for a fixed tolerance
-// and the cost like N log N (the FFT), the local part like N.
+// rule's. Grid points then grow like N for a fixed tolerance and the cost like N log N (the
+// FFT), the local part like N.
 #include "capsula/ewald/Ewald2PReference.hpp"
 
 #include <vector>
