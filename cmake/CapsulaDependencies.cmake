@@ -28,6 +28,13 @@ find_package(CGAL REQUIRED)
 include(CGAL_Eigen3_support)   # defines CGAL::Eigen3_support (Monge jet fitting needs it)
 find_package(Boost REQUIRED)
 
+# FFTW 3 (Debian libfftw3-dev) ships no CMake config: found through its pkg-config file.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
+add_library(capsula_deps_fftw INTERFACE)
+target_link_libraries(capsula_deps_fftw INTERFACE PkgConfig::FFTW3)
+add_library(capsula::deps::fftw ALIAS capsula_deps_fftw)
+
 if(CAPSULA_ENABLE_OPENMP)
   find_package(OpenMP REQUIRED COMPONENTS CXX)
 endif()

@@ -8,6 +8,7 @@ message(STATUS "  HDF5              : ${HDF5_VERSION} (parallel: ${HDF5_IS_PARAL
 message(STATUS "  CGAL              : ${CGAL_VERSION}")
 message(STATUS "  Eigen3            : ${Eigen3_VERSION}")
 message(STATUS "  Boost             : ${Boost_VERSION}")
+message(STATUS "  FFTW 3            : ${FFTW3_VERSION}")
 message(STATUS "  GoogleTest        : ${GTest_FOUND}")
 message(STATUS "  Google Benchmark  : ${benchmark_FOUND}")
 message(STATUS "  OpenMP kernels    : ${CAPSULA_ENABLE_OPENMP}")
