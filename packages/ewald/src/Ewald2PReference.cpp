@@ -64,13 +64,20 @@ EwaldTruncation ewaldTruncation(double xi, double tolerance)
   return {xi, logInverse / xi, 2.0 * xi * logInverse};
 }
 
-ModeProfiles modeProfiles(double a, double y, double xi)
+ModeExponentials modeExponentials(double a, double y, double xi)
 {
   const double gauss = std::exp(-a * a / (4.0 * xi * xi) - xi * xi * y * y);
   const double ePlus = expTimesErfc(a * y, a / (2.0 * xi) + xi * y, gauss);
   const double eMinus = expTimesErfc(-a * y, a / (2.0 * xi) - xi * y, gauss);
-  const double sum = ePlus + eMinus;
-  const double difference = ePlus - eMinus;
+  return {ePlus + eMinus, ePlus - eMinus, gauss};
+}
+
+ModeProfiles modeProfiles(double a, double y, double xi)
+{
+  const ModeExponentials e = modeExponentials(a, y, xi);
+  const double sum = e.sum;
+  const double difference = e.difference;
+  const double gauss = e.gauss;
   ModeProfiles p;
   p.j0 = sum / (8.0 * a * a * a) - y * difference / (8.0 * a * a) + invSqrtPi * gauss / (4.0 * xi * a * a);
   p.j0Prime = -y * sum / (8.0 * a);

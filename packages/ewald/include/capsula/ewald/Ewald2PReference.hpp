@@ -63,4 +63,13 @@ struct ModeProfiles {
 };
 ModeProfiles modeProfiles(double a, double y, double xi);
 
+/// The building blocks of the ky integrals at height y for |(kx, kz)| = a > 0 (header comment):
+/// P = E+ + E-, D = E+ - E- and g = e^{-a^2/(4 xi^2) - xi^2 y^2}.
+struct ModeExponentials {
+  double sum = 0.0;        // P
+  double difference = 0.0; // D
+  double gauss = 0.0;      // g
+};
+ModeExponentials modeExponentials(double a, double y, double xi);
+
 } // namespace capsula::ewald
