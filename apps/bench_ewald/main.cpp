@@ -2,15 +2,18 @@
 // (packages/ewald, SpectralEwald2P.hpp) for N random sources, which are also the targets.
 //
 //   bench_ewald [--tolerance=1e-6] [--sizes=1000,10000,100000] [--repeat=3] [--density=1]
-//               [--kernel=stokeslet|stresslet]
+//               [--kernel=stokeslet|stresslet|wall]
 //
 // The points fill a cube periodic in x and z, of side (N / density)^{1/3}, with random forces
-// (or, with --kernel=stresslet, random tensors S_jk for the stresslet's sum). Prints per N the
+// (or, with --kernel=stresslet, random tensors S_jk for the stresslet's sum; with --kernel=wall
+// the cube stands on the no-slip wall y = 0 and the sum is SpectralEwaldWall2P's, whose grid
+// also covers the mirror points, so xi and the grid printed are those of 2N points). Prints per N the
 // best of --repeat wall-clock times of one evaluation (for the Stokeslet also split into the
 // local and the smooth part), xi and the grid, and the time divided by N log2 N (constant when
 // the cost grows like N log N).
 #include <capsula/ewald/SpectralEwald2P.hpp>
 #include <capsula/ewald/SpectralEwaldStresslet2P.hpp>
+#include <capsula/ewald/SpectralEwaldWall2P.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -30,7 +33,7 @@ struct Options {
   std::vector<int> sizes{1000, 10000, 100000};
   int repeat = 3;
   double density = 1.0;
-  bool stresslet = false;
+  std::string kernel = "stokeslet";
 };
 
 void printUsage()
@@ -40,7 +43,7 @@ void printUsage()
               "  --sizes=N1,N2,...   numbers of points (default: 1000,10000,100000)\n"
               "  --repeat=R          evaluations per size, the best is printed (default: 3)\n"
               "  --density=RHO       points per unit volume (default: 1)\n"
-              "  --kernel=NAME       stokeslet or stresslet (default: stokeslet)\n");
+              "  --kernel=NAME       stokeslet, stresslet or wall (default: stokeslet)\n");
 }
 
 /// Parses --key=value flags; false (after a message) on anything else.
@@ -57,8 +60,8 @@ bool parseOptions(int argc, char** argv, Options& options)
       options.repeat = std::atoi(value.c_str());
     } else if (key == "--density" && std::atof(value.c_str()) > 0.0) {
       options.density = std::atof(value.c_str());
-    } else if (key == "--kernel" && (value == "stokeslet" || value == "stresslet")) {
-      options.stresslet = value == "stresslet";
+    } else if (key == "--kernel" && (value == "stokeslet" || value == "stresslet" || value == "wall")) {
+      options.kernel = value;
     } else if (key == "--sizes" && !value.empty()) {
       options.sizes.clear();
       std::stringstream list(value);
@@ -90,22 +93,26 @@ void runSize(int count, const Options& options)
   const PeriodicLayer layer{side, side};
   std::mt19937 generator(12345u + static_cast<unsigned>(count));
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const int components = options.stresslet ? 9 : 3;
+  const bool stokeslet = options.kernel == "stokeslet";
+  const bool wall = options.kernel == "wall";
+  const int components = options.kernel == "stresslet" ? 9 : 3;
   std::vector<double> points(3 * count), forces(static_cast<std::size_t>(components) * count);
   for (double& p : points) {
-    p = side * unit(generator);
+    p = side * (1.0 - unit(generator)); // in (0, side]: above the wall for --kernel=wall
   }
   for (double& f : forces) {
     f = 2.0 * unit(generator) - 1.0;
   }
-  const SpectralEwaldSettings settings = spectralEwaldSettings(layer, options.tolerance, 0.0, side, count);
+  const SpectralEwaldSettings settings = wall ? spectralEwaldSettings(layer, options.tolerance, -side, side, 2 * count)
+                                              : spectralEwaldSettings(layer, options.tolerance, 0.0, side, count);
   double bestLocal = 1e300, bestSmooth = 1e300, bestTotal = 1e300;
-  for (int r = 0; r < options.repeat && options.stresslet; ++r) {
+  for (int r = 0; r < options.repeat && !stokeslet; ++r) {
     const auto start = Clock::now();
-    const auto u = spectralEwaldStresslet2P(layer, options.tolerance, points, forces, points);
+    const auto u = wall ? spectralEwaldWall2P(layer, options.tolerance, points, forces, points)
+                        : spectralEwaldStresslet2P(layer, options.tolerance, points, forces, points);
     bestTotal = std::min(bestTotal, secondsSince(start));
   }
-  for (int r = 0; r < options.repeat && !options.stresslet; ++r) {
+  for (int r = 0; r < options.repeat && stokeslet; ++r) {
     std::vector<double> u(3 * count, 0.0);
     const auto start = Clock::now();
     addLocalPart2P(layer, settings, points, forces, points, u);
@@ -119,7 +126,7 @@ void runSize(int count, const Options& options)
   }
   const double nLogN = count * std::log2(static_cast<double>(count));
   char local[32] = "-", smooth[32] = "-";
-  if (!options.stresslet) {
+  if (stokeslet) {
     std::snprintf(local, sizeof local, "%.4f", bestLocal);
     std::snprintf(smooth, sizeof smooth, "%.4f", bestSmooth);
   }
@@ -141,7 +148,10 @@ int main(int argc, char** argv)
   if (!parseOptions(argc, argv, options)) {
     return 2;
   }
-  std::printf("spectral Ewald 2P, %s, tolerance %.1e, density %.3g\n", options.stresslet ? "stresslet" : "Stokeslet",
+  std::printf("spectral Ewald 2P, %s, tolerance %.1e, density %.3g\n",
+              options.kernel == "wall"        ? "lower wall's Stokeslet"
+              : options.kernel == "stresslet" ? "stresslet"
+                                              : "Stokeslet",
               options.tolerance, options.density);
   std::printf("%8s %10s %10s %10s %7s %18s %12s\n", "N", "total (s)", "local (s)", "smooth (s)", "xi", "grid",
               "us/(N log2N)");
