@@ -32,7 +32,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <iomanip>
 #include <memory>
 #include <ostream>
@@ -41,11 +40,8 @@
 namespace capsula::run {
 
 namespace core = capsula::core;
-namespace fs = std::filesystem;
 
 namespace {
-
-constexpr const char* kCheckpointFile = "checkpoint.h5";
 
 std::string outputDirectory(const SceneRunOptions& options, const SceneOutputSettings& settings)
 {
@@ -209,16 +205,9 @@ void SceneRunner::attachJacobian()
 
 void SceneRunner::restore()
 {
-  const std::string path = (fs::path(*options_.restartDirectory) / kCheckpointFile).string();
+  const std::string path = checkpointPath(*options_.restartDirectory);
   // Every rank reads the (small) checkpoint itself: no broadcast of its contents needed.
-  io::Checkpoint checkpoint;
-  try {
-    checkpoint = io::readCheckpoint(path);
-  } catch (const core::IoError& e) {
-    throw core::InputError(core::message("--restart ", *options_.restartDirectory, ": ", e.what()));
-  }
-  requireSameApplication(checkpoint, options_.application, path);
-  requireSameRun(deck_, checkpoint.deckXml, path);
+  const io::Checkpoint checkpoint = readRestartCheckpoint(*options_.restartDirectory, options_.application, deck_);
   io::loadSections(checkpoint, path, {&stateSection_, &outputs_, &live_, &tether_, &switches_});
   // The record the run continues, checked before anything is written.
   requireTableUpToCheckpoint(*options_.restartDirectory, "metrics.csv", state_.time, outputs_.outputsWritten());

@@ -152,14 +152,9 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   // The checkpoint is read and checked before the output directory is touched: a wrong
   // --restart must leave the directory it names as it was.
   std::optional<io::Checkpoint> checkpoint;
-  const std::string checkpointPath = restartDirectory ? *restartDirectory + "/checkpoint.h5" : "";
+  const std::string checkpointPath = restartDirectory ? run::checkpointPath(*restartDirectory) : "";
   if (restartDirectory) {
-    try {
-      checkpoint = io::readCheckpoint(checkpointPath);
-    } catch (const core::IoError& e) {
-      throw core::InputError(core::message("--restart ", *restartDirectory, ": ", e.what()));
-    }
-    requireSameApplication(*checkpoint, "tether2d", checkpointPath);
+    checkpoint = readRestartCheckpoint(*restartDirectory, "tether2d", deck_);
   }
   RunOutputs files(comm_, outputDirectory, restartDirectory);
   RunSummary summary("tether2d", deck_, comm_->getSize());

@@ -10,8 +10,8 @@
 //   summary.json       RunSummary.hpp; the results: tethered, preparation time, final
 //                      values, maxima
 //   deck.xml, run.json the validated deck and the run record
-// Restart takes the deck given on its command line; the model refuses one with another
-// Cell/Prestress (its reference shape would change).
+// Restart: the deck must equal the checkpoint's except for 'Time integration/End time' and
+// 'Output/Directory' (RestartDeck.hpp); a changed key is refused before anything is written.
 #include <capsula/run/TetherOutputs2D.hpp>
 #include <capsula/scene2d/CapsuleModel2D.hpp>
 #include <capsula/scene2d/TetherProcedure2D.hpp>
