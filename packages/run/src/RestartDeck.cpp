@@ -30,13 +30,13 @@ struct DeckDifference {
 std::string valueText(const Teuchos::ParameterList& list, const std::string& name)
 {
   if (!list.isParameter(name)) {
-    return "absent";
+    return "(absent)";
   }
   if (list.isSublist(name)) {
-    return "a list";
+    return "(a sublist)";
   }
   std::ostringstream text;
-  text << "'" << list.getEntry(name).getAny(false) << "'";
+  text << list.getEntry(name).getAny(false);
   return text.str();
 }
 
@@ -82,8 +82,9 @@ void requireSameRun(const Teuchos::ParameterList& current, const std::string& ch
   const DeckDifference difference = firstDifference(*then, *now, "");
   core::require<core::InputError>(difference.path.empty(), "Cannot restart from '", checkpointPath,
                                   "': the deck differs from the one the run was started with at '", difference.path,
-                                  "' (", difference.then, " in the checkpoint, ", difference.now,
-                                  " now). Only 'Time integration/End time' and 'Output/Directory' may change on ",
+                                  "': the run was written with ", difference.path, " = ", difference.then,
+                                  " but the deck has ", difference.now,
+                                  ". Only 'Time integration/End time' and 'Output/Directory' may change on ",
                                   "restart (use the deck.xml written next to the checkpoint, or start a new run in "
                                   "another output directory).");
 }

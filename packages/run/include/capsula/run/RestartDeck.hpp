@@ -24,7 +24,7 @@ io::Checkpoint readRestartCheckpoint(const std::string& restartDirectory, const 
 
 /// Throws core::InputError naming the checkpoint, the first key whose value differs (or
 /// that only one deck has) between `current` and the deck stored in the checkpoint, and
-/// both values.
+/// both values ("the run was written with KEY = 0.25 but the deck has 0.05").
 void requireSameRun(const Teuchos::ParameterList& current, const std::string& checkpointDeckXml,
                     const std::string& checkpointPath);
 
