@@ -146,3 +146,11 @@ add_test(NAME regression_tether2d_auto_ranks_agree
   COMMAND check_metrics same ${_t2out}/auto_whole/metrics.csv ${_t2out}/auto_two_ranks/metrics.csv 0)
 set_tests_properties(regression_tether2d_auto_restart_agrees regression_tether2d_auto_ranks_agree PROPERTIES
   FIXTURES_REQUIRED tether2d_auto LABELS "mpi;regression")
+# Auto's switches in summary.json ('time integration/switches'): the restarted run listed only
+# those after its checkpoint, here none, where the uninterrupted run lists the switch to
+# ROS34PW2 in the preparation. The run backbone keeps them in the checkpoint, as for cell3d.
+add_test(NAME regression_tether2d_auto_restart_keeps_the_switches
+  COMMAND /usr/bin/python3 -c "import json, sys; s = [json.load(open(f + '/summary.json'))['time integration'].get('switches') for f in sys.argv[1:]]; print(s); sys.exit(not (s[0] and s[0] == s[1] and s[0][0]['reason'].startswith('preparation stage: switched to ROS34PW2')))"
+          ${_t2out}/auto_whole ${_t2out}/auto_restarted)
+set_tests_properties(regression_tether2d_auto_restart_keeps_the_switches PROPERTIES
+  FIXTURES_REQUIRED tether2d_auto LABELS regression)

@@ -3,6 +3,9 @@
 #include <capsula/core/Deck.hpp>
 #include <capsula/core/Error.hpp>
 
+#include <filesystem>
+#include <sstream>
+
 namespace capsula::run {
 
 namespace {
@@ -18,33 +21,52 @@ void removeRestartFreeKeys(Teuchos::ParameterList& deck)
   }
 }
 
-// The first key whose value differs (or that only one list has), "" if none.
-std::string firstDifference(const Teuchos::ParameterList& a, const Teuchos::ParameterList& b, const std::string& prefix)
+// A key that differs between the checkpoint's deck and the current one.
+struct DeckDifference {
+  std::string path; ///< "" if none
+  std::string then, now;
+};
+
+std::string valueText(const Teuchos::ParameterList& list, const std::string& name)
 {
-  for (auto it = a.begin(); it != a.end(); ++it) {
-    const std::string& name = a.name(it);
-    const std::string path = prefix.empty() ? name : prefix + "/" + name;
-    if (!b.isParameter(name)) {
-      return path;
+  if (!list.isParameter(name)) {
+    return "(absent)";
+  }
+  if (list.isSublist(name)) {
+    return "(a sublist)";
+  }
+  std::ostringstream text;
+  text << list.getEntry(name).getAny(false);
+  return text.str();
+}
+
+// The first key whose value differs (or that only one list has) between `then` and `now`.
+DeckDifference firstDifference(const Teuchos::ParameterList& then, const Teuchos::ParameterList& now,
+                               const std::string& prefix)
+{
+  const auto differs = [&](const std::string& name) {
+    return DeckDifference{prefix.empty() ? name : prefix + "/" + name, valueText(then, name), valueText(now, name)};
+  };
+  for (auto it = then.begin(); it != then.end(); ++it) {
+    const std::string& name = then.name(it);
+    if (!now.isParameter(name) || then.isSublist(name) != now.isSublist(name)) {
+      return differs(name);
     }
-    if (a.isSublist(name) != b.isSublist(name)) {
-      return path;
-    }
-    if (a.isSublist(name)) {
-      const std::string inner = firstDifference(a.sublist(name), b.sublist(name), path);
-      if (!inner.empty()) {
+    if (then.isSublist(name)) {
+      DeckDifference inner = firstDifference(then.sublist(name), now.sublist(name), differs(name).path);
+      if (!inner.path.empty()) {
         return inner;
       }
-    } else if (!a.getEntry(name).getAny(false).same(b.getEntry(name).getAny(false))) {
-      return path;
+    } else if (!then.getEntry(name).getAny(false).same(now.getEntry(name).getAny(false))) {
+      return differs(name);
     }
   }
-  for (auto it = b.begin(); it != b.end(); ++it) {
-    if (!a.isParameter(b.name(it))) {
-      return prefix.empty() ? b.name(it) : prefix + "/" + b.name(it);
+  for (auto it = now.begin(); it != now.end(); ++it) {
+    if (!then.isParameter(now.name(it))) {
+      return differs(now.name(it));
     }
   }
-  return "";
+  return {};
 }
 
 } // namespace
@@ -57,11 +79,14 @@ void requireSameRun(const Teuchos::ParameterList& current, const std::string& ch
   auto then = core::readDeckFromString(checkpointDeckXml, checkpointPath);
   removeRestartFreeKeys(*now);
   removeRestartFreeKeys(*then);
-  const std::string key = firstDifference(*then, *now, "");
-  core::require<core::InputError>(key.empty(), "Cannot restart from '", checkpointPath,
-                                  "': the deck differs from the one the run was ", "started with at '", key,
-                                  "'. Only 'Time integration/End time' and 'Output/Directory' may change on ",
-                                  "restart (use the deck.xml written next to the checkpoint).");
+  const DeckDifference difference = firstDifference(*then, *now, "");
+  core::require<core::InputError>(difference.path.empty(), "Cannot restart from '", checkpointPath,
+                                  "': the deck differs from the one the run was started with at '", difference.path,
+                                  "': the run was written with ", difference.path, " = ", difference.then,
+                                  " but the deck has ", difference.now,
+                                  ". Only 'Time integration/End time' and 'Output/Directory' may change on ",
+                                  "restart (use the deck.xml written next to the checkpoint, or start a new run in "
+                                  "another output directory).");
 }
 
 void requireSameApplication(const io::Checkpoint& checkpoint, const std::string& application,
@@ -72,6 +97,26 @@ void requireSameApplication(const io::Checkpoint& checkpoint, const std::string&
                                   checkpoint.application, ", not of ", application, ". Continue it with ",
                                   checkpoint.application, " --restart, or start ", application,
                                   " without --restart (or with the directory of a ", application, " run).");
+}
+
+std::string checkpointPath(const std::string& directory)
+{
+  return (std::filesystem::path(directory) / "checkpoint.h5").string();
+}
+
+io::Checkpoint readRestartCheckpoint(const std::string& restartDirectory, const std::string& application,
+                                     const Teuchos::ParameterList& validatedDeck)
+{
+  const std::string path = checkpointPath(restartDirectory);
+  io::Checkpoint checkpoint;
+  try {
+    checkpoint = io::readCheckpoint(path);
+  } catch (const core::IoError& e) {
+    throw core::InputError(core::message("--restart ", restartDirectory, ": ", e.what()));
+  }
+  requireSameApplication(checkpoint, application, path);
+  requireSameRun(validatedDeck, checkpoint.deckXml, path);
+  return checkpoint;
 }
 
 } // namespace capsula::run

@@ -228,25 +228,9 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
     throw core::NumericalError(degraded); // the run records it in summary.json
   }
   if (settings_.checkpoint) {
-    files_.writeCheckpoint([&] { return checkpoint(state); });
+    writeCheckpoint_();
   }
   return steady;
-}
-
-void SceneOutputs::writeCheckpoint(const timeint::IntegrationState& state)
-{
-  files_.writeCheckpoint([&] { return checkpoint(state); });
-}
-
-io::Checkpoint SceneOutputs::checkpoint(const timeint::IntegrationState& state) const
-{
-  io::Checkpoint checkpoint;
-  checkpoint.time = state.time;
-  checkpoint.step = state.statistics.acceptedSteps;
-  checkpoint.stepSize = state.statistics.lastStep;
-  checkpoint.deckXml = core::deckToXml(live_.deck(), false);
-  io::saveSections(checkpoint, checkpointSections_);
-  return checkpoint;
 }
 
 void SceneOutputs::save(io::Checkpoint& checkpoint) const

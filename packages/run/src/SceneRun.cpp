@@ -2,23 +2,17 @@
 
 #include "capsula/run/Collective.hpp"
 #include "capsula/run/IntegrationStateSection.hpp"
-#include "capsula/run/InterruptionWatch.hpp"
-#include "capsula/run/MethodSwitchRecord.hpp"
 #include "capsula/run/PairMetrics.hpp"
-#include "capsula/run/RestartDeck.hpp"
 #include "capsula/run/RestartRecord.hpp"
-#include "capsula/run/RunOutputs.hpp"
+#include "capsula/run/RunBackbone.hpp"
 #include "capsula/run/RunScene.hpp"
-#include "capsula/run/RunSummary.hpp"
 #include "capsula/run/SceneOutputSettings.hpp"
 #include "capsula/run/SceneOutputs.hpp"
 #include "capsula/run/TetherRecord.hpp"
 #include "capsula/run/WallClock.hpp"
 
 #include <capsula/core/Error.hpp>
-#include <capsula/core/Interruption.hpp>
 #include <capsula/core/Timers.hpp>
-#include <capsula/io/Checkpoint.hpp>
 #include <capsula/operators/ShearRate.hpp>
 #include <capsula/scene/NodesAboveWall.hpp>
 #include <capsula/scene/SceneBounds.hpp>
@@ -32,7 +26,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <iomanip>
 #include <memory>
 #include <ostream>
@@ -41,11 +34,8 @@
 namespace capsula::run {
 
 namespace core = capsula::core;
-namespace fs = std::filesystem;
 
 namespace {
-
-constexpr const char* kCheckpointFile = "checkpoint.h5";
 
 std::string outputDirectory(const SceneRunOptions& options, const SceneOutputSettings& settings)
 {
@@ -86,9 +76,10 @@ SceneOutputSettings outputSettings(const Teuchos::ParameterList& deck, const sce
   return settings;
 }
 
-/// The run of a scene: builds the parts, restores them from a checkpoint, runs the time
-/// loop with them as observers, and watches the gap between the cells and the progress.
-class SceneRunner final : public timeint::IntegrationObserver {
+/// The run of a scene, the model the run backbone (RunBackbone.hpp) drives: builds the
+/// parts, restores them from a checkpoint, runs the time loop with them as observers, and
+/// watches the gap between the cells and the progress.
+class SceneRunner final : public timeint::IntegrationObserver, public RunModel {
 public:
   SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
               const SceneRunOptions& options, const operators::KernelRegistry& kernels);
@@ -99,19 +90,22 @@ public:
                                      bool atOutputTime) override;
   timeint::ObserverVerdict atOutput(const timeint::IntegrationState& state, timeint::OutputReason reason) override;
 
+  std::vector<io::CheckpointSection*> checkpointSections() override
+  {
+    return {&stateSection_, &outputs_, &live_, &tether_};
+  }
+  void addResults(io::JsonValue& json) const override;
+  double lastOutputTime() const override { return outputs_.lastTime(); }
+
 private:
   std::ostream& log() { return *log_; }
   void restore();
   void attachJacobian();
   bool cellsTooClose(const timeint::IntegrationState& state);
   void progress(const timeint::IntegrationState& state);
-  io::JsonValue summary(const std::string& status, const std::string& note) const;
-  io::JsonValue summary(const std::string& status, const std::string& note, double time) const;
   void report(const std::string& status);
-  [[noreturn]] void stopInterrupted(int signal);
 
   const Teuchos::ParameterList& deck_;
-  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   SceneRunOptions options_;
   const operators::KernelRegistry& kernels_;
   Teuchos::oblackholestream quiet_;
@@ -120,20 +114,19 @@ private:
   SceneOutputSettings settings_;
   timeint::TimeIntegrator integrator_;
   timeint::IntegrationState state_;
-  RunOutputs files_;
+  RunBackbone backbone_;
+  RunOutputs& files_;
   RunScene live_;
   SceneOutputs outputs_;
   TetherRecord tether_;
   IntegrationStateSection stateSection_;
-  RunSummary summary_;
-  InterruptionWatch watch_;
   // The stiff methods' Jacobian, built for the scene it belongs to (again after an adaption).
   std::shared_ptr<scene::VelocityJacobian> jacobian_;
   const scene::Scene* jacobianScene_ = nullptr;
-  MethodSwitchRecord switches_; // Auto's, since the start of the run (a checkpoint section)
   bool restarted_ = false;
   bool tooClose_ = false;
   std::string stopReason_;
+  std::vector<std::string> terms_;
   std::chrono::steady_clock::time_point wallStart_;
   double simulatedStart_ = 0.0;
 };
@@ -141,7 +134,6 @@ private:
 SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
                          const SceneRunOptions& options, const operators::KernelRegistry& kernels)
     : deck_(deck),
-      comm_(comm),
       options_(options),
       kernels_(kernels),
       log_(options.log && comm->getRank() == 0 ? options.log : &quiet_),
@@ -152,13 +144,14 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
                   [this](double t, const std::vector<double>& y, std::vector<double>& dydt) {
                     live_.scene().velocity(t, y, dydt);
                   }),
-      files_(comm, outputDirectory(options, settings_), options.restartDirectory),
+      backbone_(
+          {options.application, options.deckSource, outputDirectory(options, settings_), options.restartDirectory},
+          deck, comm, *this, integrator_, state_, log_),
+      files_(backbone_.files()),
       live_(description_, deck, comm, kernels, state_, *log_),
       outputs_(live_, description_, settings_, files_, integrator_.settings().steadyTolerance),
       tether_(live_, description_.capillaryNumber),
-      stateSection_(state_, "timeint."),
-      summary_(options.application, deck, comm->getSize()),
-      watch_(*comm)
+      stateSection_(state_, "timeint.")
 {
   // Loaded in this order: the scene's meshes take their positions from the state.
   if (options_.restartDirectory) {
@@ -173,7 +166,7 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
     scene::requireToleranceBelowCellSize(integrator_.settings().tolerance, "Time integration/Tolerance", description_,
                                          scene::smallestSemiAxes(cells));
   }
-  outputs_.setCheckpointSections({&stateSection_, &outputs_, &live_, &tether_, &switches_});
+  outputs_.setCheckpointWriter([this] { backbone_.writeCheckpoint(); });
   // A stage state or step result with a node through the wall or a folded membrane rejects
   // the attempt (NodesAboveWall.hpp, UnfoldedMembranes.hpp).
   integrator_.setDomainCheck([this](const std::vector<double>& y) {
@@ -193,7 +186,7 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
   if (jacobian_) {
     terms.push_back(jacobian_->describe());
   }
-  summary_.setTerms(std::move(terms));
+  terms_ = std::move(terms);
 }
 
 // The stiff methods' Jacobian of the scene as it is now (a mesh adaption replaces the scene).
@@ -209,27 +202,14 @@ void SceneRunner::attachJacobian()
 
 void SceneRunner::restore()
 {
-  const std::string path = (fs::path(*options_.restartDirectory) / kCheckpointFile).string();
-  // Every rank reads the (small) checkpoint itself: no broadcast of its contents needed.
-  io::Checkpoint checkpoint;
-  try {
-    checkpoint = io::readCheckpoint(path);
-  } catch (const core::IoError& e) {
-    throw core::InputError(core::message("--restart ", *options_.restartDirectory, ": ", e.what()));
-  }
-  requireSameApplication(checkpoint, options_.application, path);
-  requireSameRun(deck_, checkpoint.deckXml, path);
-  io::loadSections(checkpoint, path, {&stateSection_, &outputs_, &live_, &tether_, &switches_});
+  // Every rank reads the (small) checkpoint itself (RunBackbone): no broadcast of its contents needed.
+  backbone_.restore();
   // The record the run continues, checked before anything is written.
   requireTableUpToCheckpoint(*options_.restartDirectory, "metrics.csv", state_.time, outputs_.outputsWritten());
-  const double end = integrator_.settings().endTime;
   core::require<core::InputError>(!state_.steady, "--restart ", *options_.restartDirectory,
                                   ": the run reached a steady state at t = ", state_.time,
                                   " ('Time integration/Steady tolerance'); a restart has nothing to do.");
-  core::require<core::InputError>(
-      state_.time < end, "--restart ", *options_.restartDirectory, ": the checkpoint is at t = ", state_.time,
-      ", at or past 'Time integration/End time' = ", end,
-      "; nothing to do. Give a later end, e.g. --set \"Time integration/End time=", 2.0 * state_.time, "\".");
+  backbone_.requireTimeLeft(state_.time, integrator_.settings().endTime);
   restarted_ = true;
 }
 
@@ -258,20 +238,15 @@ bool SceneRunner::cellsTooClose(const timeint::IntegrationState& state)
   stopReason_ = reason.str();
   outputs_.observe(state);
   progress(state);
-  summary_.recordPeakMemory(*comm_);
-  files_.writeSummary([&] { return summary("too close", stopReason_); });
+  backbone_.writeSummary("too close", stopReason_, outputs_.lastTime());
   log() << stopReason_ << "\n";
   return true;
 }
 
-timeint::ObserverVerdict SceneRunner::afterStep(timeint::IntegrationState& state, const timeint::StepReport& report,
+timeint::ObserverVerdict SceneRunner::afterStep(timeint::IntegrationState& state, const timeint::StepReport&,
                                                 bool atOutputTime)
 {
-  if (!report.switchReason.empty()) {
-    switches_.add(state.time, report.switchReason);
-    log() << std::setprecision(6) << "t = " << state.time << ": " << report.switchReason << "\n";
-  }
-  attachJacobian(); // RunScene, observed first, may have rebuilt the scene
+  attachJacobian(); // RunScene, observed before, may have rebuilt the scene
   tooClose_ = cellsTooClose(state);
   if (tooClose_) {
     return timeint::ObserverVerdict::Stop;
@@ -285,8 +260,7 @@ timeint::ObserverVerdict SceneRunner::afterStep(timeint::IntegrationState& state
 // After the outputs (SceneOutputs observes first): summary.json and a progress line.
 timeint::ObserverVerdict SceneRunner::atOutput(const timeint::IntegrationState& state, timeint::OutputReason)
 {
-  summary_.recordPeakMemory(*comm_);
-  files_.writeSummary([&] { return summary(outputs_.steady() ? "steady" : "running", ""); });
+  backbone_.writeSummary(outputs_.steady() ? "steady" : "running", "", outputs_.lastTime());
   progress(state);
   return timeint::ObserverVerdict::Continue;
 }
@@ -314,47 +288,23 @@ void SceneRunner::progress(const timeint::IntegrationState& state)
   log() << line.str() << std::endl;
 }
 
-// `note`: the failure message (status "failed") or why the run stopped early.
-io::JsonValue SceneRunner::summary(const std::string& status, const std::string& note) const
+// The scene's entries of summary.json: the outputs' results, the tether's.
+void SceneRunner::addResults(io::JsonValue& json) const
 {
-  return summary(status, note, outputs_.lastTime());
-}
-
-io::JsonValue SceneRunner::summary(const std::string& status, const std::string& note, double time) const
-{
-  return summary_.json(status, note, time, state_.statistics, [this](io::JsonValue& json) {
-    json["time integration"]["method"] = timeint::toString(integrator_.settings().method);
-    json["time integration"]["in use"] = integrator_.activeMethodName(state_);
-    for (const auto& [switchTime, reason] : switches_.switches()) {
-      io::JsonValue change = io::JsonValue::object();
-      change["time"] = switchTime;
-      change["reason"] = reason;
-      json["time integration"]["switches"].append(change);
-    }
-    outputs_.addResults(json);
-    tether_.addResults(json, outputs_.steady());
-  });
+  outputs_.addResults(json);
+  tether_.addResults(json, outputs_.steady());
 }
 
 SceneRunResult SceneRunner::execute()
 {
   wallStart_ = std::chrono::steady_clock::now();
-  summary_.begin(state_.statistics, restarted_);
-  files_.open(deck_, {options_.application, options_.deckSource, comm_->getSize()});
-  log() << "Output directory: " << files_.directory() << "\n";
-  for (const auto& name : files_.removedStaleFiles()) {
-    log() << "Removed " << name << ", left by a writer that was killed\n";
-  }
-  summary_.printTerms(log());
+  backbone_.open();
   outputs_.open(restarted_ ? std::optional<double>(state_.time) : std::nullopt);
-  // From the start: the status is never missing, and the file holds the space a failure on
-  // a full disk rewrites it in (RunOutputs::writeSummaryAfterFailure).
-  summary_.recordPeakMemory(*comm_);
-  files_.writeSummary([&] { return summary("running", "", state_.time); });
+  backbone_.begin(terms_);
 
   timeint::OutputSchedule schedule;
   schedule.interval = settings_.interval;
-  try {
+  backbone_.recordingFailure([&] {
     if (!restarted_) {
       state_ = integrator_.start(0.0, live_.scene().initialPositions());
     } else {
@@ -363,48 +313,27 @@ SceneRunResult SceneRunner::execute()
     }
     // The start is observed (never steady: the test needs t > 0); the ETA counts from after it.
     simulatedStart_ = state_.time;
-    integrator_.integrate(state_, schedule, {&live_, &tether_, &outputs_, this, &watch_});
-  } catch (const core::NumericalError& e) {
-    // The same, with what the last output says of a softened membrane law (a fold or step
-    // collapse that follows has that cause).
-    const std::string message = e.what() + outputs_.softeningNote();
-    files_.writeSummaryAfterFailure([&] { return summary("failed", message); });
-    throw core::NumericalError(message);
-  } catch (const std::exception& e) {
-    // Record the failure next to the last good outputs, then let the app report it.
-    files_.writeSummaryAfterFailure([&] { return summary("failed", e.what()); });
-    throw;
-  }
-  if (watch_.signal() != 0 && !tooClose_ && !outputs_.steady()) {
-    stopInterrupted(watch_.signal());
+    try {
+      integrator_.integrate(state_, schedule, {&backbone_, &live_, &tether_, &outputs_, this, &backbone_.watch()});
+    } catch (const core::NumericalError& e) {
+      // With what the last output says of a softened membrane law (a fold or step collapse
+      // that follows has that cause).
+      throw core::NumericalError(e.what() + outputs_.softeningNote());
+    }
+  });
+  if (backbone_.signal() != 0 && !tooClose_ && !outputs_.steady()) {
+    backbone_.stopInterrupted();
   }
   const std::string status = tooClose_ ? "too close" : outputs_.steady() ? "steady" : "finished";
-  summary_.recordPeakMemory(*comm_);
-  files_.writeSummary([&] { return summary(status, stopReason_); });
+  backbone_.writeSummary(status, stopReason_, outputs_.lastTime());
   report(status);
   SceneRunResult result;
   result.status = status;
   result.time = state_.time;
   result.acceptedSteps = state_.statistics.acceptedSteps;
   result.outputDirectory = files_.directory();
-  result.terms = summary_.terms();
+  result.terms = backbone_.summary().terms();
   return result;
-}
-
-// A signal stopped the loop after the step every rank agreed on: the checkpoint and
-// summary.json at that step, then the line the app prints.
-void SceneRunner::stopInterrupted(int signal)
-{
-  std::ostringstream line;
-  line << std::setprecision(6) << "interrupted by " << core::signalName(signal) << " at t = " << state_.time
-       << " (step " << state_.statistics.acceptedSteps << ")";
-  if (files_.writing()) {
-    outputs_.writeCheckpoint(state_);
-    files_.writeSummary([&] { return summary("interrupted", line.str(), state_.time); });
-    line << "; the checkpoint and summary.json are in " << files_.directory() << ": continue with --restart "
-         << files_.directory();
-  }
-  throw core::Interrupted(signal, line.str());
 }
 
 // The key results of the last output, and how to look at the files.

@@ -98,7 +98,7 @@ io::Snapshot snapshotOf(const contour::Contour& contour, const elasticity::Membr
 TetherOutputs2D::TetherOutputs2D(scene2d::CapsuleModel2D& model, const TetherStages2D& stages,
                                  const OutputSettings2D& settings, const timeint::TimeIntegrationSettings& integration,
                                  double forceTransient, RunOutputs& files, timeint::IntegrationState& state,
-                                 std::string deckXml, std::ostream* log)
+                                 std::ostream* log)
     : model_(model),
       stages_(stages),
       settings_(settings),
@@ -106,7 +106,6 @@ TetherOutputs2D::TetherOutputs2D(scene2d::CapsuleModel2D& model, const TetherSta
       forceTransient_(forceTransient),
       files_(files),
       state_(state),
-      deckXml_(std::move(deckXml)),
       log_(log)
 {}
 
@@ -220,22 +219,9 @@ timeint::ObserverVerdict TetherOutputs2D::atOutput(const timeint::IntegrationSta
     observe(lastStep_.stepSize, lastStep_.steadyMeasure, last);
   }
   if (settings_.checkpointEvery > 0 && outputIndex() % settings_.checkpointEvery == 0) {
-    writeCheckpoint();
+    writeCheckpoint_();
   }
   return timeint::ObserverVerdict::Continue;
-}
-
-void TetherOutputs2D::writeCheckpoint()
-{
-  files_.writeCheckpoint([&] {
-    io::Checkpoint checkpoint;
-    checkpoint.time = stages_.tau(state_.time);
-    checkpoint.step = state_.statistics.acceptedSteps;
-    checkpoint.stepSize = state_.proposedStep;
-    checkpoint.deckXml = deckXml_;
-    io::saveSections(checkpoint, checkpointSections_);
-    return checkpoint;
-  });
 }
 
 void TetherOutputs2D::save(io::Checkpoint& checkpoint) const

@@ -1,16 +1,11 @@
 #include "capsula/run/TetherRun2D.hpp"
 
 #include "capsula/run/IntegrationStateSection.hpp"
-#include "capsula/run/RestartDeck.hpp"
-#include "capsula/run/InterruptionWatch.hpp"
-#include "capsula/run/RunOutputs.hpp"
-#include "capsula/run/RunSummary.hpp"
+#include "capsula/run/RunBackbone.hpp"
 #include "capsula/run/TetherStages2D.hpp"
 
 #include <capsula/core/Deck.hpp>
 #include <capsula/core/Error.hpp>
-#include <capsula/core/Interruption.hpp>
-#include <capsula/io/Checkpoint.hpp>
 #include <capsula/operators/ContourDiscretisation2D.hpp>
 #include <capsula/operators/ShearRate.hpp>
 #include <capsula/scene2d/NodesInFluid2D.hpp>
@@ -19,12 +14,8 @@
 #include <capsula/timeint/TimeIntegrator.hpp>
 
 #include <algorithm>
-#include <cstdint>
-#include <functional>
-#include <iomanip>
 #include <memory>
 #include <ostream>
-#include <sstream>
 #include <vector>
 
 namespace capsula::run {
@@ -32,7 +23,7 @@ namespace capsula::run {
 namespace {
 
 /// The summary.json results of a tether2d run, after the common part (RunSummary.hpp).
-void addResults(io::JsonValue& summary, const TetherRunResult2D& result)
+void addTetherResults(io::JsonValue& summary, const TetherRunResult2D& result)
 {
   summary["tethered"] = result.tethered;
   summary["preparation time"] = result.preparationTime;
@@ -73,51 +64,192 @@ TetherRun2D::TetherRun2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, con
 
 namespace {
 
-// Method Auto's switches: a log line each and summary.json's "time integration" (those of
-// this process, with the stage and its tau).
-class MethodSwitchLog2D final : public timeint::IntegrationObserver {
-public:
-  MethodSwitchLog2D(const TetherStages2D& stages, std::ostream* log) : stages_(stages), log_(log) {}
+// The time integration of the deck, with a periodic shear rate: steps of at most a
+// twentieth of its period, outputs at a whole number per period (Output/Interval is in
+// tau = k t / lambda), no steady-state stop.
+timeint::TimeIntegrationSettings integrationSettings2D(const Teuchos::ParameterList& deck,
+                                                       const scene2d::CapsuleModel2D& model,
+                                                       const OutputSettings2D& output)
+{
+  timeint::TimeIntegrationSettings settings = timeint::timeIntegrationSettings(deck.sublist("Time integration"));
+  settings.maximumStep = operators::limitStepToPeriod(settings.maximumStep, model.flow().shearRate);
+  settings.initialStep = std::min(settings.initialStep, settings.maximumStep);
+  operators::requireOutputsCommensurate(model.flow().shearRate, "Flow/Shear rate", output.interval, "Output/Interval",
+                                        model.flow().conditions.viscosityRatio);
+  operators::requireNoSteadyStop(model.flow().shearRate, "Flow/Shear rate", settings.steadyTolerance);
+  return settings;
+}
 
-  timeint::ObserverVerdict afterStep(timeint::IntegrationState& state, const timeint::StepReport& report, bool) override
+/// A run of the 2D tethered cell, the model the run backbone (RunBackbone.hpp) drives: the
+/// preparation and tethered stages (or the free stage alone), each a time loop with the
+/// stages, the outputs, Auto's switches and the backbone's interruption watch as observers.
+class TetherRunner2D final : public RunModel {
+public:
+  TetherRunner2D(scene2d::CapsuleModel2D& model, const scene2d::TetherSettings2D& tether,
+                 const OutputSettings2D& output, const Teuchos::ParameterList& deck,
+                 const Teuchos::RCP<const Teuchos::Comm<int>>& comm, RunInvocation invocation, std::ostream* log);
+
+  TetherRunResult2D execute();
+
+  std::vector<io::CheckpointSection*> checkpointSections() override
   {
-    if (!report.switchReason.empty()) {
-      const double tau = stages_.tau(state.time);
-      io::JsonValue change = io::JsonValue::object();
-      change["stage"] = stages_.preparing() ? "preparation" : stages_.tethered() ? "tethered" : "free";
-      change["tau"] = tau;
-      change["reason"] = report.switchReason;
-      switches_.push_back(change);
-      if (log_ != nullptr) {
-        *log_ << "tau = " << tau << ": " << report.switchReason << "\n";
-      }
-    }
-    return timeint::ObserverVerdict::Continue;
+    // Loaded in this order: the stages rebuild the model's markers and tether, which drops
+    // the warm start the model then restores.
+    return {&stateSection_, &stages_, &model_, &outputs_};
   }
-  const std::vector<io::JsonValue>& switches() const { return switches_; }
+  void addResults(io::JsonValue& json) const override;
+  double reportedTime(double t) const override { return stages_.tau(t); }
+  const char* timeName() const override { return "tau"; }
+  std::string stage() const override
+  {
+    return stages_.preparing() ? "preparation" : stages_.tethered() ? "tethered" : "free";
+  }
+  double lastOutputTime() const override { return outputs_.result().finalTime; }
 
 private:
-  const TetherStages2D& stages_;
+  /// The duration of the tethered (or free) stage in tau.
+  double endTau() const { return integrator_.settings().endTime; }
+  void restore();
+  std::vector<std::string> terms() const;
+  void integrateStages();
+  void stopIfInterrupted(bool runOver);
+  /// The outputs' values with the stages' and the integrator's.
+  TetherRunResult2D result() const;
+
+  scene2d::CapsuleModel2D& model_;
+  const scene2d::TetherSettings2D& tether_;
+  const OutputSettings2D& output_;
   std::ostream* log_;
-  std::vector<io::JsonValue> switches_;
+  timeint::TimeIntegrator integrator_;
+  std::shared_ptr<scene2d::VelocityJacobian2D> jacobian_;
+  timeint::IntegrationState state_;
+  RunBackbone backbone_;
+  TetherStages2D stages_;
+  TetherOutputs2D outputs_;
+  IntegrationStateSection stateSection_;
 };
 
-// A signal stopped the loop after the step every rank agreed on: the checkpoint and
-// summary.json there, then the line the app prints.
-[[noreturn]] void stopInterrupted(int signal, double tau, std::int64_t step, RunOutputs& files,
-                                  TetherOutputs2D& outputs,
-                                  const std::function<io::JsonValue(const std::string&)>& json)
+TetherRunner2D::TetherRunner2D(scene2d::CapsuleModel2D& model, const scene2d::TetherSettings2D& tether,
+                               const OutputSettings2D& output, const Teuchos::ParameterList& deck,
+                               const Teuchos::RCP<const Teuchos::Comm<int>>& comm, RunInvocation invocation,
+                               std::ostream* log)
+    : model_(model),
+      tether_(tether),
+      output_(output),
+      log_(log),
+      integrator_(integrationSettings2D(deck, model, output),
+                  [this](double t, const std::vector<double>& y, std::vector<double>& dydt) {
+                    model_.rightHandSide(t, y, dydt);
+                  }),
+      backbone_(std::move(invocation), deck, comm, *this, integrator_, state_, log),
+      stages_(model, tether, integrator_, state_, log),
+      outputs_(model, stages_, output, integrator_.settings(), tether.forceTransient, backbone_.files(), state_, log),
+      stateSection_(state_, "")
 {
-  std::ostringstream line;
-  line << std::setprecision(6) << "interrupted by " << core::signalName(signal) << " at tau = " << tau << " (step "
-       << step << ")";
-  if (files.writing()) {
-    outputs.writeCheckpoint();
-    files.writeSummary([&] { return json(line.str()); });
-    line << "; the checkpoint and summary.json are in " << files.directory() << ": continue with --restart "
-         << files.directory();
+  // With the wall, a stage state or a step with a node on or below it is a rejected
+  // attempt (NodesInFluid2D.hpp), not a failure of the run.
+  if (model_.flow().wall) {
+    integrator_.setDomainCheck(scene2d::requireNodesInFluid);
   }
-  throw core::Interrupted(signal, line.str());
+  // The stiff methods' Jacobian (VelocityJacobian2D.hpp) reads the model at every
+  // linearisation, so it follows the tethering and the regrids as it is.
+  if (timeint::needsLinearisedSystem(integrator_.settings().method)) {
+    jacobian_ = std::make_shared<scene2d::VelocityJacobian2D>(model_, comm, deck);
+    integrator_.setLinearisedSystem(jacobian_);
+  }
+  outputs_.setCheckpointWriter([this] { backbone_.writeCheckpoint(); });
+}
+
+void TetherRunner2D::restore()
+{
+  backbone_.restore();
+  state_.steady = false; // a restart goes on from where the stopped run was
+  if (!stages_.preparing()) {
+    backbone_.requireTimeLeft(stages_.tau(state_.time), endTau());
+  }
+}
+
+std::vector<std::string> TetherRunner2D::terms() const
+{
+  std::vector<std::string> terms = model_.terms();
+  if (tether_.enabled) {
+    terms.emplace_back("tether constraint after a free preparation stage");
+  }
+  terms.push_back(timeint::describeTimeIntegration(integrator_.settings()));
+  if (jacobian_) {
+    terms.push_back(jacobian_->describe());
+  }
+  return terms;
+}
+
+TetherRunResult2D TetherRunner2D::result() const
+{
+  TetherRunResult2D result = outputs_.result();
+  result.tethered = stages_.tethered();
+  result.steady = state_.steady;
+  result.preparationTime = stages_.preparationTime();
+  result.steps = static_cast<long long>(state_.statistics.acceptedSteps);
+  return result;
+}
+
+void TetherRunner2D::addResults(io::JsonValue& json) const
+{
+  addTetherResults(json, result());
+}
+
+// `runOver`: the stage ended at equilibrium, where a signal is not acted on.
+void TetherRunner2D::stopIfInterrupted(bool runOver)
+{
+  if (backbone_.signal() != 0 && !runOver) {
+    backbone_.stopInterrupted();
+  }
+}
+
+void TetherRunner2D::integrateStages()
+{
+  if (stages_.preparing()) {
+    integrator_.integrate(state_, stages_.schedule(output_.interval, endTau()),
+                          {&backbone_, &stages_, &outputs_, &backbone_.watch()});
+    stopIfInterrupted(false);
+    // The preparation is over: its last state is an output, then the cell is tethered.
+    if (stages_.stoppedAtOutputTime()) {
+      ++state_.nextOutput;
+    }
+    outputs_.observe(stages_.lastStepSize(), stages_.preparationRate(), true);
+    stages_.tether();
+    outputs_.beginStage();
+  }
+  integrator_.integrate(state_, stages_.schedule(output_.interval, endTau()),
+                        {&backbone_, &stages_, &outputs_, &backbone_.watch()});
+  stopIfInterrupted(state_.steady);
+  backbone_.writeCheckpoint();
+}
+
+TetherRunResult2D TetherRunner2D::execute()
+{
+  // The checkpoint was read and checked before the output directory is touched; it is
+  // opened once the checkpoint is known to continue.
+  if (backbone_.restarting()) {
+    restore();
+  }
+  backbone_.open();
+  if (backbone_.restarting()) {
+    const io::Checkpoint& checkpoint = backbone_.restartCheckpoint();
+    outputs_.beginStage(checkpoint.time);
+    if (log_ != nullptr) {
+      *log_ << "Restarting from " << backbone_.restartPath() << " at tau = " << checkpoint.time << " (step "
+            << checkpoint.step << ")\n";
+    }
+  } else {
+    state_ = integrator_.start(0.0, model_.initialState());
+    stages_.begin(tether_.enabled ? TetherStage::Preparation : TetherStage::Free);
+    outputs_.beginStage();
+  }
+  backbone_.begin(terms());
+  backbone_.recordingFailure([this] { integrateStages(); });
+  const TetherRunResult2D finished = result();
+  backbone_.writeSummary(finished.steady ? "steady" : "finished", "", finished.finalTime);
+  return finished;
 }
 
 } // namespace
@@ -125,149 +257,9 @@ private:
 TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
                                    const std::optional<std::string>& restartDirectory)
 {
-  timeint::TimeIntegrationSettings settings = timeint::timeIntegrationSettings(deck_.sublist("Time integration"));
-  // With a periodic shear rate: steps of at most a twentieth of its period, outputs at a
-  // whole number per period (Output/Interval is in tau = k t / lambda), no steady-state stop.
-  settings.maximumStep = operators::limitStepToPeriod(settings.maximumStep, model_.flow().shearRate);
-  settings.initialStep = std::min(settings.initialStep, settings.maximumStep);
-  operators::requireOutputsCommensurate(model_.flow().shearRate, "Flow/Shear rate", output_.interval, "Output/Interval",
-                                        model_.flow().conditions.viscosityRatio);
-  operators::requireNoSteadyStop(model_.flow().shearRate, "Flow/Shear rate", settings.steadyTolerance);
-  const double endTau = settings.endTime; // the tethered (or free) stage's duration in tau
-  timeint::TimeIntegrator integrator(settings, [this](double t, const std::vector<double>& y,
-                                                      std::vector<double>& dydt) { model_.rightHandSide(t, y, dydt); });
-  // With the wall, a stage state or a step with a node on or below it is a rejected
-  // attempt (NodesInFluid2D.hpp), not a failure of the run.
-  if (model_.flow().wall) {
-    integrator.setDomainCheck(scene2d::requireNodesInFluid);
-  }
-  // The stiff methods' Jacobian (VelocityJacobian2D.hpp) reads the model at every
-  // linearisation, so it follows the tethering and the regrids as it is.
-  std::shared_ptr<scene2d::VelocityJacobian2D> jacobian;
-  if (timeint::needsLinearisedSystem(settings.method)) {
-    jacobian = std::make_shared<scene2d::VelocityJacobian2D>(model_, comm_, deck_);
-    integrator.setLinearisedSystem(jacobian);
-  }
-
-  // The checkpoint is read and checked before the output directory is touched: a wrong
-  // --restart must leave the directory it names as it was.
-  std::optional<io::Checkpoint> checkpoint;
-  const std::string checkpointPath = restartDirectory ? *restartDirectory + "/checkpoint.h5" : "";
-  if (restartDirectory) {
-    try {
-      checkpoint = io::readCheckpoint(checkpointPath);
-    } catch (const core::IoError& e) {
-      throw core::InputError(core::message("--restart ", *restartDirectory, ": ", e.what()));
-    }
-    requireSameApplication(*checkpoint, "tether2d", checkpointPath);
-  }
-  RunOutputs files(comm_, outputDirectory, restartDirectory);
-  RunSummary summary("tether2d", deck_, comm_->getSize());
-  timeint::IntegrationState state;
-  TetherStages2D stages(model_, tether_, integrator, state, log_);
-  TetherOutputs2D outputs(model_, stages, output_, integrator.settings(), tether_.forceTransient, files, state,
-                          core::deckToXml(deck_, false), log_);
-  IntegrationStateSection stateSection(state, "");
-  // Loaded in this order: the stages rebuild the model's markers and tether, which drops
-  // the warm start the model then restores.
-  outputs.setCheckpointSections({&stateSection, &stages, &model_, &outputs});
-
-  if (checkpoint) {
-    io::loadSections(*checkpoint, checkpointPath, {&stateSection, &stages, &model_, &outputs});
-    state.steady = false; // a restart goes on from where the stopped run was
-    // Same margin as the end-of-run test of TetherOutputs2D.
-    core::require<core::InputError>(
-        stages.preparing() || stages.tau(state.time) < endTau * (1.0 - 1e-12), "--restart ", *restartDirectory,
-        ": the checkpoint is at tau = ", stages.tau(state.time), ", at or past 'Time integration/End time' = ", endTau,
-        "; nothing to do. Give a later end, e.g. --set \"Time integration/End time=", 2.0 * stages.tau(state.time),
-        "\".");
-  }
-  // Opened once the checkpoint is known to continue: a refused restart leaves the
-  // directory as it was.
-  files.open(deck_, {"tether2d", deckSource_, comm_->getSize()});
-  for (const auto& name : files.removedStaleFiles()) {
-    if (log_ != nullptr) {
-      *log_ << "Removed " << name << ", left by a writer that was killed\n";
-    }
-  }
-  if (checkpoint) {
-    outputs.beginStage(checkpoint->time);
-    if (log_ != nullptr) {
-      *log_ << "Restarting from " << checkpointPath << " at tau = " << checkpoint->time << " (step " << checkpoint->step
-            << ")\n";
-    }
-  } else {
-    state = integrator.start(0.0, model_.initialState());
-    stages.begin(tether_.enabled ? TetherStage::Preparation : TetherStage::Free);
-    outputs.beginStage();
-  }
-  std::vector<std::string> terms = model_.terms();
-  if (tether_.enabled) {
-    terms.emplace_back("tether constraint after a free preparation stage");
-  }
-  terms.push_back(timeint::describeTimeIntegration(integrator.settings()));
-  if (jacobian) {
-    terms.push_back(jacobian->describe());
-  }
-  summary.setTerms(terms);
-  summary.begin(state.statistics, restartDirectory.has_value());
-  if (log_ != nullptr) {
-    summary.printTerms(*log_);
-  }
-
-  TetherRunResult2D result;
-  MethodSwitchLog2D switches(stages, log_);
-  InterruptionWatch watch(*comm_);
-  const auto summaryJson = [&](const std::string& status, const std::string& note) {
-    const double time = status == "interrupted" ? stages.tau(state.time) : result.finalTime;
-    return summary.json(status, note, time, state.statistics, [&](io::JsonValue& json) {
-      json["time integration"]["method"] = timeint::toString(integrator.settings().method);
-      json["time integration"]["in use"] = integrator.activeMethodName(state);
-      for (const io::JsonValue& change : switches.switches()) {
-        json["time integration"]["switches"].append(change);
-      }
-      addResults(json, result);
-    });
-  };
-  // From the start: the status is never missing, and the file holds the space a failure on
-  // a full disk rewrites it in (RunOutputs::writeSummaryAfterFailure).
-  files.writeSummary([&] { return summaryJson("running", ""); });
-  try {
-    if (stages.preparing()) {
-      integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs, &switches, &watch});
-      if (watch.signal() != 0) {
-        stopInterrupted(watch.signal(), stages.tau(state.time), state.statistics.acceptedSteps, files, outputs,
-                        [&](const std::string& note) { return summaryJson("interrupted", note); });
-      }
-      // The preparation is over: its last state is an output, then the cell is tethered.
-      if (stages.stoppedAtOutputTime()) {
-        ++state.nextOutput;
-      }
-      outputs.observe(stages.lastStepSize(), stages.preparationRate(), true);
-      stages.tether();
-      outputs.beginStage();
-    }
-    integrator.integrate(state, stages.schedule(output_.interval, endTau), {&stages, &outputs, &switches, &watch});
-    if (watch.signal() != 0 && !state.steady) {
-      stopInterrupted(watch.signal(), stages.tau(state.time), state.statistics.acceptedSteps, files, outputs,
-                      [&](const std::string& note) { return summaryJson("interrupted", note); });
-    }
-    outputs.writeCheckpoint();
-  } catch (const core::Interrupted&) {
-    throw;
-  } catch (const std::exception& e) {
-    result = outputs.result();
-    files.writeSummaryAfterFailure([&] { return summaryJson("failed", e.what()); });
-    throw;
-  }
-
-  result = outputs.result();
-  result.tethered = stages.tethered();
-  result.steady = state.steady;
-  result.preparationTime = stages.preparationTime();
-  result.steps = static_cast<long long>(state.statistics.acceptedSteps);
-  files.writeSummary([&] { return summaryJson(result.steady ? "steady" : "finished", ""); });
-  return result;
+  TetherRunner2D runner(model_, tether_, output_, deck_, comm_,
+                        {"tether2d", deckSource_, outputDirectory, restartDirectory}, log_);
+  return runner.execute();
 }
 
 } // namespace capsula::run

@@ -3,7 +3,11 @@
 #include <capsula/io/CheckpointSection.hpp>
 #include <capsula/io/Json.hpp>
 #include <capsula/io/MetricsCsv.hpp>
+#include <capsula/core/Deck.hpp>
+#include <capsula/core/Interruption.hpp>
 #include <capsula/run/IntegrationStateSection.hpp>
+#include <capsula/run/RestartDeck.hpp>
+#include <capsula/run/RunBackbone.hpp>
 #include <capsula/run/RunOutputs.hpp>
 #include <capsula/run/RunSummary.hpp>
 
@@ -12,6 +16,8 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -175,4 +181,97 @@ TEST(RunOutputs, ARestartIntoAnotherDirectoryCarriesTheTablesOver)
   EXPECT_EQ(io::readCsvTable((first / "metrics.csv").string()).rows.size(), 3u); // untouched
   fs::remove_all(first);
   fs::remove_all(second);
+}
+
+namespace {
+
+// A model of one state section whose last output was at t = 0.75 and whose result is 42.
+class ModelOfOneSection final : public run::RunModel {
+public:
+  explicit ModelOfOneSection(ti::IntegrationState& state) : section_(state, "timeint.") {}
+  std::vector<io::CheckpointSection*> checkpointSections() override { return {&section_}; }
+  void addResults(io::JsonValue& json) const override { json["result"] = 42.0; }
+  double lastOutputTime() const override { return 0.75; }
+
+private:
+  run::IntegrationStateSection section_;
+};
+
+std::string fileText(const fs::path& path)
+{
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+} // namespace
+
+// What the backbone writes for every app: "running" from begin(), then a failure recorded
+// with its message, the model's last output time and results, and rethrown; an interruption
+// passes through without a "failed" summary (the backbone's stopInterrupted writes its own).
+TEST(RunBackbone, AFailureIsRecordedWithTheModelsResultsAndRethrown)
+{
+  const fs::path directory = scratch("failure");
+  Teuchos::ParameterList deck("app");
+  deck.sublist("Flow").set("Capillary number", 0.3);
+  ti::IntegrationState state;
+  ti::TimeIntegrator integrator(ti::TimeIntegrationSettings{},
+                                [](double, const std::vector<double>& y, std::vector<double>& dydt) { dydt = y; });
+  ModelOfOneSection model(state);
+  run::RunBackbone backbone({"app", "", directory.string(), std::nullopt}, deck, serial(), model, integrator, state,
+                            nullptr);
+  EXPECT_FALSE(backbone.restarting());
+  backbone.open();
+  backbone.begin({"a term"});
+  EXPECT_NE(fileText(directory / "summary.json").find("\"status\": \"running\""), std::string::npos);
+  EXPECT_THROW(backbone.recordingFailure([] { throw core::Interrupted(15, "stopped"); }), core::Interrupted);
+  EXPECT_NE(fileText(directory / "summary.json").find("\"status\": \"running\""), std::string::npos);
+  EXPECT_THROW(backbone.recordingFailure([] { throw core::NumericalError("it broke"); }), core::NumericalError);
+  const std::string summary = fileText(directory / "summary.json");
+  for (const char* entry : {"\"status\": \"failed\"", "\"failure\": \"it broke\"", "\"time\": 0.75", "\"result\": 42",
+                            "\"in use\"", "a term"}) {
+    EXPECT_NE(summary.find(entry), std::string::npos) << entry << " in\n" << summary;
+  }
+  fs::remove_all(directory);
+}
+
+// A restart: the model's sections come back from the checkpoint; one at the end time has
+// nothing to do, and says so in the model's time.
+TEST(RunBackbone, ARestartLoadsTheModelsSectionsAndNeedsTimeLeft)
+{
+  const fs::path directory = scratch("restart");
+  fs::create_directories(directory);
+  Teuchos::ParameterList deck("app");
+  deck.sublist("Time integration").set("End time", 0.5);
+  ti::IntegrationState saved;
+  saved.time = 0.5;
+  saved.y = {1.0 / 3.0};
+  run::IntegrationStateSection section(saved, "timeint.");
+  io::Checkpoint checkpoint;
+  checkpoint.application = "app";
+  checkpoint.deckXml = core::deckToXml(deck, false);
+  io::saveSections(checkpoint, {&section});
+  io::writeCheckpoint(run::checkpointPath(directory.string()), checkpoint);
+
+  ti::IntegrationState state;
+  ti::TimeIntegrator integrator(ti::TimeIntegrationSettings{},
+                                [](double, const std::vector<double>& y, std::vector<double>& dydt) { dydt = y; });
+  ModelOfOneSection model(state);
+  run::RunBackbone backbone({"app", "", directory.string(), directory.string()}, deck, serial(), model, integrator,
+                            state, nullptr);
+  ASSERT_TRUE(backbone.restarting());
+  backbone.restore();
+  EXPECT_EQ(state.y, saved.y);
+  EXPECT_EQ(state.time, 0.5);
+  backbone.requireTimeLeft(0.25, 0.5);
+  try {
+    backbone.requireTimeLeft(state.time, 0.5);
+    FAIL() << "a restart at the end time was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the checkpoint is at t = 0.5, at or past 'Time integration/End time' = 0.5"),
+              std::string::npos)
+        << e.what();
+  }
+  fs::remove_all(directory);
 }

@@ -1,6 +1,8 @@
 #include <capsula/core/Error.hpp>
+#include <capsula/core/Deck.hpp>
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/run/MethodSwitchRecord.hpp>
+#include <capsula/run/RestartDeck.hpp>
 #include <capsula/run/RestartRecord.hpp>
 
 #include <gtest/gtest.h>
@@ -75,4 +77,63 @@ TEST(RestartRecord, AMissingOrDamagedTableIsRefused)
   EXPECT_NE(missing.find("metrics.csv' is missing; the checkpoint at t = 0.5 continues its 3 rows"), std::string::npos)
       << missing;
   fs::remove_all(dir);
+}
+
+namespace {
+
+// A deck of the shape every app has: a physical key, the end time and the output directory.
+Teuchos::ParameterList restartDeck(double capillaryNumber, double endTime, const std::string& directory)
+{
+  Teuchos::ParameterList deck("app");
+  deck.sublist("Flow").set("Capillary number", capillaryNumber);
+  deck.sublist("Flow").set("Viscosity ratio", 1.0);
+  deck.sublist("Time integration").set("End time", endTime);
+  deck.sublist("Output").set("Directory", directory);
+  return deck;
+}
+
+} // namespace
+
+// The restart check every app runs (tether2d once went on with a changed Capillary number):
+// a changed key is refused with its full path and both values; End time and Output/Directory
+// may change; a key only one deck has is a change too.
+TEST(RestartDeck, AChangedKeyIsRefusedNamingItAndBothValues)
+{
+  const std::string then = capsula::core::deckToXml(restartDeck(0.25, 0.2, "out/a"), false);
+  EXPECT_EQ(restartRefusal([&] { run::requireSameRun(restartDeck(0.25, 0.4, "out/b"), then, "c.h5"); }), "");
+  const std::string changed =
+      restartRefusal([&] { run::requireSameRun(restartDeck(0.05, 0.4, "out/a"), then, "c.h5"); });
+  EXPECT_NE(changed.find("Cannot restart from 'c.h5': the deck differs from the one the run was started with at "
+                         "'Flow/Capillary number': the run was written with Flow/Capillary number = 0.25 but the "
+                         "deck has 0.05. Only 'Time integration/End time' and 'Output/Directory' may change"),
+            std::string::npos)
+      << changed;
+  Teuchos::ParameterList extra = restartDeck(0.25, 0.2, "out/a");
+  extra.sublist("Flow").set("Shear rate", 2.0);
+  const std::string added = restartRefusal([&] { run::requireSameRun(extra, then, "c.h5"); });
+  EXPECT_NE(added.find("at 'Flow/Shear rate': the run was written with Flow/Shear rate = (absent) but the deck has 2"),
+            std::string::npos)
+      << added;
+}
+
+// A checkpoint of another application is refused naming both; the key check runs on what
+// readRestartCheckpoint reads, before any caller writes.
+TEST(RestartDeck, ReadRestartCheckpointChecksTheApplicationAndTheDeck)
+{
+  const fs::path dir = fs::temp_directory_path() / ("capsula_restart_deck_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  io::Checkpoint checkpoint;
+  checkpoint.application = "tether2d";
+  checkpoint.deckXml = capsula::core::deckToXml(restartDeck(0.25, 0.2, ""), false);
+  checkpoint.reals["x"] = 1.0;
+  io::writeCheckpoint(run::checkpointPath(dir.string()), checkpoint);
+  const auto read = [&](const std::string& application, double capillaryNumber) {
+    return restartRefusal(
+        [&] { run::readRestartCheckpoint(dir.string(), application, restartDeck(capillaryNumber, 0.5, "")); });
+  };
+  EXPECT_EQ(read("tether2d", 0.25), "");
+  EXPECT_NE(read("cell3d", 0.25).find("it is a checkpoint of tether2d, not of cell3d"), std::string::npos);
+  EXPECT_NE(read("tether2d", 0.05).find("at 'Flow/Capillary number'"), std::string::npos);
+  fs::remove_all(dir);
+  EXPECT_NE(read("tether2d", 0.25).find("--restart " + dir.string() + ": "), std::string::npos);
 }

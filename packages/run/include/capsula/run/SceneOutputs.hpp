@@ -33,6 +33,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,11 +50,8 @@ public:
   /// Starts metrics.csv, probes.csv and the snapshots, or continues them after a restart at
   /// `resumeAfter`. Collective.
   void open(std::optional<double> resumeAfter);
-  /// What a checkpoint holds: these sections, in this order (this one among them).
-  void setCheckpointSections(std::vector<const io::CheckpointSection*> sections)
-  {
-    checkpointSections_ = std::move(sections);
-  }
+  /// Writes checkpoint.h5 at every output ('Output/Checkpoint'; RunBackbone::writeCheckpoint).
+  void setCheckpointWriter(std::function<void()> write) { writeCheckpoint_ = std::move(write); }
 
   /// Measures the scene at `state` and writes the outputs; true if the shape is steady.
   /// Throws core::NumericalError for a degraded mesh (see above). Collective.
@@ -61,8 +59,6 @@ public:
   /// observe(); Stop at steady state.
   timeint::ObserverVerdict atOutput(const timeint::IntegrationState& state, timeint::OutputReason reason) override;
   bool steady() const { return steady_; }
-  /// checkpoint.h5 at `state` now, between outputs too (a run stopped by a signal). Collective.
-  void writeCheckpoint(const timeint::IntegrationState& state);
 
   /// The time of the last output, its samples, and the first cell's D12 there.
   double lastTime() const { return lastTime_; }
@@ -93,7 +89,6 @@ private:
   std::optional<WallSample> sampleWallStress(const timeint::IntegrationState& state, const scene::SceneFields& fields,
                                              const std::vector<CellSample>& samples);
   std::string recordSamples(double t, const std::vector<CellSample>& samples);
-  io::Checkpoint checkpoint(const timeint::IntegrationState& state) const;
 
   RunScene& live_;
   const scene::SceneDescription& description_;
@@ -101,7 +96,7 @@ private:
   RunOutputs& files_;
   double steadyTolerance_;
   OutputMetrics metrics_;
-  std::vector<const io::CheckpointSection*> checkpointSections_;
+  std::function<void()> writeCheckpoint_;
   std::int64_t outputsWritten_ = 0;
   bool steady_ = false;
 

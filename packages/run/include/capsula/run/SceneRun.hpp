@@ -20,17 +20,21 @@
 //   checkpoint.h5  everything needed to continue (--restart DIR)
 //   deck.xml, run.json   the validated deck and the run record
 //
-// The run is the time loop of timeint::TimeIntegrator::integrate with these observers:
+// The run is the model the run backbone drives (RunBackbone.hpp: restart checks, the
+// checkpoint, summary.json, Auto's switches, interruption), one time loop of
+// timeint::TimeIntegrator::integrate with these observers:
+//   RunBackbone.hpp   first, after every step: Auto's switches
 //   RunScene.hpp      after every step: mesh regularisation and adaption
 //   TetherRecord.hpp  after every step and output: the tether's peak force (with 'Tether')
 //   SceneOutputs.hpp  at every output: the metrics, probes, wall stress, snapshot and
 //                     checkpoint; steady state; a degraded mesh
 //   the run itself    after every step: the gap between the cells; progress lines; at every
 //                     output: summary.json
+//   InterruptionWatch.hpp   last: a signal the ranks agreed on
 // and the checkpoint sections of the integration state ("timeint."), the outputs, the scene
-// and the tether record. Restart: the deck must equal the checkpoint's except for 'Time integration/End
-// time' and 'Output/Directory' (RestartDeck.hpp); the continued run writes the same rows,
-// bit for bit, as the uninterrupted one.
+// and the tether record. Restart: the deck must equal the checkpoint's except for 'Time
+// integration/End time' and 'Output/Directory' (RestartDeck.hpp); the continued run writes
+// the same rows, bit for bit, as the uninterrupted one.
 //
 // Cells too close: after every step the smallest gap between two cell surfaces is compared
 // with 'Cells/Minimum gap'; below it the run records that state as an output (metrics row,

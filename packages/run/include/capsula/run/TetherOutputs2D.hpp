@@ -29,6 +29,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -71,22 +72,17 @@ public:
   /// tethering that the second maximum of the force leaves out.
   TetherOutputs2D(scene2d::CapsuleModel2D& model, const TetherStages2D& stages, const OutputSettings2D& settings,
                   const timeint::TimeIntegrationSettings& integration, double forceTransient, RunOutputs& files,
-                  timeint::IntegrationState& state, std::string deckXml, std::ostream* log);
+                  timeint::IntegrationState& state, std::ostream* log);
 
   /// The stage's table and snapshot series: new, or continued after `resumeAfter` (tau,
   /// a restart). The estimate of the time left counts from here.
   void beginStage(std::optional<double> resumeAfter = std::nullopt);
-  /// What a checkpoint holds: these sections, in this order (this one among them).
-  void setCheckpointSections(std::vector<const io::CheckpointSection*> sections)
-  {
-    checkpointSections_ = std::move(sections);
-  }
+  /// Writes checkpoint.h5 every 'Checkpoint every' outputs (RunBackbone::writeCheckpoint).
+  void setCheckpointWriter(std::function<void()> write) { writeCheckpoint_ = std::move(write); }
 
   /// One output of the state: a row, and a snapshot if due or `forceSnapshot` (collective:
   /// needs the velocity). `stepSize` and `steadyMeasure` go into the row.
   void observe(double stepSize, double steadyMeasure, bool forceSnapshot);
-  /// checkpoint.h5 now.
-  void writeCheckpoint();
 
   timeint::ObserverVerdict afterStep(timeint::IntegrationState& state, const timeint::StepReport& report,
                                      bool atOutputTime) override;
@@ -110,9 +106,8 @@ private:
   double forceTransient_;
   RunOutputs& files_;
   timeint::IntegrationState& state_;
-  std::string deckXml_;
   std::ostream* log_;
-  std::vector<const io::CheckpointSection*> checkpointSections_;
+  std::function<void()> writeCheckpoint_;
   TetherRunResult2D result_;
   std::int64_t lastSnapshot_ = -1; // output index of the last snapshot in this stage
   timeint::StepReport lastStep_;

@@ -2,7 +2,9 @@
 // A run of the 2D tethered-cell study (thesis Chapter 4) from a validated deck: the
 // preparation stage and the tethered stage (TetherStages2D.hpp), or the free stage alone,
 // each a time loop of timeint::TimeIntegrator::integrate with the stages and the outputs
-// (TetherOutputs2D.hpp) as observers. Writes into the output directory:
+// (TetherOutputs2D.hpp) as observers, a model the run backbone drives (RunBackbone.hpp:
+// restart checks, the checkpoint, summary.json, Auto's switches, interruption). Writes into
+// the output directory:
 //   preparation.csv, metrics.csv, preparation.h5, contour.h5 (+ .xdmf)   TetherOutputs2D.hpp
 //   checkpoint.h5      every 'Output/Checkpoint every' outputs and at the end: everything
 //                      needed to continue bit for bit (the sections of the integration
@@ -10,8 +12,8 @@
 //   summary.json       RunSummary.hpp; the results: tethered, preparation time, final
 //                      values, maxima
 //   deck.xml, run.json the validated deck and the run record
-// Restart takes the deck given on its command line; the model refuses one with another
-// Cell/Prestress (its reference shape would change).
+// Restart: the deck must equal the checkpoint's except for 'Time integration/End time' and
+// 'Output/Directory' (RestartDeck.hpp); a changed key is refused before anything is written.
 #include <capsula/run/TetherOutputs2D.hpp>
 #include <capsula/scene2d/CapsuleModel2D.hpp>
 #include <capsula/scene2d/TetherProcedure2D.hpp>
