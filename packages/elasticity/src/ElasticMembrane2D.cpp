@@ -16,15 +16,26 @@ using contour::Closure;
 using contour::Contour;
 using contour::CubicSpline;
 
-ElasticMembrane2D::ElasticMembrane2D(const Contour& reference, HookeanLaw2D law)
-    : law_(law), closure_(reference.closure()), referenceArcLengths_(reference.knotArcLengths())
-{}
+ElasticMembrane2D::ElasticMembrane2D(const Contour& reference, std::shared_ptr<const MembraneLaw2D> law)
+    : law_(std::move(law)), closure_(reference.closure()), referenceArcLengths_(reference.knotArcLengths())
+{
+  core::require(law_ != nullptr, "ElasticMembrane2D: no membrane law");
+}
 
-ElasticMembrane2D::ElasticMembrane2D(const Contour& reference, HookeanLaw2D law, BendingLaw2D bending)
-    : ElasticMembrane2D(reference, law)
+ElasticMembrane2D::ElasticMembrane2D(const Contour& reference, std::shared_ptr<const MembraneLaw2D> law,
+                                     BendingLaw2D bending)
+    : ElasticMembrane2D(reference, std::move(law))
 {
   bending_.emplace(reference, bending);
 }
+
+ElasticMembrane2D::ElasticMembrane2D(const Contour& reference, const HookeanLaw2D& law)
+    : ElasticMembrane2D(reference, std::make_shared<const HookeanLaw2D>(law))
+{}
+
+ElasticMembrane2D::ElasticMembrane2D(const Contour& reference, const HookeanLaw2D& law, BendingLaw2D bending)
+    : ElasticMembrane2D(reference, std::make_shared<const HookeanLaw2D>(law), bending)
+{}
 
 MembraneState2D ElasticMembrane2D::evaluate(const Contour& current) const
 {
@@ -49,8 +60,8 @@ MembraneState2D ElasticMembrane2D::evaluate(const Contour& current) const
   }
   omega[nodes] = meanStretch + stretchSpline.piece(n - 1).derivative(l0[nodes] - l0[nodes - 1]);
 
-  // Energy 0.5 E int (omega - 1)^2 dl0: omega is quadratic in l0 on each piece, so three
-  // Gauss points integrate the quartic exactly.
+  // Energy int w(omega) dl0: omega is quadratic in l0 on each piece, so three Gauss points
+  // integrate the Hookean law's quartic 0.5 E (omega - 1)^2 exactly.
   const quadrature::Rule1D rule = quadrature::gaussLegendre(3);
   double energy = 0.0;
   for (std::size_t k = 0; k < nodes; ++k) {
@@ -58,14 +69,14 @@ MembraneState2D ElasticMembrane2D::evaluate(const Contour& current) const
     const contour::CubicPiece& piece = stretchSpline.piece(static_cast<int>(k));
     for (std::size_t q = 0; q < rule.points.size(); ++q) {
       const double stretch = meanStretch + piece.derivative(rule.points[q] * span);
-      energy += rule.weights[q] * span * law_.energyDensity(stretch);
+      energy += rule.weights[q] * span * law_->energyDensity(stretch);
     }
   }
 
-  // Tension at the knots (eq A.36) and its spline in the current arc length (eq A.39).
+  // Tension at the knots (the law's; Hookean: eq A.36) and its spline in the current arc length (eq A.39).
   std::vector<double> gamma(nodes + 1);
   for (std::size_t i = 0; i <= nodes; ++i) {
-    gamma[i] = law_.tension(omega[i]);
+    gamma[i] = law_->tension(omega[i]);
   }
   CubicSpline tensionSpline = [&] {
     if (closure_ == Closure::Periodic) {

@@ -6,7 +6,6 @@
 
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
-#include <capsula/elasticity/MembraneLawFactory.hpp>
 #include <capsula/elasticity/Prestress.hpp>
 #include <capsula/mesh/Adaption.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
@@ -30,8 +29,13 @@ std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMes
 {
   std::ostringstream line;
   line << "membrane " << cell.path << ": " << cell.membraneLaw;
-  if (cell.membraneLaw == "Skalak") {
-    line << " (C = " << cell.areaDilation << ")";
+  // The law's own keys, whatever the law: "Skalak (Area dilation C = 2.5)".
+  const auto& keys = cell.membraneLawParameters;
+  for (auto it = keys.begin(); it != keys.end(); ++it) {
+    line << (it == keys.begin() ? " (" : ", ") << keys.name(it) << " = " << keys.entry(it).getAny(false);
+  }
+  if (keys.begin() != keys.end()) {
+    line << ")";
   }
   if (cell.shearModulus != 1.0) {
     line << ", shear modulus " << cell.shearModulus << " G";
@@ -135,10 +139,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   membraneDiscretisation.numQuadraturePoints = discretisation.quadraturePoints;
   for (int c = 0; c < n; ++c) {
     const CellDescription& cell = description_.cells[static_cast<std::size_t>(c)];
-    elasticity::MembraneLawParameters parameters;
-    parameters.shearModulus = cell.shearModulus;
-    parameters.areaDilation = cell.areaDilation;
-    std::shared_ptr<const elasticity::MembraneLaw> law = elasticity::makeMembraneLaw(cell.membraneLaw, parameters);
+    core::require(cell.law != nullptr, "Scene: '", cell.path, "' has no membrane law (describeScene builds it)");
     const mesh::SurfaceMesh& surface = cells_[static_cast<std::size_t>(c)];
     std::vector<double> reference = !references.empty()    ? std::move(references[static_cast<std::size_t>(c)])
                                     : cell.prestress > 0.0 ? elasticity::prestressedReference(surface, cell.prestress)
@@ -149,8 +150,8 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     bending.spontaneousCurvature = cell.spontaneousCurvature;
     bending.reference = elasticity::bendingReference(cell.bendingReference);
     try {
-      membranes_.push_back(std::make_unique<elasticity::MembraneMechanics>(
-          surface, std::move(reference), std::move(law), membraneDiscretisation, bending));
+      membranes_.push_back(std::make_unique<elasticity::MembraneMechanics>(surface, std::move(reference), cell.law,
+                                                                           membraneDiscretisation, bending));
     } catch (const core::InputError& e) {
       throw core::InputError(core::message("'", cell.path, "': ", e.what()));
     }

@@ -4,9 +4,11 @@
 
 #include <capsula/core/Error.hpp>
 #include <capsula/domain/DomainParameters.hpp>
+#include <capsula/elasticity/MembraneLawChoice.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace capsula::scene {
 
@@ -134,6 +136,21 @@ void requireUsableTether(const SceneDescription& scene)
                                   "material points of the mesh, which a refinement renumbers. Turn one of them off.");
 }
 
+// The cell's 'Membrane law' with its keys, and the law built from them and the cell's shear
+// modulus; a law that refuses its moduli is reported with the cell's path.
+void readMembraneLaw(const Teuchos::ParameterList& list, const elasticity::MembraneLawRegistry& laws,
+                     CellDescription& cell)
+{
+  elasticity::MembraneLawChoice choice = elasticity::readMembraneLawChoice(list, laws.infos(), cell.path);
+  try {
+    cell.law = laws.create(choice.name, cell.shearModulus, choice.parameters);
+  } catch (const core::InputError& e) {
+    throw core::InputError(core::message("'", cell.path, "': ", e.what()));
+  }
+  cell.membraneLaw = std::move(choice.name);
+  cell.membraneLawParameters = std::move(choice.parameters);
+}
+
 } // namespace
 
 std::vector<double> SceneDescription::viscosityRatios() const
@@ -151,7 +168,7 @@ bool SceneDescription::allViscosityRatiosOne() const
                      [](const CellDescription& cell) { return cell.viscosityRatio == 1.0; });
 }
 
-SceneDescription describeScene(const Teuchos::ParameterList& deck)
+SceneDescription describeScene(const Teuchos::ParameterList& deck, const elasticity::MembraneLawRegistry& laws)
 {
   SceneDescription scene;
   const auto& flow = deck.sublist("Flow");
@@ -177,10 +194,9 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck)
     CellDescription cell;
     cell.path = "Cells/" + name;
     cell.surface = list;
-    cell.membraneLaw = list.get<std::string>("Membrane law");
     cell.membraneForces = list.get<std::string>("Membrane forces");
     cell.shearModulus = list.get<double>("Shear modulus");
-    cell.areaDilation = list.get<double>("Area dilation C");
+    readMembraneLaw(list, laws, cell);
     cell.prestress = list.get<double>("Prestress");
     const double ownRatio = list.isParameter("Viscosity ratio") ? list.get<double>("Viscosity ratio") : 0.0;
     cell.viscosityRatio = ownRatio > 0.0 ? ownRatio : scene.viscosityRatio;

@@ -5,6 +5,8 @@
 #include <capsula/adhesion/TetherParameters.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/domain/DomainParameters.hpp>
+#include <capsula/elasticity/MembraneLawChoice.hpp>
+#include <capsula/elasticity/SkalakLaw.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/CellSurfaceParameters.hpp>
 #include <capsula/mesh/RedistributionParameters.hpp>
@@ -60,11 +62,10 @@ std::array<double, 3> defaultCellCenter(int index, int count)
   return {2.5 * index - 1.25 * (count - 1), 1.6, 0.0};
 }
 
-void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double, 3>& center)
+void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double, 3>& center,
+                           const elasticity::MembraneLawRegistry& laws)
 {
   mesh::declareCellSurfaceParameters(cell, center);
-  core::declareChoice(cell, "Membrane law", "Skalak", {"NeoHookean", "Skalak"},
-                      "Strain energy of the membrane: NeoHookean (eq 3.31) or Skalak (eq 3.32).");
   core::declareChoice(cell, "Membrane forces", "Virtual work", {"Virtual work", "Contour integral"},
                       "How the membrane's load on the fluids is computed. 'Virtual work': nodal "
                       "forces dE/dx of the strain energy and a continuous load interpolated over "
@@ -74,10 +75,6 @@ void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double
   core::declareReal(cell, "Shear modulus", 1.0,
                     "This cell's membrane shear modulus relative to the G of the capillary number "
                     "(1: the cell Ca refers to; 0.5: an activated cell, half as stiff).",
-                    core::greaterThan(0.0));
-  core::declareReal(cell, "Area dilation C", 2.5,
-                    "Skalak law: area-dilation modulus over shear modulus (C G is the dilation "
-                    "modulus). The thesis's Chapter 5 spans 0.5 to 2.5. Unused by NeoHookean.",
                     core::greaterThan(0.0));
   core::declareReal(cell, "Prestress", 0.0,
                     "Membrane prestress alpha = a/a0 - 1 (eq 3.45): the unstressed reference shape "
@@ -118,9 +115,13 @@ void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double
                     "the accuracy of the time integration. For stiff cells close to the wall, whose "
                     "volume the quadrature error of the single layer there otherwise changes by "
                     "percents (docs/cell3d-adhesion-results.md).");
+  // Last, so that a law's key that would replace one of the cell's is refused.
+  elasticity::declareMembraneLawParameters(cell, laws.infos(), elasticity::SkalakLaw::registeredName,
+                                           "Strain energy of the membrane.");
 }
 
-void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck, int cellsWhenNoneGiven)
+void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck, int cellsWhenNoneGiven,
+                            const elasticity::MembraneLawRegistry& laws)
 {
   auto& flow = core::declareSublist(valid, "Flow",
                                     "The undisturbed flow u = (k(t) f(y), 0, 0): simple shear, plane Couette or "
@@ -184,7 +185,7 @@ void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::Parame
     // An index too long for an int is refused later (describeScene wants Cell 0 .. Cell n-1).
     const std::string digits = name.substr(std::string("Cell ").size());
     const int index = digits.size() > 6 ? count : std::stoi(digits);
-    declareCellParameters(core::declareSublist(cells, name, "A cell."), defaultCellCenter(index, count));
+    declareCellParameters(core::declareSublist(cells, name, "A cell."), defaultCellCenter(index, count), laws);
   }
 }
 

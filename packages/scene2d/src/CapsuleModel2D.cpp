@@ -6,7 +6,6 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
 #include <capsula/elasticity/BendingLoadBound.hpp>
-#include <capsula/elasticity/HookeanLaw2D.hpp>
 #include <capsula/elasticity/Prestress2D.hpp>
 
 #include <cmath>
@@ -29,13 +28,12 @@ contour::ContourOptions optionsFor(contour::Closure closure, contour::TetherEnds
 
 std::unique_ptr<elasticity::ElasticMembrane2D> CapsuleModel2D::makeMembrane(const contour::Contour& reference) const
 {
-  // The composition is fixed here: a membrane with bending only when the deck asks for it.
-  const elasticity::HookeanLaw2D tension(1.0);
+  // The deck's tension law, with bending only when the deck asks for it.
   if (cell_.bendingModulus > 0.0) {
     return std::make_unique<elasticity::ElasticMembrane2D>(
-        reference, tension, elasticity::BendingLaw2D{cell_.bendingModulus, cell_.bendingReference});
+        reference, cell_.membraneLaw, elasticity::BendingLaw2D{cell_.bendingModulus, cell_.bendingReference});
   }
-  return std::make_unique<elasticity::ElasticMembrane2D>(reference, tension);
+  return std::make_unique<elasticity::ElasticMembrane2D>(reference, cell_.membraneLaw);
 }
 
 CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const CellSettings2D& cell,

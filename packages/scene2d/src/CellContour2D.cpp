@@ -3,13 +3,14 @@
 #include <capsula/contour/InitialShapes.hpp>
 #include <capsula/core/Error.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
+#include <capsula/elasticity/MembraneLawChoice.hpp>
 
 #include <cmath>
 #include <string>
 
 namespace capsula::scene2d {
 
-void declareCellParameters2D(Teuchos::ParameterList& cell)
+void declareCellParameters2D(Teuchos::ParameterList& cell, const elasticity::MembraneLawRegistry2D& laws)
 {
   namespace core = capsula::core;
   const CellSettings2D defaults;
@@ -29,10 +30,10 @@ void declareCellParameters2D(Teuchos::ParameterList& cell)
   core::declareReal(cell, "Prestress", defaults.prestress,
                     "Membrane prestress alpha: the cell starts stretched by 1 + alpha over its unstressed "
                     "reference (the initial contour shrunk by 1 + alpha about its centroid), with the "
-                    "uniform tension alpha E. The thesis's 2D study has 0, with which the free cell's "
-                    "membrane starts in compression in shear and wrinkles at the grid scale on fine "
-                    "contours; a prestress that keeps it in tension makes the mesh study converge "
-                    "(docs/tether2d-results.md).",
+                    "uniform tension alpha E of the Hookean law. The thesis's 2D study has 0, with which "
+                    "the free cell's membrane starts in compression in shear and wrinkles at the grid "
+                    "scale on fine contours; a prestress that keeps it in tension makes the mesh study "
+                    "converge (docs/tether2d-results.md).",
                     core::atLeast(0.0), core::lessThan(1.0));
   core::declareChoice(cell, "Tether spline ends", "Natural", {"Natural", "NotAKnot"},
                       "End conditions of the tethered contour's position splines at the tether node. "
@@ -54,15 +55,21 @@ void declareCellParameters2D(Teuchos::ParameterList& cell)
                       "material point (the initial contour, shrunk by 1 + Cell/Prestress), so that the "
                       "initial cell is free of bending moment when unstressed. Only read when Bending "
                       "modulus > 0 (refused without it, as a key without effect).");
+  // Last, so that a law's key that would replace one of the cell's is refused.
+  elasticity::declareMembraneLawParameters(cell, laws.infos(), elasticity::HookeanLaw2D::registeredName,
+                                           "The membrane's tension against its stretch omega = dl / dl0, in units "
+                                           "of the elastic modulus E of the capillary number.");
 }
 
-CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell)
+CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell, const elasticity::MembraneLawRegistry2D& laws)
 {
   CellSettings2D s;
   s.aspectRatio = cell.get<double>("Aspect ratio");
   s.numberOfPoints = cell.get<int>("Number of points");
   s.lowestPointHeight = cell.get<double>("Lowest point height");
   s.prestress = cell.get<double>("Prestress");
+  const elasticity::MembraneLawChoice law = elasticity::readMembraneLawChoice(cell, laws.infos(), "Cell");
+  s.membraneLaw = laws.create(law.name, 1.0, law.parameters);
   s.tetherEnds = cell.get<std::string>("Tether spline ends") == "Natural" ? contour::TetherEnds::Natural
                                                                           : contour::TetherEnds::NotAKnot;
   s.bendingModulus = cell.get<double>("Bending modulus");

@@ -12,7 +12,8 @@
 
 namespace capsula::scene2d {
 
-void declareModelParameters2D(Teuchos::ParameterList& valid, const operators::KernelRegistry2D& kernels)
+void declareModelParameters2D(Teuchos::ParameterList& valid, const operators::KernelRegistry2D& kernels,
+                              const elasticity::MembraneLawRegistry2D& laws)
 {
   using core::declareSublist;
   declareFlowParameters2D(declareSublist(valid, "Flow", "The shear flow (thesis eq A.13)."));
@@ -20,7 +21,7 @@ void declareModelParameters2D(Teuchos::ParameterList& valid, const operators::Ke
   operators::declareKernelParameters(
       declareSublist(valid, "Operator", "The Green's function of the contour integrals (docs/extending.md)."),
       kernels.infos());
-  declareCellParameters2D(declareSublist(valid, "Cell", "The initial cell contour (thesis Fig. 4.1)."));
+  declareCellParameters2D(declareSublist(valid, "Cell", "The initial cell contour (thesis Fig. 4.1)."), laws);
   declareTetherParameters2D(declareSublist(valid, "Tether", "The tether procedure (thesis Section 4.1)."));
   operators::declareContourDiscretisation2D(
       declareSublist(valid, "Discretisation", "Quadrature of the contour integrals (thesis App. A.6)."));

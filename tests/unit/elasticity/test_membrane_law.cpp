@@ -1,7 +1,7 @@
 // Membrane laws (thesis eqs 3.29-3.32): energies, derivatives, tensions, validation,
 // factory.
 #include <capsula/core/Error.hpp>
-#include <capsula/elasticity/MembraneLawFactory.hpp>
+#include <capsula/elasticity/MembraneLawRegistry.hpp>
 #include <capsula/elasticity/MembraneTension.hpp>
 #include <capsula/elasticity/NeoHookeanLaw.hpp>
 #include <capsula/elasticity/PrincipalStiffness.hpp>
@@ -218,23 +218,32 @@ TEST(MembraneLaw, RejectsBadModuliNamingThem)
   EXPECT_NO_THROW(SkalakLaw(1.0, 0.0)); // C = 0: no extra area resistance, still valid
 }
 
-TEST(MembraneLaw, FactoryBuildsLawsByName)
+TEST(MembraneLaw, RegistryBuildsLawsByName)
 {
-  EXPECT_EQ(membraneLawNames(), (std::vector<std::string>{"NeoHookean", "Skalak"}));
-  const auto neo = makeMembraneLaw("NeoHookean", {G, 0.0});
-  const auto skalak = makeMembraneLaw("Skalak", {G, C});
+  const MembraneLawRegistry laws = builtInMembraneLaws();
+  EXPECT_EQ(laws.names(), (std::vector<std::string>{"NeoHookean", "Skalak"}));
+  Teuchos::ParameterList skalakKeys;
+  skalakKeys.set("Area dilation C", C);
+  const auto neo = laws.create("NeoHookean", G);
+  const auto skalak = laws.create("Skalak", G, skalakKeys);
   EXPECT_EQ(neo->name(), "NeoHookean");
   EXPECT_EQ(skalak->name(), "Skalak");
   EXPECT_EQ(neo->shearModulus(), G);
   EXPECT_EQ(skalak->energyDensity(0.3, 0.2), SkalakLaw(G, C).energyDensity(0.3, 0.2));
   EXPECT_EQ(neo->energyDensity(0.3, 0.2), NeoHookeanLaw(G).energyDensity(0.3, 0.2));
+  // Skalak declares its own key; left out, it takes the declared default.
+  EXPECT_EQ(laws.info("Skalak").validParameters->get<double>("Area dilation C"), 2.5);
+  EXPECT_EQ(laws.create("Skalak", G)->energyDensity(0.3, 0.2), SkalakLaw(G, 2.5).energyDensity(0.3, 0.2));
+  EXPECT_TRUE(laws.info("NeoHookean").validParameters.is_null());
   try {
-    makeMembraneLaw("Hookean", {G, C});
+    laws.create("Hookean", G);
     ADD_FAILURE() << "unknown law accepted";
   } catch (const capsula::core::InputError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("Hookean'"), std::string::npos) << what;
     EXPECT_NE(what.find("NeoHookean, Skalak"), std::string::npos) << what;
+    EXPECT_NE(what.find("Did you mean 'NeoHookean'?"), std::string::npos) << what;
   }
-  EXPECT_THROW(makeMembraneLaw("Skalak", {G, -1.0}), capsula::core::InputError);
+  skalakKeys.set("Area dilation C", -1.0);
+  EXPECT_THROW(laws.create("Skalak", G, skalakKeys), capsula::core::InputError);
 }

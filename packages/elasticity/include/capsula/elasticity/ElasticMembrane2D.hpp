@@ -5,7 +5,8 @@
 // the derivative of a spline of the current arc length l at the nodes against the
 // reference arc length l0 at the same nodes (eq A.38); both arc lengths are true spline
 // arc lengths (Gauss-Legendre), not chords. The tension gamma = E (omega - 1) at the
-// nodes is splined against l, whose derivative gives d gamma / dl (eq A.39), and the load
+// nodes (the law's, MembraneLaw2D.hpp; Hookean: E (omega - 1)) is splined against l, whose
+// derivative gives d gamma / dl (eq A.39), and the load
 // is Delta f = gamma kappa n - (d gamma / dl) t (eq A.4, sign: MembraneLoad2D.hpp).
 //
 // End conditions of these two auxiliary splines: periodic for a free cell. For a tethered
@@ -17,11 +18,13 @@
 // A membrane built with a bending law adds the bending load (MembraneBending2D.hpp) to the
 // tension's in every evaluation; one built without has no bending term at all.
 #include "capsula/elasticity/HookeanLaw2D.hpp"
+#include "capsula/elasticity/MembraneLaw2D.hpp"
 #include "capsula/elasticity/MembraneBending2D.hpp"
 #include "capsula/elasticity/MembraneState2D.hpp"
 
 #include <capsula/contour/Contour.hpp>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -30,12 +33,16 @@ namespace capsula::elasticity {
 class ElasticMembrane2D {
 public:
   /// `reference` is the unstressed contour (its marker points are the same material
-  /// points as those of every contour later passed to evaluate()).
-  ElasticMembrane2D(const contour::Contour& reference, HookeanLaw2D law);
+  /// points as those of every contour later passed to evaluate()). Throws core::Error
+  /// for a null law.
+  ElasticMembrane2D(const contour::Contour& reference, std::shared_ptr<const MembraneLaw2D> law);
   /// With bending stiffness as well (kappa_ref from `reference` with 'Initial shape').
-  ElasticMembrane2D(const contour::Contour& reference, HookeanLaw2D law, BendingLaw2D bending);
+  ElasticMembrane2D(const contour::Contour& reference, std::shared_ptr<const MembraneLaw2D> law, BendingLaw2D bending);
+  /// The Hookean law of the thesis's model (eq A.36).
+  ElasticMembrane2D(const contour::Contour& reference, const HookeanLaw2D& law);
+  ElasticMembrane2D(const contour::Contour& reference, const HookeanLaw2D& law, BendingLaw2D bending);
 
-  const HookeanLaw2D& law() const { return law_; }
+  const MembraneLaw2D& law() const { return *law_; }
   /// The bending part, or null without one.
   const MembraneBending2D* bending() const { return bending_ ? &*bending_ : nullptr; }
   /// Reference arc length l0 at the knots, 0 .. L0 (N + 1 values).
@@ -47,7 +54,7 @@ public:
   MembraneState2D evaluate(const contour::Contour& current) const;
 
 private:
-  HookeanLaw2D law_;
+  std::shared_ptr<const MembraneLaw2D> law_;
   contour::Closure closure_;
   std::vector<double> referenceArcLengths_;
   std::optional<MembraneBending2D> bending_;

@@ -1,6 +1,8 @@
 #pragma once
 // Hookean law of a 2D membrane (a contour): tension from the local stretch ratio
 // (thesis eq A.36, after Breyiannis & Pozrikidis 2000).
+#include "capsula/elasticity/MembraneLaw2D.hpp"
+
 namespace capsula::elasticity {
 
 /// gamma = E (omega - 1), omega = dl / dl0 (eqs A.36-A.37).
@@ -17,14 +19,18 @@ inline double hookeanEnergyDensity(double modulus, double stretch)
   return 0.5 * modulus * strain * strain;
 }
 
-class HookeanLaw2D {
+class HookeanLaw2D final : public MembraneLaw2D {
 public:
+  /// The deck name (MembraneLawRegistry2D.hpp).
+  static constexpr const char* registeredName = "Hookean";
+
   /// Throws InputError unless the elastic modulus E is positive and finite.
   explicit HookeanLaw2D(double modulus);
 
+  std::string name() const override { return registeredName; }
   double modulus() const { return modulus_; }
-  double tension(double stretch) const { return hookeanTension(modulus_, stretch); }
-  double energyDensity(double stretch) const { return hookeanEnergyDensity(modulus_, stretch); }
+  double tension(double stretch) const override { return hookeanTension(modulus_, stretch); }
+  double energyDensity(double stretch) const override { return hookeanEnergyDensity(modulus_, stretch); }
 
 private:
   double modulus_;

@@ -6,8 +6,9 @@
 //     I1 = lambda1^2 + lambda2^2 - 2,     I2 = lambda1^2 lambda2^2 - 1,
 // which both vanish in the unstressed state. The Cauchy tension (eq 3.30) needs only
 // the two first derivatives; the tangent stiffness of the stiff time integrators
-// (MembraneEnergyHessian.hpp) the second ones. Adding a law means one small header
-// deriving from MembraneLaw (see NeoHookeanLaw.hpp) plus one line in MembraneLawFactory.cpp.
+// (MembraneEnergyHessian.hpp) the second ones. Adding a law means one small class
+// deriving from MembraneLaw (see NeoHookeanLaw.hpp) registered by name with its own keys
+// (MembraneLawRegistry.hpp, docs/extending.md).
 #include <string>
 
 namespace capsula::elasticity {
@@ -29,7 +30,7 @@ class MembraneLaw {
 public:
   virtual ~MembraneLaw() = default;
 
-  /// The name the factory knows the law by ("NeoHookean", "Skalak").
+  /// The name the registry knows the law by ("NeoHookean", "Skalak").
   virtual std::string name() const = 0;
   /// G, the small-deformation surface shear modulus: the natural scale of tensions.
   virtual double shearModulus() const = 0;

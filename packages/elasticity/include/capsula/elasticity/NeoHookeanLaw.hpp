@@ -28,13 +28,16 @@ inline EnergySecondDerivatives neoHookeanEnergySecondDerivatives(double shearMod
 
 class NeoHookeanLaw final : public MembraneLaw {
 public:
+  /// The deck name (MembraneLawRegistry.hpp).
+  static constexpr const char* registeredName = "NeoHookean";
+
   /// Throws InputError unless G is finite and positive.
   explicit NeoHookeanLaw(double shearModulus) : shearModulus_(shearModulus)
   {
-    requireModulus("NeoHookean", "shear modulus G", shearModulus);
+    requireModulus(registeredName, "shear modulus G", shearModulus);
   }
 
-  std::string name() const override { return "NeoHookean"; }
+  std::string name() const override { return registeredName; }
   double shearModulus() const override { return shearModulus_; }
   double energyDensity(double I1, double I2) const override { return neoHookeanEnergyDensity(shearModulus_, I1, I2); }
   EnergyDerivatives energyDerivatives(double I1, double I2) const override

@@ -25,14 +25,17 @@ inline EnergySecondDerivatives skalakEnergySecondDerivatives(double shearModulus
 
 class SkalakLaw final : public MembraneLaw {
 public:
+  /// The deck name (MembraneLawRegistry.hpp).
+  static constexpr const char* registeredName = "Skalak";
+
   /// Throws InputError unless G is finite and positive and C finite and non-negative.
   SkalakLaw(double shearModulus, double areaDilation) : shearModulus_(shearModulus), areaDilation_(areaDilation)
   {
-    requireModulus("Skalak", "shear modulus G", shearModulus);
-    requireModulus("Skalak", "area-dilation ratio C", areaDilation, true);
+    requireModulus(registeredName, "shear modulus G", shearModulus);
+    requireModulus(registeredName, "area-dilation ratio C", areaDilation, true);
   }
 
-  std::string name() const override { return "Skalak"; }
+  std::string name() const override { return registeredName; }
   double shearModulus() const override { return shearModulus_; }
   double areaDilation() const { return areaDilation_; }
   double energyDensity(double I1, double I2) const override

@@ -1,13 +1,10 @@
 #pragma once
-// The message of a deck name that no registry entry has: what kind of thing was asked for,
-// every registered name and the closest one, so a typo or a missing library is obvious.
-#include <string>
-#include <vector>
+// The registries of this package answer an unregistered name as every registry does
+// (core/RegisteredNames.hpp).
+#include <capsula/core/RegisteredNames.hpp>
 
 namespace capsula::operators {
 
-/// Throws core::InputError "There is no <kind> named '<name>'; registered: A, B. Did you
-/// mean 'A'?" unless `name` is one of `registered`.
-void requireRegistered(const std::string& kind, const std::string& name, const std::vector<std::string>& registered);
+using core::requireRegistered;
 
 } // namespace capsula::operators

@@ -9,24 +9,28 @@
 #include <capsula/adhesion/TetherParameters.hpp>
 #include <capsula/domain/Domain.hpp>
 #include <capsula/domain/FlowProfile.hpp>
+#include <capsula/elasticity/MembraneLawRegistry.hpp>
 #include <capsula/mesh/AdaptionParameters.hpp>
 #include <capsula/mesh/RedistributionParameters.hpp>
 #include <capsula/operators/ShearRate.hpp>
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace capsula::scene {
 
 struct CellDescription {
-  std::string path;                  ///< "Cells/Cell 0", for messages
-  Teuchos::ParameterList surface;    ///< the cell's sublist (mesh::buildCellSurface reads it)
-  std::string membraneLaw;           ///< "NeoHookean" or "Skalak"
+  std::string path;                             ///< "Cells/Cell 0", for messages
+  Teuchos::ParameterList surface;               ///< the cell's sublist (mesh::buildCellSurface reads it)
+  std::string membraneLaw;                      ///< 'Membrane law': a registered name ("NeoHookean", "Skalak")
+  Teuchos::ParameterList membraneLawParameters; ///< the law's own keys (Skalak: 'Area dilation C')
+  /// The law, built by the registry from the name, 'Shear modulus' and the law's keys.
+  std::shared_ptr<const elasticity::MembraneLaw> law;
   std::string membraneForces;        ///< "Virtual work" or "Contour integral"
   double shearModulus = 1.0;         ///< relative to the G of the capillary number
-  double areaDilation = 0.0;         ///< C (Skalak)
   double prestress = 0.0;            ///< alpha (eq 3.45)
   double viscosityRatio = 1.0;       ///< lambda: the cell's 'Viscosity ratio', else 'Flow/Viscosity ratio'
   double bendingModulus = 0.0;       ///< E_b = k_b / (G a^2); 0: no bending term
@@ -62,8 +66,10 @@ struct SceneDescription {
   bool anyFixedHeight() const;
 };
 
-/// Reads a validated scene deck. Throws core::InputError naming the key for the
-/// inconsistencies listed above.
-SceneDescription describeScene(const Teuchos::ParameterList& deck);
+/// Reads a validated scene deck, building each cell's membrane law from `laws`. Throws
+/// core::InputError naming the key for the inconsistencies listed above and for a law
+/// `laws` does not hold.
+SceneDescription describeScene(const Teuchos::ParameterList& deck,
+                               const elasticity::MembraneLawRegistry& laws = elasticity::builtInMembraneLaws());
 
 } // namespace capsula::scene

@@ -4,8 +4,8 @@
 //   Flow/             Capillary number (Ca = mu k a / G), Viscosity ratio (lambda)
 //   Wall/             Enabled
 //   Cells/Cell 0/     Shape, Radius, Semi-axes, Center, Orientation ..., Mesh level
-//                     (capsula::mesh), Membrane law, Shear modulus, Area dilation C,
-//                     Prestress, Bending modulus, Spontaneous curvature, Bending
+//                     (capsula::mesh), Membrane law and its law's keys (Area dilation C
+//                     of Skalak; elasticity/MembraneLawRegistry.hpp), Shear modulus, Prestress, Bending modulus, Spontaneous curvature, Bending
 //                     reference, Fixed height
 //   Cells/Cell 1/     ... one sublist per cell, numbered from 0
 //   Cells/            Minimum gap (between cell surfaces: touching at the start, stop of a run)
@@ -23,6 +23,8 @@
 // The valid list depends on the deck: it declares one "Cell k" sublist for every
 // "Cell k" the deck has (Cell 0 if none), so a deck with any number of cells validates,
 // and a misspelt cell sublist ("Cel 1") is reported as an unknown key.
+#include <capsula/elasticity/MembraneLawRegistry.hpp>
+
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 
@@ -32,8 +34,9 @@
 namespace capsula::scene {
 
 /// Declares the keys of one cell in `cell` (the "Cells/Cell k" sublist), its Center
-/// defaulting to `center`.
-void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double, 3>& center = {0.0, 0.0, 0.0});
+/// defaulting to `center`; 'Membrane law' chooses among `laws` (default Skalak).
+void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double, 3>& center = {0.0, 0.0, 0.0},
+                           const elasticity::MembraneLawRegistry& laws = elasticity::builtInMembraneLaws());
 
 /// The default Center of cell `index` of `count`: at the demo's height 1.6 above the wall,
 /// in line along the flow 2.5 radii apart (a gap of 0.5) and centred on x = 0, so that a
@@ -45,9 +48,11 @@ std::array<double, 3> defaultCellCenter(int index, int count);
 void declareMinimumGap(Teuchos::ParameterList& cells);
 
 /// Declares the sublists Flow, Wall and Cells (with a "Cell k" sublist for every one
-/// `deck` has, or `cellsWhenNoneGiven` of them when it has none) in `valid`.
+/// `deck` has, or `cellsWhenNoneGiven` of them when it has none) in `valid`; each cell's
+/// 'Membrane law' chooses among `laws`.
 void declareSceneParameters(Teuchos::ParameterList& valid, const Teuchos::ParameterList& deck,
-                            int cellsWhenNoneGiven = 1);
+                            int cellsWhenNoneGiven = 1,
+                            const elasticity::MembraneLawRegistry& laws = elasticity::builtInMembraneLaws());
 
 /// Declares the sublists Mesh regularisation and Mesh adaption in `valid`.
 void declareMeshEvolutionParameters(Teuchos::ParameterList& valid);

@@ -1,7 +1,7 @@
 #pragma once
 // The 2D capsule of Chapter 4 as an ODE for its marker points, dx_i/dt = u_i (thesis eq
-// A.48): contour (App. A.3) -> Hookean membrane load with E = 1 (App. A.5; loads in units
-// of E/L), plus the bending load with 'Cell/Bending modulus' > 0 (elasticity/
+// A.48): contour (App. A.3) -> membrane load of 'Cell/Membrane law' (Hookean by default)
+// with E = 1 (App. A.5; loads in units of E/L), plus the bending load with 'Cell/Bending modulus' > 0 (elasticity/
 // MembraneBending2D.hpp) -> node velocities from the boundary-integral equation (eq A.35). Free cells use
 // periodic splines; after tethering, tethered splines with node 0 at the tether, whose
 // velocity is held at zero. With lambda != 1 and 'Solver/Warm start', each GMRES solve starts
@@ -117,8 +117,8 @@ public:
   void load(const io::Checkpoint& checkpoint, const std::string& source) override;
 
 private:
-  /// The membrane on `reference`: Hookean tension (E = 1), with bending when Cell/Bending
-  /// modulus > 0.
+  /// The membrane on `reference`: the tension of 'Cell/Membrane law' (E = 1), with bending
+  /// when Cell/Bending modulus > 0.
   std::unique_ptr<elasticity::ElasticMembrane2D> makeMembrane(const contour::Contour& reference) const;
 
   CellSettings2D cell_;

@@ -2,12 +2,13 @@
 // The deck keys of the 2D tethered-cell model, declared by the components that read them:
 //   Flow, Wall                 FlowModel2D.hpp
 //   Operator                   operators/KernelChoice.hpp (Kernel, from a KernelRegistry2D)
-//   Cell                       CellContour2D.hpp
+//   Cell                       CellContour2D.hpp (Membrane law, from a MembraneLawRegistry2D)
 //   Tether                     TetherProcedure2D.hpp
 //   Discretisation             operators/ContourDiscretisation2D.hpp
 //   Solver                     operators/OperatorParameters.hpp (the Krylov solve, lambda != 1)
 // The run adds Time integration and Output (run/Tether2DDeck.hpp assembles the deck of
 // tether2d).
+#include <capsula/elasticity/MembraneLawRegistry2D.hpp>
 #include <capsula/operators/KernelRegistry2D.hpp>
 
 #include <Teuchos_ParameterList.hpp>
@@ -15,8 +16,9 @@
 namespace capsula::scene2d {
 
 /// Declares the sublists above in `valid`, in that order; 'Operator/Kernel' chooses among
-/// `kernels`.
+/// `kernels`, 'Cell/Membrane law' among `laws`.
 void declareModelParameters2D(Teuchos::ParameterList& valid,
-                              const operators::KernelRegistry2D& kernels = operators::builtInKernels2D());
+                              const operators::KernelRegistry2D& kernels = operators::builtInKernels2D(),
+                              const elasticity::MembraneLawRegistry2D& laws = elasticity::builtInMembraneLaws2D());
 
 } // namespace capsula::scene2d

@@ -1,12 +1,12 @@
-#include "capsula/operators/RegisteredNames.hpp"
+#include "capsula/core/RegisteredNames.hpp"
 
-#include <capsula/core/DeckValidators.hpp>
-#include <capsula/core/Error.hpp>
+#include "capsula/core/DeckValidators.hpp"
+#include "capsula/core/Error.hpp"
 
 #include <algorithm>
 #include <sstream>
 
-namespace capsula::operators {
+namespace capsula::core {
 
 void requireRegistered(const std::string& kind, const std::string& name, const std::vector<std::string>& registered)
 {
@@ -17,9 +17,9 @@ void requireRegistered(const std::string& kind, const std::string& name, const s
   for (const auto& entry : registered) {
     known << (known.tellp() > 0 ? ", " : "") << entry;
   }
-  const auto closest = core::closestMatch(name, registered);
-  throw core::InputError(core::message("There is no ", kind, " named '", name, "'; registered: ", known.str(), ".",
+  const auto closest = closestMatch(name, registered);
+  throw InputError(message("There is no ", kind, " named '", name, "'; registered: ", known.str(), ".",
                                        closest ? " Did you mean '" + *closest + "'?" : ""));
 }
 
-} // namespace capsula::operators
+} // namespace capsula::core
