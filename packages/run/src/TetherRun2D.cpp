@@ -144,7 +144,7 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   // The stiff methods' Jacobian (VelocityJacobian2D.hpp) reads the model at every
   // linearisation, so it follows the tethering and the regrids as it is.
   std::shared_ptr<scene2d::VelocityJacobian2D> jacobian;
-  if (timeint::needsLinearisedSystem(settings.method)) {
+  if (integrator.needsLinearisedSystem()) {
     jacobian = std::make_shared<scene2d::VelocityJacobian2D>(model_, comm_, deck_);
     integrator.setLinearisedSystem(jacobian);
   }
@@ -205,7 +205,7 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   if (tether_.enabled) {
     terms.emplace_back("tether constraint after a free preparation stage");
   }
-  terms.push_back(timeint::describeTimeIntegration(integrator.settings()));
+  terms.push_back(integrator.describe());
   if (jacobian) {
     terms.push_back(jacobian->describe());
   }
@@ -221,7 +221,7 @@ TetherRunResult2D TetherRun2D::run(const std::string& outputDirectory,
   const auto summaryJson = [&](const std::string& status, const std::string& note) {
     const double time = status == "interrupted" ? stages.tau(state.time) : result.finalTime;
     return summary.json(status, note, time, state.statistics, [&](io::JsonValue& json) {
-      json["time integration"]["method"] = timeint::toString(integrator.settings().method);
+      json["time integration"]["method"] = integrator.settings().method;
       json["time integration"]["in use"] = integrator.activeMethodName(state);
       for (const io::JsonValue& change : switches.switches()) {
         json["time integration"]["switches"].append(change);
