@@ -116,7 +116,7 @@ void RunBackbone::begin(std::vector<std::string> terms)
 io::JsonValue RunBackbone::summaryJson(const std::string& status, const std::string& note, double time) const
 {
   return summary_.json(status, note, time, state_.statistics, [this](io::JsonValue& json) {
-    json["time integration"]["method"] = timeint::toString(integrator_.settings().method);
+    json["time integration"]["method"] = integrator_.settings().method;
     json["time integration"]["in use"] = integrator_.activeMethodName(state_);
     for (const auto& [switchTime, reason] : switches_.switches()) {
       io::JsonValue change = io::JsonValue::object();

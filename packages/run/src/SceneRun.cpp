@@ -57,9 +57,12 @@ timeint::TimeIntegrationSettings integrationSettings(const Teuchos::ParameterLis
   auto settings = timeint::timeIntegrationSettings(deck.sublist("Time integration"));
   // Auto judges stiffness by the stability limit: the deck's false (the 3D apps' default is
   // true) would be overridden.
-  core::require<core::InputError>(settings.method != timeint::Method::Auto || settings.stabilityLimit,
+  core::require<core::InputError>(settings.stabilityLimit ||
+                                      !timeint::builtInMethods().info(settings.method).traits.stabilityLimit,
                                   "'Time integration/Stability limit' = false cannot hold with 'Time "
-                                  "integration/Method' = Auto, which judges stiffness by that limit: set it to true, "
+                                  "integration/Method' = ",
+                                  settings.method,
+                                  ", which judges stiffness by that limit: set it to true, "
                                   "or choose RKF45 (explicit without the limit) or ROS34PW2 (stiff throughout).");
   settings.steadyCriterion = timeint::SteadyStateCriterion::Off;
   operators::requireNoSteadyStop(description.shearRate, "Flow/Shear rate", settings.steadyTolerance);
@@ -181,7 +184,7 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
   for (auto& term : outputs_.terms()) {
     terms.push_back(std::move(term));
   }
-  terms.push_back(timeint::describeTimeIntegration(integrator_.settings()));
+  terms.push_back(integrator_.describe());
   attachJacobian();
   if (jacobian_) {
     terms.push_back(jacobian_->describe());
@@ -192,7 +195,7 @@ SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<
 // The stiff methods' Jacobian of the scene as it is now (a mesh adaption replaces the scene).
 void SceneRunner::attachJacobian()
 {
-  if (!timeint::needsLinearisedSystem(integrator_.settings().method) || jacobianScene_ == &live_.scene()) {
+  if (!integrator_.needsLinearisedSystem() || jacobianScene_ == &live_.scene()) {
     return;
   }
   jacobian_ = std::make_shared<scene::VelocityJacobian>(live_.scene(), deck_, kernels_);

@@ -153,7 +153,7 @@ TetherRunner2D::TetherRunner2D(scene2d::CapsuleModel2D& model, const scene2d::Te
   }
   // The stiff methods' Jacobian (VelocityJacobian2D.hpp) reads the model at every
   // linearisation, so it follows the tethering and the regrids as it is.
-  if (timeint::needsLinearisedSystem(integrator_.settings().method)) {
+  if (integrator_.needsLinearisedSystem()) {
     jacobian_ = std::make_shared<scene2d::VelocityJacobian2D>(model_, comm, deck);
     integrator_.setLinearisedSystem(jacobian_);
   }
@@ -175,7 +175,7 @@ std::vector<std::string> TetherRunner2D::terms() const
   if (tether_.enabled) {
     terms.emplace_back("tether constraint after a free preparation stage");
   }
-  terms.push_back(timeint::describeTimeIntegration(integrator_.settings()));
+  terms.push_back(integrator_.describe());
   if (jacobian_) {
     terms.push_back(jacobian_->describe());
   }

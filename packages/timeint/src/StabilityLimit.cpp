@@ -1,8 +1,8 @@
-// The stability limit of the explicit methods (TimeIntegrator.hpp, "Stability limit"):
+// The stability limit of the explicit methods (TimeIntegrationSettings::stabilityLimit):
 // the spectral radius rho of df/dy by power iteration on finite differences of f, and the
-// step 0.8 r / rho, r the real stability boundary of the tableau that advances. Method
-// Auto also uses it to judge whether the explicit method is held by stiffness.
-#include "capsula/timeint/TimeIntegrator.hpp"
+// step 0.8 r / rho, r the real stability boundary of the tableau that advances. The
+// switching method Auto also uses it to judge whether the explicit method is held by stiffness.
+#include "capsula/timeint/TimeIntegrationMethod.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,9 +10,10 @@
 
 namespace capsula::timeint {
 
-void TimeIntegrator::estimateStabilityStep(IntegrationState& state)
+void StepContext::estimateStabilityStep(IntegrationState& state, const std::vector<double>& slope, double boundary,
+                                        const std::string& method)
 {
-  // Power iteration on J v ~ (f(y + eps v) - f(y)) / eps, f(y) = slopes_[0]. The membrane's
+  // Power iteration on J v ~ (f(y + eps v) - f(y)) / eps, f(y) = slope. The membrane's
   // J is a product of a symmetric positive mobility and a symmetric stiffness, so its
   // dominant eigenvalue is real and negative and |J v| converges to rho from below.
   const std::size_t n = state.y.size();
@@ -44,10 +45,10 @@ void TimeIntegrator::estimateStabilityStep(IntegrationState& state)
     for (std::size_t i = 0; i < n; ++i) {
       probe_[i] = state.y[i] + eps * v[i] / norm;
     }
-    evaluate(state.time, probe_, probeSlope_, state, state.proposedStep, 0);
+    evaluate(state.time, probe_, probeSlope_, state, state.proposedStep, 0, method);
     double growth = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      v[i] = (probeSlope_[i] - slopes_[0][i]) / eps;
+      v[i] = (probeSlope_[i] - slope[i]) / eps;
       growth += v[i] * v[i];
     }
     rho = std::sqrt(growth);
@@ -57,7 +58,7 @@ void TimeIntegrator::estimateStabilityStep(IntegrationState& state)
       break;
     }
   }
-  state.stabilityStep = rho > 0.0 ? 0.8 * stabilityBoundary_ / rho : std::numeric_limits<double>::infinity();
+  state.stabilityStep = rho > 0.0 ? 0.8 * boundary / rho : std::numeric_limits<double>::infinity();
   state.stepsSinceStabilityEstimate = 0;
 }
 

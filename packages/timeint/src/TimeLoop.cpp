@@ -23,7 +23,7 @@ ObserverVerdict IntegrationObserver::atOutput(const IntegrationState&, OutputRea
 
 double TimeIntegrator::endTime(const OutputSchedule& schedule) const
 {
-  return schedule.endTime ? *schedule.endTime : settings_.endTime;
+  return schedule.endTime ? *schedule.endTime : settings().endTime;
 }
 
 double TimeIntegrator::outputTime(double origin, std::int64_t index, const OutputSchedule& schedule) const

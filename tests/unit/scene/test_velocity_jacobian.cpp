@@ -368,7 +368,7 @@ TEST(VelocityJacobian, StiffCapsuleRunConvergesAtOrderThree)
   const auto run = [&](double h) {
     auto s = makeScene(*deck);
     ti::TimeIntegrationSettings settings;
-    settings.method = ti::Method::ROS34PW2;
+    settings.method = "ROS34PW2";
     settings.tolerance = 1e-9; // stage solves to an RMS residual of 1e-11
     settings.adaptive = false;
     settings.initialStep = h;

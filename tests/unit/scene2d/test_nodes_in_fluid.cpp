@@ -24,7 +24,7 @@ constexpr double rate = 5000.0;
 timeint::TimeIntegrator relaxingNode(bool adaptive)
 {
   timeint::TimeIntegrationSettings settings;
-  settings.method = timeint::Method::RKF45;
+  settings.method = "RKF45";
   settings.adaptive = adaptive;
   settings.tolerance = 1e-6;
   settings.initialStep = 2e-3; // the preparation's step that the a/b = 0.25 cells were tethered with
@@ -62,7 +62,7 @@ TEST(NodesInFluid2D, TetheredAbQuarterCellStageThroughTheWallIsARejectedStepNotA
   // is evaluated below the wall (where the wall kernel would meet its image).
   {
     timeint::TimeIntegrationSettings settings;
-    settings.method = timeint::Method::RKF45;
+    settings.method = "RKF45";
     settings.tolerance = 1e-6;
     settings.initialStep = 2e-3;
     bool belowTheWall = false;
@@ -115,7 +115,7 @@ TEST(NodesInFluid2D, FixedStepsThroughTheWallFailWithAClearError)
 TEST(NodesInFluid2D, ACellDrivenIntoTheWallFailsWhenTheStepCollapses)
 {
   timeint::TimeIntegrationSettings settings;
-  settings.method = timeint::Method::RKF45;
+  settings.method = "RKF45";
   settings.minimumStep = 1e-12;
   timeint::TimeIntegrator integrator(settings, [](double, const std::vector<double>&, std::vector<double>& dydt) {
     dydt[0] = 0.0;

@@ -1,4 +1,4 @@
-// Method Auto (MethodSwitch.cpp): RKF45 with the stability limit where the problem is not
+// Method Auto (AutoSwitchingMethod.cpp): RKF45 with the stability limit where the problem is not
 // stiff, ROS34PW2 while the limit holds the explicit step far below what accuracy
 // allows, and back when the stiffness goes away; decisions by counted work, so a restart
 // repeats them.
@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace ti = capsula::timeint;
@@ -55,7 +56,7 @@ private:
 ti::TimeIntegrationSettings autoSettings(double end)
 {
   ti::TimeIntegrationSettings s;
-  s.method = ti::Method::Auto;
+  s.method = "Auto";
   s.tolerance = 1e-5;
   s.initialStep = 1e-3;
   s.endTime = end;
@@ -75,7 +76,7 @@ TEST(MethodSwitch, StaysExplicitWhereNothingIsStiff)
   ti::TimeIntegrator automatic(autoSettings_, rotation);
   automatic.setLinearisedSystem(std::make_shared<KrylovLikeSystem>(8));
   auto explicitSettings = autoSettings_;
-  explicitSettings.method = ti::Method::RKF45;
+  explicitSettings.method = "RKF45";
   explicitSettings.stabilityLimit = true;
   ti::TimeIntegrator rkf45(explicitSettings, rotation);
   auto a = automatic.start(0.0, {1.0, 0.0});

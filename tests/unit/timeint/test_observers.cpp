@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace ti = capsula::timeint;
@@ -18,7 +19,7 @@ namespace {
 ti::TimeIntegrationSettings fixedSteps(double step, double endTime)
 {
   ti::TimeIntegrationSettings s;
-  s.method = ti::Method::RK4;
+  s.method = "RK4";
   s.adaptive = false;
   s.initialStep = step;
   s.endTime = endTime;

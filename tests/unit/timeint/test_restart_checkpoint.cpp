@@ -29,7 +29,7 @@ TEST(RestartThroughCheckpointFile, ReproducesTheUninterruptedRunBitForBit)
     }
   };
   ti::TimeIntegrationSettings settings;
-  settings.method = ti::Method::DormandPrince45;
+  settings.method = "DormandPrince45";
   settings.tolerance = 1e-9;
   settings.endTime = 8.0;
   const ti::OutputSchedule schedule{0.5, true};

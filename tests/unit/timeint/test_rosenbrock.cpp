@@ -1,4 +1,4 @@
-// The Rosenbrock-W methods (RosenbrockTableau.hpp, LinearlyImplicitStep.cpp): their
+// The Rosenbrock-W methods (RosenbrockTableau.hpp, RosenbrockMethod.cpp): their
 // coefficients' order conditions, L-stability, observed orders on a stiff linear system
 // and, as W-methods, with a wrong Jacobian; adaptive steps, failure handling and restart.
 #include "TestProblems.hpp"
@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace ti = capsula::timeint;
@@ -77,7 +78,7 @@ std::shared_ptr<ti::DenseLinearisedSystem> exactStiffJacobian()
       [](double, const std::vector<double>&, std::vector<double>& J) { J.assign(kStiff, kStiff + 4); });
 }
 
-ti::TimeIntegrationSettings fixedSteps(ti::Method method, double h, double end)
+ti::TimeIntegrationSettings fixedSteps(const std::string& method, double h, double end)
 {
   ti::TimeIntegrationSettings s;
   s.method = method;
@@ -150,7 +151,7 @@ TEST(Rosenbrock, StabilityFunctionIsLStable)
 // A stiff mode is damped in one step whatever its rate: one step of h = 1 on y' = -rate y.
 TEST(Rosenbrock, OneStepDampsAStiffMode)
 {
-  for (const ti::Method method : {ti::Method::ROS34PW2, ti::Method::ROS2}) {
+  for (const std::string method : {"ROS34PW2", "ROS2"}) {
     for (const double rate : {1e3, 1e6, 1e9}) {
       ti::TimeIntegrator integrator(
           fixedSteps(method, 1.0, 1.0),
@@ -159,7 +160,7 @@ TEST(Rosenbrock, OneStepDampsAStiffMode)
           [rate](double, const std::vector<double>&, std::vector<double>& J) { J[0] = -rate; }));
       const auto y = integrateTo(integrator, {1.0}, 1.0);
       // |R(-rate)| ~ 3 / rate for ROS34PW2 and smaller for ROS2: far below 1 for any rate.
-      EXPECT_LT(std::abs(y[0]), 10.0 / rate) << ti::toString(method) << " rate " << rate;
+      EXPECT_LT(std::abs(y[0]), 10.0 / rate) << method << " rate " << rate;
     }
   }
 }
@@ -168,7 +169,7 @@ TEST(Rosenbrock, OneStepDampsAStiffMode)
 // outside any explicit method's stability region: the error falls at the design order.
 TEST(Rosenbrock, ObservedOrderOnAStiffLinearSystem)
 {
-  for (const auto& [method, design] : {std::pair{ti::Method::ROS34PW2, 3.0}, std::pair{ti::Method::ROS2, 2.0}}) {
+  for (const auto& [method, design] : {std::pair{std::string("ROS34PW2"), 3.0}, std::pair{std::string("ROS2"), 2.0}}) {
     std::vector<double> steps, errors;
     for (const double h : {0.1, 0.05, 0.025, 0.0125}) {
       ti::TimeIntegrator integrator(fixedSteps(method, h, 2.0), stiffLinearRhs);
@@ -177,7 +178,7 @@ TEST(Rosenbrock, ObservedOrderOnAStiffLinearSystem)
       steps.push_back(h);
       errors.push_back(maxError(integrateTo(integrator, y0, 2.0), stiffLinearExact(2.0)));
     }
-    EXPECT_NEAR(logLogSlope(steps, errors), design, 0.2) << ti::toString(method);
+    EXPECT_NEAR(logLogSlope(steps, errors), design, 0.2) << method;
   }
 }
 
@@ -193,13 +194,13 @@ TEST(Rosenbrock, KeepsItsOrderWithAnApproximateJacobian)
       }};
   for (std::size_t k = 0; k < jacobians.size(); ++k) {
     const auto reference = [&] {
-      ti::TimeIntegrator fine(fixedSteps(ti::Method::ROS34PW2, 1.0 / 2048, 1.0), pendulumRhs);
+      ti::TimeIntegrator fine(fixedSteps("ROS34PW2", 1.0 / 2048, 1.0), pendulumRhs);
       fine.setLinearisedSystem(std::make_shared<ti::DenseLinearisedSystem>(pendulumJacobian));
       return integrateTo(fine, {1.0, 0.3}, 1.0);
     }();
     std::vector<double> steps, errors;
     for (const int n : {16, 32, 64, 128}) {
-      ti::TimeIntegrator integrator(fixedSteps(ti::Method::ROS34PW2, 1.0 / n, 1.0), pendulumRhs);
+      ti::TimeIntegrator integrator(fixedSteps("ROS34PW2", 1.0 / n, 1.0), pendulumRhs);
       integrator.setLinearisedSystem(std::make_shared<ti::DenseLinearisedSystem>(jacobians[k]));
       steps.push_back(1.0 / n);
       errors.push_back(maxError(integrateTo(integrator, {1.0, 0.3}, 1.0), reference));
@@ -213,7 +214,7 @@ TEST(Rosenbrock, KeepsItsOrderWithAnApproximateJacobian)
 TEST(Rosenbrock, AdaptiveStepsFollowAccuracyNotStiffness)
 {
   ti::TimeIntegrationSettings s;
-  s.method = ti::Method::ROS34PW2;
+  s.method = "ROS34PW2";
   s.tolerance = 1e-6;
   s.initialStep = 1e-4;
   s.endTime = 5.0;
@@ -279,7 +280,7 @@ private:
 TEST(Rosenbrock, FailedSolveRejectsAndShrinksTheStep)
 {
   ti::TimeIntegrationSettings s;
-  s.method = ti::Method::ROS34PW2;
+  s.method = "ROS34PW2";
   s.tolerance = 1e-4;
   s.initialStep = 0.4;
   s.endTime = 1.0;
@@ -298,7 +299,7 @@ TEST(Rosenbrock, FailedSolveRejectsAndShrinksTheStep)
 TEST(Rosenbrock, SolvesFailingDownToTheMinimumStepStopTheRun)
 {
   ti::TimeIntegrationSettings s;
-  s.method = ti::Method::ROS34PW2;
+  s.method = "ROS34PW2";
   s.initialStep = 0.1;
   s.minimumStep = 1e-3;
   s.endTime = 1.0;
@@ -325,7 +326,7 @@ TEST(Rosenbrock, SolvesFailingDownToTheMinimumStepStopTheRun)
 TEST(Rosenbrock, StageOutsideTheDomainRejectsAndHalvesTheStep)
 {
   ti::TimeIntegrationSettings s;
-  s.method = ti::Method::ROS34PW2;
+  s.method = "ROS34PW2";
   s.tolerance = 1e-4;
   s.initialStep = 0.04;
   s.endTime = 1.0;
@@ -352,7 +353,7 @@ TEST(Rosenbrock, StageOutsideTheDomainRejectsAndHalvesTheStep)
 TEST(Rosenbrock, StiffMethodWithoutJacobianIsRefused)
 {
   ti::TimeIntegrationSettings s;
-  s.method = ti::Method::ROS34PW2;
+  s.method = "ROS34PW2";
   ti::TimeIntegrator integrator(s, stiffLinearRhs);
   auto state = integrator.start(0.0, {1.0, 1.0});
   try {
@@ -367,7 +368,7 @@ TEST(Rosenbrock, StiffMethodWithoutJacobianIsRefused)
 TEST(Rosenbrock, RestartIsBitForBit)
 {
   ti::TimeIntegrationSettings s;
-  s.method = ti::Method::ROS34PW2;
+  s.method = "ROS34PW2";
   s.tolerance = 1e-7;
   s.initialStep = 1e-3;
   s.endTime = 3.0;

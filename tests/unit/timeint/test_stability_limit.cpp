@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace ti = capsula::timeint;
@@ -50,7 +51,7 @@ ti::RightHandSide stiffLinear(const std::vector<double>& rates)
 ti::TimeIntegrationSettings loose(bool limit)
 {
   ti::TimeIntegrationSettings s;
-  s.method = ti::Method::RKF45;
+  s.method = "RKF45";
   s.tolerance = 1e-3; // loose: the error control lets the step grow past 3.02 / 400
   s.initialStep = 1e-4;
   s.endTime = 4.0;

@@ -3,7 +3,9 @@
 // App. A.8: dx_i/dt = u_i for all node coordinates), explicit or linearly implicit. The
 // integrator never knows what the state means.
 //
-// Methods and their error control:
+// Methods are plug-ins chosen by name from a MethodRegistry (MethodRegistry.hpp), each a
+// class implementing TimeIntegrationMethod (TimeIntegrationMethod.hpp). The built-in ones
+// and their error control:
 //   RKF45            thesis eqs 3.47-3.50: the 4th-order solution advances (optionally the
 //                    5th, "local extrapolation"); err = max_i |x5_i - x4_i|, the largest
 //                    difference of any node coordinate (the thesis's |x5 - x4| for the
@@ -21,7 +23,7 @@
 //   Auto             RKF45 with the stability limit, switching to ROS34PW2 when the limit
 //                    holds the step and a trial step of ROS34PW2 large enough to pay off
 //                    meets the tolerance, and back when RKF45 would advance further per
-//                    unit of work (see MethodSwitch.cpp). Needs a LinearisedSystem too.
+//                    unit of work (see AutoSwitchingMethod.cpp). Needs a LinearisedSystem too.
 // Any method runs with fixed steps when `adaptive` is false (tests, benchmarks).
 //
 // Stability limit (optional, adaptive runs): an elastic membrane makes the system stiff,
@@ -37,12 +39,11 @@
 // `minimumStep`, throw core::NumericalError naming the time and the step size. The state
 // (time, y) is then the last accepted one, untouched, so the caller can checkpoint it.
 #include "capsula/core/Error.hpp"
-#include "capsula/timeint/ButcherTableau.hpp"
 #include "capsula/timeint/IntegrationState.hpp"
 #include "capsula/timeint/LinearisedSystem.hpp"
-#include "capsula/timeint/RosenbrockTableau.hpp"
+#include "capsula/timeint/MethodRegistry.hpp"
 #include "capsula/timeint/SteadyState.hpp"
-#include "capsula/timeint/StepControllers.hpp"
+#include "capsula/timeint/TimeIntegrationMethod.hpp"
 
 #include <functional>
 #include <initializer_list>
@@ -65,57 +66,6 @@ public:
   explicit StateOutsideDomain(const std::string& message) : core::Error(message) {}
 };
 
-/// Checks a state; throws StateOutsideDomain if the model is not defined there.
-using DomainCheck = std::function<void(const std::vector<double>& y)>;
-
-enum class Method { RKF45, DormandPrince45, RK4, ROS34PW2, ROS2, Auto };
-
-/// "RKF45", "DormandPrince45", "RK4", "ROS34PW2", "ROS2", "Auto" (the deck spelling).
-std::string toString(Method method);
-/// The inverse of toString; throws core::InputError naming the word.
-Method methodFromString(const std::string& word);
-/// Every method, in the order of the deck's choice list.
-std::vector<Method> allMethods();
-/// True for the methods that need a LinearisedSystem (ROS34PW2, ROS2, Auto).
-bool needsLinearisedSystem(Method method);
-
-struct TimeIntegrationSettings {
-  Method method = Method::RKF45;
-  bool adaptive = true;            ///< false: fixed steps of initialStep (RK4: always false)
-  bool localExtrapolation = false; ///< RKF45: advance with the 5th-order solution
-  double tolerance = 1.0e-6;       ///< RKF45: eps of eq 3.50; DP45: absolute tolerance
-  double relativeTolerance = 0.0;  ///< DP45 only
-  double initialStep = 1.0e-3;     ///< first attempted step; the step of fixed-step runs
-  double minimumStep = 1.0e-12;    ///< a controller step below this is a failure
-  double maximumStep = 1.0;        ///< the controller never proposes more
-  /// Adaptive runs: cap the step at 0.8 r / rho, rho the spectral radius of df/dy
-  /// estimated by power iteration, r the method's real stability boundary (see
-  /// TimeIntegrator::step). Off: the error control alone chooses the step.
-  bool stabilityLimit = false;
-  int stabilityInterval = 10; ///< accepted steps between estimates of rho
-  double endTime = 1.0;       ///< where integrate() stops
-  SteadyStateCriterion steadyCriterion = SteadyStateCriterion::Off;
-  double steadyTolerance = 0.0; ///< steady when the measure falls below this
-  PiControllerParameters piController;
-  /// Stiff methods: each stage solve stops at an RMS residual of linearTolerance *
-  /// tolerance (well below the local error the step is allowed).
-  double linearTolerance = 0.01;
-  /// Auto: switch when the other method is expected to advance at least this many times
-  /// further per operator application (hysteresis against switching back and forth).
-  double switchMargin = 2.0;
-  /// Auto: consecutive explicit steps held by the stability limit before switching.
-  int switchSteps = 5;
-};
-
-/// dy/dt = f(t, y). `dydt` arrives sized like `y`; the function fills every entry and
-/// must be a pure function of (t, y) (a restarted run relies on it).
-using RightHandSide = std::function<void(double t, const std::vector<double>& y, std::vector<double>& dydt)>;
-
-/// Called right after every right-hand-side evaluation with the stage's (t, y); may
-/// modify the stage derivative in place (a tethered node's velocity set to zero, the mean
-/// vertical velocity of a fixed-height cell subtracted, ...).
-using StageConstraint = std::function<void(double t, const std::vector<double>& y, std::vector<double>& dydt)>;
-
 enum class OutputReason { Start, Interval, End, SteadyState };
 
 /// Called by integrate() at output times with the accepted state there.
@@ -137,22 +87,6 @@ struct OutputSchedule {
   bool observeStart = true;
   std::function<double(std::int64_t index)> times; ///< empty: origin + k * interval
   std::optional<double> endTime;                   ///< empty: TimeIntegrationSettings::endTime
-};
-
-/// What one accepted step did.
-struct StepReport {
-  double stepSize = 0.0;
-  double errorNorm = 0.0; ///< 0 for fixed steps
-  int rejectedAttempts = 0;
-  bool shortened = false;     ///< cut short to land on the stop time
-  double steadyMeasure = 0.0; ///< 0 when steady-state detection is off
-  bool steady = false;
-  bool stiff = false;       ///< taken by a linearly implicit method
-  int linearIterations = 0; ///< Krylov iterations of the accepted attempt's solves
-  /// An explicit step under the stability limit that the limit bound.
-  bool heldByStabilityLimit = false;
-  /// Method Auto: why the method changed after this step ("" if it did not).
-  std::string switchReason;
 };
 
 /// Requested: an IntegrationObserver ended the integration (after a step or an output).
@@ -182,35 +116,41 @@ public:
 
 class TimeIntegrator {
 public:
-  /// Throws core::InputError naming the deck key ("Time integration/Minimum step") if the
-  /// settings are inconsistent.
-  TimeIntegrator(TimeIntegrationSettings settings, RightHandSide rhs);
+  /// The method settings.method names, from `methods`. Throws core::InputError naming the
+  /// deck key ("Time integration/Minimum step", "Time integration/Method", ...) if the
+  /// settings are inconsistent or the method is not registered.
+  TimeIntegrator(TimeIntegrationSettings settings, RightHandSide rhs, const MethodRegistry& methods = builtInMethods());
 
   void setStageConstraint(StageConstraint constraint);
-  /// J~ and the solves of the stiff methods (required by ROS34PW2, ROS2 and Auto; the
-  /// integrator shares ownership). It must include the stage constraint (LinearisedSystem.hpp).
+  /// J~ and the solves of the stiff methods (required by those whose MethodTraits say so:
+  /// ROS34PW2, ROS2 and Auto; the integrator shares ownership). It must include the stage
+  /// constraint (LinearisedSystem.hpp).
   void setLinearisedSystem(std::shared_ptr<LinearisedSystem> system);
-  bool hasLinearisedSystem() const { return static_cast<bool>(system_); }
+  bool hasLinearisedSystem() const { return context_.linearisedSystem() != nullptr; }
+  /// Whether the method needs setLinearisedSystem before the first step.
+  bool needsLinearisedSystem() const { return traits_.linearisedSystem; }
   /// Every stage state and every step's result is checked before use (see
   /// StateOutsideDomain); the start state is expected inside.
   void setDomainCheck(DomainCheck check);
 
-  const TimeIntegrationSettings& settings() const { return settings_; }
-  const ButcherTableau& tableau() const { return tableau_; }
-  const RosenbrockTableau& rosenbrockTableau() const { return rosenbrock_; }
+  /// The settings as checked (a fixed-step method runs with adaptive false, a method that
+  /// judges stiffness by the stability limit with the limit on).
+  const TimeIntegrationSettings& settings() const { return context_.settings(); }
   bool adaptive() const;
   /// The method the next step of `state` will use: the deck's, or for Auto the active one.
   std::string activeMethodName(const IntegrationState& state) const;
+  /// One line for a run's "Terms built": the method, its tolerance and what limits its steps.
+  std::string describe() const;
 
   /// A fresh state at (t0, y0) with the initial step proposed.
   IntegrationState start(double t0, std::vector<double> y0) const;
 
-  /// Advances `state` by one accepted step that ends at or before tStop (> state.time).
-  /// Rejected attempts are retried with smaller steps. A step that would pass tStop is
-  /// shortened to end exactly on it, and one that would stop short of it by less than 1%
-  /// of its size is stretched onto it (no sliver steps). The step size proposed before
-  /// such an adjustment is kept for the next step (an adjusted step changes the proposal
-  /// only through a rejection).
+  /// Advances `state` by one accepted step of the method that ends at or before tStop
+  /// (> state.time) (TimeIntegrationMethod::step). Rejected attempts are retried with
+  /// smaller steps. A step that would pass tStop is shortened to end exactly on it, and one
+  /// that would stop short of it by less than 1% of its size is stretched onto it (no
+  /// sliver steps). The step size proposed before such an adjustment is kept for the next
+  /// step (an adjusted step changes the proposal only through a rejection).
   StepReport step(IntegrationState& state, double tStop);
 
   /// The time loop of every run: steps from state.time to the end time (settings() or
@@ -230,43 +170,12 @@ public:
   double endTime(const OutputSchedule& schedule) const;
 
 private:
-  void evaluate(double t, const std::vector<double>& y, std::vector<double>& dydt, IntegrationState& state, double step,
-                int stage);
-  StepReport attemptUntilAccepted(IntegrationState& state, double tStop);
-  // LinearlyImplicitStep.cpp: one accepted Rosenbrock-W step; with trialStep > 0 a single
-  // attempt of that size, which on failure leaves the state as it was and reports a step
-  // size of 0.
-  StepReport attemptLinearlyImplicit(IntegrationState& state, double tStop, double trialStep = 0.0);
-  std::string solveStages(IntegrationState& state, double h, double tNew, int& iterations);
   StopReason integrateWith(IntegrationState& state, const OutputSchedule& schedule,
                            const std::vector<IntegrationObserver*>& observers);
-  void estimateStabilityStep(IntegrationState& state);
-  bool usesStiffMethod(const IntegrationState& state) const;
-  // MethodSwitch.cpp: Auto's decisions, before and after a step.
-  void countStabilityHolds(IntegrationState& state, const StepReport& report) const;
-  bool tryStiffMethod(IntegrationState& state, double tStop, StepReport& report);
-  void reconsiderExplicitMethod(IntegrationState& state, StepReport& report);
-  double stiffStepCost(const IntegrationState& state) const;
-  double explicitStepCost() const;
 
-  TimeIntegrationSettings settings_;
-  RightHandSide rhs_;
-  StageConstraint constraint_;
-  DomainCheck domainCheck_;
-  ButcherTableau tableau_;
-  RosenbrockTableau rosenbrock_;
-  ThesisStepController thesisController_;
-  PiStepController piController_;
-  PiStepController rosenbrockController_;
-  std::shared_ptr<LinearisedSystem> system_;
-  std::vector<double> errorWeights_; // b - bEmbedded
-  // Work arrays, sized on first use.
-  std::vector<std::vector<double>> slopes_; // k_1..k_s
-  std::vector<double> stageState_, newState_, errorVector_;
-  std::vector<double> probe_, probeSlope_;      // stability limit: y + eps v and f there
-  std::vector<std::vector<double>> increments_; // Rosenbrock stage increments u_1..u_s
-  std::vector<double> stageRhs_;                // the right-hand side of a stage solve
-  double stabilityBoundary_ = 0.0;              // r of the tableau that advances
+  MethodTraits traits_;
+  StepContext context_;
+  std::unique_ptr<TimeIntegrationMethod> method_;
 };
 
 } // namespace capsula::timeint

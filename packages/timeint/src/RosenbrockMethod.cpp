@@ -2,9 +2,11 @@
 //   (I - h gamma J~) u_i = h gamma f(t + alpha_i h, y + sum_{j<i} a_ij u_j) + gamma sum_{j<i} c_ij u_j,
 //   y_new = y + sum_i m_i u_i,   e = sum_i (m_i - mEmbedded_i) u_i,
 // J~ frozen at (t_n, y_n) by the LinearisedSystem for every attempt of the step.
-#include "capsula/timeint/TimeIntegrator.hpp"
+#include "RosenbrockMethod.hpp"
 
 #include "StepMessages.hpp"
+
+#include "capsula/timeint/TimeIntegrator.hpp"
 
 #include "capsula/core/Error.hpp"
 #include "capsula/timeint/VectorNorms.hpp"
@@ -13,13 +15,11 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
-namespace capsula::timeint {
+namespace capsula::timeint::detail {
 
 namespace {
-
-using detail::shown;
-using detail::stretchFraction;
 
 // out = y + sum_{j < count} w_j u_j (zero weights skipped).
 void combine(const std::vector<double>& y, const double* w, const std::vector<std::vector<double>>& u, int count,
@@ -38,29 +38,64 @@ void combine(const std::vector<double>& y, const double* w, const std::vector<st
   }
 }
 
+// Gustafsson's PI controller for an error estimate of order k: the exponents 0.7/k and
+// 0.4/k of Hairer & Wanner (Solving ODEs II, IV.8, eq 8.21 with a PI memory), a growth
+// limited to 5x per step as in their stiff codes.
+PiControllerParameters controllerFor(const RosenbrockTableau& t)
+{
+  PiControllerParameters p;
+  const double k = t.errorEstimateOrder();
+  p.alpha = 0.7 / k;
+  p.beta = 0.4 / k;
+  p.maximumFactor = 5.0;
+  return p;
+}
+
 } // namespace
 
-// The stages of one attempt of size h ending at tNew: the increments u_1..u_s and, if every
-// solve converged, newState_. Returns why a solve did not converge ("" if all did); throws
-// StateOutsideDomain for a stage state or result outside the model.
-std::string TimeIntegrator::solveStages(IntegrationState& state, double h, double tNew, int& iterations)
+RosenbrockMethod::RosenbrockMethod(RosenbrockTableau tableau, double relativeTolerance, double linearTolerance)
+    : tableau_(std::move(tableau)),
+      relativeTolerance_(relativeTolerance),
+      linearTolerance_(linearTolerance),
+      controller_(tableau_.errorEstimateOrder(), controllerFor(tableau_))
 {
-  const RosenbrockTableau& R = rosenbrock_;
+  for (int i = 0; i < tableau_.stages; ++i) {
+    const auto ii = static_cast<std::size_t>(i);
+    difference_.push_back(tableau_.m[ii] - tableau_.mEmbedded[ii]);
+  }
+}
+
+std::string RosenbrockMethod::activeMethodName(const IntegrationState&) const
+{
+  return tableau_.name;
+}
+
+std::string RosenbrockMethod::describe(const TimeIntegrationSettings& s) const
+{
+  std::ostringstream line;
+  line << "time integration: " << s.method << " (Rosenbrock-W, order " << tableau_.order << ", L-stable), tolerance "
+       << s.tolerance << "; stage solves to " << linearTolerance_ << " x tolerance";
+  return line.str();
+}
+
+std::string RosenbrockMethod::solveStages(StepContext& context, IntegrationState& state, double h, double tNew,
+                                          int& iterations)
+{
+  const RosenbrockTableau& R = tableau_;
+  LinearisedSystem& system = *context.linearisedSystem();
   const std::size_t n = state.y.size();
   const int s = R.stages;
   IntegrationStatistics& stats = state.statistics;
   const double shift = h * R.gamma;
-  const double residualTarget = settings_.linearTolerance * settings_.tolerance;
+  const double residualTarget = linearTolerance_ * context.settings().tolerance;
   for (int i = 0; i < s; ++i) {
-    const std::vector<double>* slope = &slopes_[0];
+    const std::vector<double>* slope = &slope_;
     if (i > 0) {
       combine(state.y, &R.a[static_cast<std::size_t>(i * s)], increments_, i, stageState_);
-      if (domainCheck_) {
-        domainCheck_(stageState_);
-      }
+      context.checkDomain(stageState_);
       const double ti = state.time + R.stageTime[static_cast<std::size_t>(i)] * h;
-      evaluate(ti, stageState_, probeSlope_, state, h, i);
-      slope = &probeSlope_;
+      context.evaluate(ti, stageState_, stageSlope_, state, h, i, R.name);
+      slope = &stageSlope_;
     }
     for (std::size_t k = 0; k < n; ++k) {
       double coupling = 0.0;
@@ -71,7 +106,7 @@ std::string TimeIntegrator::solveStages(IntegrationState& state, double h, doubl
     }
     std::vector<double>& u = increments_[static_cast<std::size_t>(i)];
     u.assign(n, 0.0);
-    const LinearSolveReport solved = system_->solve(shift, stageRhs_, u, residualTarget);
+    const LinearSolveReport solved = system.solve(shift, stageRhs_, u, residualTarget);
     ++stats.linearSolves;
     stats.linearIterations += solved.iterations;
     stats.largestLinearIterations = std::max<std::int64_t>(stats.largestLinearIterations, solved.iterations);
@@ -85,24 +120,25 @@ std::string TimeIntegrator::solveStages(IntegrationState& state, double h, doubl
     }
   }
   combine(state.y, R.m.data(), increments_, s, newState_);
-  detail::requireFiniteNewState(newState_, tNew, R.name, state.time, h);
-  if (domainCheck_) {
-    domainCheck_(newState_);
-  }
+  requireFiniteNewState(newState_, tNew, R.name, state.time, h);
+  context.checkDomain(newState_);
   return "";
 }
 
-StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, double tStop, double trialStep)
+StepReport RosenbrockMethod::step(StepContext& context, IntegrationState& state, double tStop)
 {
+  return attempt(context, state, tStop, 0.0);
+}
+
+StepReport RosenbrockMethod::attempt(StepContext& context, IntegrationState& state, double tStop, double trialStep)
+{
+  const TimeIntegrationSettings& settings = context.settings();
   const bool trial = trialStep > 0.0;
   const double proposedBefore = state.proposedStep;
-  const RosenbrockTableau& R = rosenbrock_;
+  const RosenbrockTableau& R = tableau_;
   const std::size_t n = state.y.size();
   const int s = R.stages;
   IntegrationStatistics& stats = state.statistics;
-  if (slopes_.empty()) {
-    slopes_.resize(1);
-  }
   increments_.resize(static_cast<std::size_t>(s));
   stageRhs_.resize(n);
   newState_.resize(n);
@@ -110,22 +146,17 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
 
   // f(t_n, y_n) and J~ there serve every attempt of this step.
   const std::int64_t rhsBefore = stats.rhsEvaluations;
-  evaluate(state.time, state.y, slopes_[0], state, state.proposedStep, 0);
-  system_->linearise(state.time, state.y);
+  context.evaluate(state.time, state.y, slope_, state, state.proposedStep, 0, R.name);
+  context.linearisedSystem()->linearise(state.time, state.y);
   ++stats.linearisations;
   state.firstStageDerivative.clear();
 
   StepReport report;
   report.stiff = true;
-  std::vector<double> difference(static_cast<std::size_t>(s));
-  for (int i = 0; i < s; ++i) {
-    difference[static_cast<std::size_t>(i)] =
-        R.m[static_cast<std::size_t>(i)] - R.mEmbedded[static_cast<std::size_t>(i)];
-  }
   for (;;) {
-    const double proposed = trial                ? trialStep
-                            : settings_.adaptive ? std::min(state.proposedStep, settings_.maximumStep)
-                                                 : state.proposedStep;
+    const double proposed = trial               ? trialStep
+                            : settings.adaptive ? std::min(state.proposedStep, settings.maximumStep)
+                                                : state.proposedStep;
     double h = proposed;
     double tNew = state.time + h;
     if (tStop - state.time <= proposed * (1.0 + stretchFraction)) {
@@ -137,7 +168,7 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
     std::string outside, unsolved;
     int iterations = 0;
     try {
-      unsolved = solveStages(state, h, tNew, iterations);
+      unsolved = solveStages(context, state, h, tNew, iterations);
     } catch (const StateOutsideDomain& e) {
       outside = e.what();
     }
@@ -153,7 +184,7 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
     }
     if (!unsolved.empty() || !outside.empty()) {
       core::require<core::NumericalError>(
-          settings_.adaptive, "Time integration failed: ", unsolved.empty() ? outside : unsolved, " in the fixed ",
+          settings.adaptive, "Time integration failed: ", unsolved.empty() ? outside : unsolved, " in the fixed ",
           R.name, " step from t = ", shown(state.time), " (dt = ", shown(h), "). The state at t = ", shown(state.time),
           " is the last accepted one.");
       ++report.rejectedAttempts;
@@ -161,18 +192,18 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
       // A solve that fails is tried again with a quarter of the step (W closer to I); a
       // state outside the model with half of it, as in the explicit steps.
       state.proposedStep = (unsolved.empty() ? 0.5 : 0.25) * h;
-      if (state.proposedStep < settings_.minimumStep) {
+      if (state.proposedStep < settings.minimumStep) {
         if (!unsolved.empty()) {
           throw core::NumericalError(core::message(
               "Time integration failed at t = ", shown(state.time), ": ", unsolved, ", for every step down to ",
-              shown(h), " (below that: 'Time integration/Minimum step' = ", settings_.minimumStep,
+              shown(h), " (below that: 'Time integration/Minimum step' = ", settings.minimumStep,
               "). The state at t = ", shown(state.time),
-              " is the last accepted one. Allow the linear solver more work ", system_->settingsHint(),
-              ", or relax 'Time integration/Linear tolerance'."));
+              " is the last accepted one. Allow the linear solver more work ",
+              context.linearisedSystem()->settingsHint(), ", or relax 'Time integration/Linear tolerance'."));
         }
         throw core::NumericalError(core::message(
             "Time integration failed: ", outside, " at t = ", shown(state.time), " for every step down to ", shown(h),
-            " (below that: 'Time integration/Minimum step' = ", settings_.minimumStep,
+            " (below that: 'Time integration/Minimum step' = ", settings.minimumStep,
             "). The state at t = ", shown(state.time), " is the last accepted one."));
       }
       continue;
@@ -180,11 +211,11 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
 
     StepDecision decision{true, proposed};
     double errorNorm = 0.0;
-    if (settings_.adaptive) {
-      combine(std::vector<double>(n, 0.0), difference.data(), increments_, s, errorVector_);
-      errorNorm = scaledMaxNorm(errorVector_.data(), state.y.data(), newState_.data(), n, settings_.tolerance,
-                                settings_.relativeTolerance);
-      decision = rosenbrockController_.decide(h, errorNorm, state.previousErrorNorm, report.rejectedAttempts > 0);
+    if (settings.adaptive) {
+      combine(std::vector<double>(n, 0.0), difference_.data(), increments_, s, errorVector_);
+      errorNorm = scaledMaxNorm(errorVector_.data(), state.y.data(), newState_.data(), n, settings.tolerance,
+                                relativeTolerance_);
+      decision = controller_.decide(h, errorNorm, state.previousErrorNorm, report.rejectedAttempts > 0);
     }
     if (!decision.accepted && trial) {
       ++stats.rejectedSteps;
@@ -197,47 +228,28 @@ StepReport TimeIntegrator::attemptLinearlyImplicit(IntegrationState& state, doub
       ++report.rejectedAttempts;
       ++stats.rejectedSteps;
       state.proposedStep = decision.nextStep;
-      if (state.proposedStep < settings_.minimumStep) {
+      if (state.proposedStep < settings.minimumStep) {
         throw core::NumericalError(core::message(
             "Time integration failed: the step size collapsed to ", shown(state.proposedStep),
-            " (below Time integration/Minimum step = ", settings_.minimumStep, ") at t = ", shown(state.time),
-            " after ", report.rejectedAttempts, " rejected attempts (last error estimate ", errorNorm, ", ", R.name,
-            " tolerance ", settings_.tolerance, "). The state at t = ", shown(state.time),
-            " is the last accepted one."));
+            " (below Time integration/Minimum step = ", settings.minimumStep, ") at t = ", shown(state.time), " after ",
+            report.rejectedAttempts, " rejected attempts (last error estimate ", errorNorm, ", ", R.name, " tolerance ",
+            settings.tolerance, "). The state at t = ", shown(state.time), " is the last accepted one."));
       }
       continue;
     }
 
-    report.stepSize = h;
-    report.errorNorm = errorNorm;
     report.linearIterations = iterations;
-    if (settings_.steadyCriterion != SteadyStateCriterion::Off) {
-      report.steadyMeasure = steadyStateMeasure(settings_.steadyCriterion, state.y.data(), newState_.data(), n, h);
-      report.steady = report.steadyMeasure < settings_.steadyTolerance;
-    }
-    ++stats.acceptedSteps;
+    context.recordAcceptedStep(state, report, h, tNew, errorNorm, newState_);
     ++stats.stiffSteps;
     stats.stiffRhsEvaluations += stats.rhsEvaluations - rhsBefore;
     if (state.stepsSinceStabilityEstimate < std::numeric_limits<std::int64_t>::max()) {
       ++state.stepsSinceStabilityEstimate; // Auto re-estimates the explicit limit now and then
     }
-    stats.smallestStep = std::min(stats.smallestStep, h);
-    stats.largestStep = std::max(stats.largestStep, h);
-    stats.lastStep = h;
-    stats.lastErrorNorm = errorNorm;
-    state.y.swap(newState_);
-    state.time = tNew;
-    state.steady = report.steady;
-    if (!report.shortened) {
-      state.proposedStep = settings_.adaptive ? std::min(decision.nextStep, settings_.maximumStep) : decision.nextStep;
-      if (settings_.adaptive) {
-        state.previousErrorNorm = rosenbrockController_.rememberedError(errorNorm);
-      }
-    } else {
-      state.proposedStep = proposed;
+    if (context.proposeNextStep(state, report, proposed, decision.nextStep)) {
+      state.previousErrorNorm = controller_.rememberedError(errorNorm);
     }
     return report;
   }
 }
 
-} // namespace capsula::timeint
+} // namespace capsula::timeint::detail
