@@ -22,6 +22,15 @@ void declareStageSolverParameters(Teuchos::ParameterList& stiff, int unknownsPer
               "docs/stiff-integration.md).";
   core::declareInt(stiff, "Restart", defaults.restart, restart.str(), 1, 1000);
   core::declareInt(stiff, "Recycled products", defaults.recycledProducts, recycled.str(), 0, 1000);
+  core::declareReal(stiff, "Largest error factor", defaults.largestErrorFactor,
+                    "Holds each stage solve's error in the step controller's norm: its largest coordinate at "
+                    "most this factor times the solve's RMS residual target ('Time integration/Linear tolerance' "
+                    "x 'Time integration/Tolerance'), estimated by a correction solve to a tenth of the residual "
+                    "(which the solution then takes); a solve that needs more than four corrections counts as "
+                    "failed and the step is retried smaller. 0: the RMS residual alone, which cannot see an error "
+                    "concentrated on a few coordinates where the stage matrix is nearly singular "
+                    "(docs/stiff-integration.md).",
+                    core::atLeast(0.0));
 }
 
 StageSolverSettings readStageSolverSettings(const Teuchos::ParameterList& stiff)
@@ -30,6 +39,7 @@ StageSolverSettings readStageSolverSettings(const Teuchos::ParameterList& stiff)
   s.maximumIterations = stiff.get<int>("Maximum iterations");
   s.restart = stiff.get<int>("Restart");
   s.recycledProducts = stiff.get<int>("Recycled products");
+  s.largestErrorFactor = stiff.get<double>("Largest error factor");
   return s;
 }
 
@@ -40,6 +50,9 @@ std::string describe(const StageSolverSettings& settings)
   if (settings.recycledProducts > 0) {
     line << ", from up to " << settings.recycledProducts << " kept products of the step's Jacobian";
   }
+  if (settings.largestErrorFactor > 0.0) {
+    line << ", error checked: largest coordinate <= " << settings.largestErrorFactor << " x the RMS target";
+  }
   line << ")";
   return line.str();
 }
@@ -49,6 +62,9 @@ std::string settingsHint(const StageSolverSettings& settings)
   std::ostringstream hint;
   hint << "raise 'Solver/Stiff/Maximum iterations' = " << settings.maximumIterations
        << " or 'Solver/Stiff/Restart' = " << settings.restart;
+  if (settings.largestErrorFactor > 0.0) {
+    hint << ", or 'Solver/Stiff/Largest error factor' = " << settings.largestErrorFactor;
+  }
   return hint.str();
 }
 

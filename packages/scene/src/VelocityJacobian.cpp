@@ -70,6 +70,7 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   solver_ = std::make_unique<operators::StageSolver>(
       map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_,
       static_cast<std::size_t>(settings_.stage.recycledProducts));
+  solver_->boundLargestError(settings_.stage.largestErrorFactor);
   for (int c = 0; c < scene.numCells(); ++c) {
     mass_.push_back(std::make_unique<mesh::SurfaceMassMatrix>(scene.cell(c)));
   }

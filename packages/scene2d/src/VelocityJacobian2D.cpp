@@ -63,6 +63,7 @@ VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP
   solver_ = std::make_unique<operators::StageSolver>(
       map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_,
       static_cast<std::size_t>(settings_.stage.recycledProducts));
+  solver_->boundLargestError(settings_.stage.largestErrorFactor);
 }
 
 void VelocityJacobian2D::linearise(double t, const std::vector<double>& y)

@@ -6,6 +6,7 @@
 //   <Parameter name="Maximum iterations" type="int" value="200"/>
 //   <Parameter name="Restart" type="int" value="60"/>
 //   <Parameter name="Recycled products" type="int" value="0"/>
+//   <Parameter name="Largest error factor" type="double" value="2"/>
 #include <Teuchos_ParameterList.hpp>
 
 #include <string>
@@ -16,9 +17,12 @@ struct StageSolverSettings {
   int maximumIterations = 200; ///< GMRES iterations of one stage solve before it counts as failed
   int restart = 60;            ///< Krylov vectors kept (Belos "Num Blocks")
   int recycledProducts = 0;    ///< products of J~ a step keeps (JacobianProducts.hpp)
+  /// A solve's error, largest coordinate, at most this times its RMS residual target
+  /// (StageSolver::boundLargestError; 0: not checked).
+  double largestErrorFactor = 2.0;
 };
 
-/// Declares the three keys in `stiff`; `unknownsPerNode` (3 in 3D, 2 in 2D) sizes the memory
+/// Declares the four keys in `stiff`; `unknownsPerNode` (3 in 3D, 2 in 2D) sizes the memory
 /// their doc strings state.
 void declareStageSolverParameters(Teuchos::ParameterList& stiff, int unknownsPerNode);
 
