@@ -19,7 +19,7 @@ void requireRegistered(const std::string& kind, const std::string& name, const s
   }
   const auto closest = closestMatch(name, registered);
   throw InputError(message("There is no ", kind, " named '", name, "'; registered: ", known.str(), ".",
-                                       closest ? " Did you mean '" + *closest + "'?" : ""));
+                           closest ? " Did you mean '" + *closest + "'?" : ""));
 }
 
 } // namespace capsula::core

@@ -114,7 +114,7 @@ void StageSolver::checkLargestError(double shift, const std::vector<double>& r, 
   for (int round = 0; round <= kMaximumCorrections; ++round) {
     std::copy(x.begin(), x.end(), current->getDataNonConst(0).getRawPtr());
     stage_->apply(*current, *residual);
-    residual->update(1.0, *rhs, -1.0); // r - W x
+    residual->update(1.0, *rhs, -1.0);    // r - W x
     if (largestEntry(*residual) == 0.0) { // x solves W x = r exactly
       result.largestError = 0.0;
       result.converged = true;

@@ -29,11 +29,11 @@ namespace capsula::operators {
 /// How one solve went.
 struct StageSolveResult {
   bool converged = false;
-  int iterations = 0;       ///< GMRES iterations
-  bool recycled = false;    ///< started from the kept products of J~
+  int iterations = 0;        ///< GMRES iterations
+  bool recycled = false;     ///< started from the kept products of J~
   int errorChecks = 0;       ///< correction solves of boundLargestError's check
   double largestError = 0.0; ///< the last error estimate's largest coordinate (0 without a check)
-  double residualRms = 0.0; ///< achieved ||r - W x||_2 / sqrt(n)
+  double residualRms = 0.0;  ///< achieved ||r - W x||_2 / sqrt(n)
 };
 
 class StageSolver {
