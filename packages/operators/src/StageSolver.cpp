@@ -40,7 +40,7 @@ StageSolveResult StageSolver::solve(double shift, const std::vector<double>& r, 
     x.assign(n, 0.0);
     result.converged = true;
     result.residualRms = norm / rootN;
-    checkLargestError(shift, r, x, residualRms, result);
+    checkLargestError(r, x, residualRms, result);
     return result;
   }
   const bool zeroGuess = std::all_of(x.begin(), x.end(), [](double v) { return v == 0.0; });
@@ -55,7 +55,7 @@ StageSolveResult StageSolver::solve(double shift, const std::vector<double>& r, 
       x = guess;
       result.converged = true;
       result.residualRms = initial / rootN;
-      checkLargestError(shift, r, x, residualRms, result);
+      checkLargestError(r, x, residualRms, result);
       return result;
     }
     rhs = &residual_;
@@ -77,13 +77,13 @@ StageSolveResult StageSolver::solve(double shift, const std::vector<double>& r, 
   result.iterations = gmres.iterations;
   result.residualRms = gmres.residual * initial / rootN;
   if (result.converged) {
-    checkLargestError(shift, r, x, residualRms, result);
+    checkLargestError(r, x, residualRms, result);
   }
   return result;
 }
 
-void StageSolver::checkLargestError(double shift, const std::vector<double>& r, std::vector<double>& x,
-                                    double residualRms, StageSolveResult& result)
+void StageSolver::checkLargestError(const std::vector<double>& r, std::vector<double>& x, double residualRms,
+                                    StageSolveResult& result)
 {
   if (largestErrorFactor_ <= 0.0) {
     return;

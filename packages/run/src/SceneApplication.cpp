@@ -1,6 +1,7 @@
 #include "capsula/run/SceneApplication.hpp"
 
 #include "capsula/run/OperatorLibraries.hpp"
+#include "capsula/run/SceneLibraries.hpp"
 #include "capsula/run/SceneRunDeck.hpp"
 #include "capsula/run/SceneRun.hpp"
 
@@ -10,10 +11,16 @@ namespace capsula::run {
 
 int runSceneApplication(int argc, char** argv, const core::AppDescription& app, int cellsWhenNoneGiven)
 {
-  return runSceneApplication(argc, argv, app, standardOperatorLibraries(), cellsWhenNoneGiven);
+  return runSceneApplication(argc, argv, app, standardSceneLibraries(), cellsWhenNoneGiven);
 }
 
 int runSceneApplication(int argc, char** argv, const core::AppDescription& app, const OperatorLibraries& libraries,
+                        int cellsWhenNoneGiven)
+{
+  return runSceneApplication(argc, argv, app, sceneLibrariesWith(libraries), cellsWhenNoneGiven);
+}
+
+int runSceneApplication(int argc, char** argv, const core::AppDescription& app, const SceneLibraries& libraries,
                         int cellsWhenNoneGiven)
 {
   const std::string name = app.name;
@@ -24,7 +31,8 @@ int runSceneApplication(int argc, char** argv, const core::AppDescription& app, 
     options.outputDirectory = context.options.outputDirectory;
     options.restartDirectory = context.options.restartDirectory;
     options.log = context.out;
-    runScene(*context.deck, context.comm, options, kernelsForDeck(libraries, *context.deck));
+    runScene(*context.deck, context.comm, options, kernelsForDeck(libraries.operators, *context.deck),
+             libraries.membraneLaws, libraries.timeMethods);
   };
   return core::runApplication(
       argc, argv, app,

@@ -52,13 +52,13 @@ std::string outputDirectory(const SceneRunOptions& options, const SceneOutputSet
 // membrane tank-treads.
 // With a periodic shear rate, a step (the first one too) is at most a twentieth of its period.
 timeint::TimeIntegrationSettings integrationSettings(const Teuchos::ParameterList& deck,
-                                                     const scene::SceneDescription& description)
+                                                     const scene::SceneDescription& description,
+                                                     const timeint::MethodRegistry& methods)
 {
-  auto settings = timeint::timeIntegrationSettings(deck.sublist("Time integration"));
+  auto settings = timeint::timeIntegrationSettings(deck.sublist("Time integration"), methods);
   // Auto judges stiffness by the stability limit: the deck's false (the 3D apps' default is
   // true) would be overridden.
-  core::require<core::InputError>(settings.stabilityLimit ||
-                                      !timeint::builtInMethods().info(settings.method).traits.stabilityLimit,
+  core::require<core::InputError>(settings.stabilityLimit || !methods.info(settings.method).traits.stabilityLimit,
                                   "'Time integration/Stability limit' = false cannot hold with 'Time "
                                   "integration/Method' = ",
                                   settings.method,
@@ -85,7 +85,8 @@ SceneOutputSettings outputSettings(const Teuchos::ParameterList& deck, const sce
 class SceneRunner final : public timeint::IntegrationObserver, public RunModel {
 public:
   SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
-              const SceneRunOptions& options, const operators::KernelRegistry& kernels);
+              const SceneRunOptions& options, const operators::KernelRegistry& kernels,
+              const elasticity::MembraneLawRegistry& laws, const timeint::MethodRegistry& methods);
 
   SceneRunResult execute();
 
@@ -135,18 +136,21 @@ private:
 };
 
 SceneRunner::SceneRunner(const Teuchos::ParameterList& deck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
-                         const SceneRunOptions& options, const operators::KernelRegistry& kernels)
+                         const SceneRunOptions& options, const operators::KernelRegistry& kernels,
+                         const elasticity::MembraneLawRegistry& laws, const timeint::MethodRegistry& methods)
     : deck_(deck),
       options_(options),
       kernels_(kernels),
       log_(options.log && comm->getRank() == 0 ? options.log : &quiet_),
-      description_(scene::describeScene(deck)),
+      description_(scene::describeScene(deck, laws)),
       settings_(outputSettings(deck, description_)),
       // The scene is looked up at every call: a mesh adaption replaces it during the run.
-      integrator_(integrationSettings(deck, description_),
-                  [this](double t, const std::vector<double>& y, std::vector<double>& dydt) {
-                    live_.scene().velocity(t, y, dydt);
-                  }),
+      integrator_(
+          integrationSettings(deck, description_, methods),
+          [this](double t, const std::vector<double>& y, std::vector<double>& dydt) {
+            live_.scene().velocity(t, y, dydt);
+          },
+          methods),
       backbone_(
           {options.application, options.deckSource, outputDirectory(options, settings_), options.restartDirectory},
           deck, comm, *this, integrator_, state_, log_),
@@ -373,9 +377,10 @@ void SceneRunner::report(const std::string& status)
 } // namespace
 
 SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
-                        const SceneRunOptions& options, const operators::KernelRegistry& kernels)
+                        const SceneRunOptions& options, const operators::KernelRegistry& kernels,
+                        const elasticity::MembraneLawRegistry& laws, const timeint::MethodRegistry& methods)
 {
-  SceneRunner run(validatedDeck, comm, options, kernels);
+  SceneRunner run(validatedDeck, comm, options, kernels, laws, methods);
   return run.execute();
 }
 

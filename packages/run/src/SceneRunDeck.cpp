@@ -13,7 +13,7 @@ namespace capsula::run {
 Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos::ParameterList& deck,
                                                                    const std::string& appName, int cellsWhenNoneGiven)
 {
-  return validSceneRunParameters(deck, appName, standardOperatorLibraries(), cellsWhenNoneGiven);
+  return validSceneRunParameters(deck, appName, standardSceneLibraries(), cellsWhenNoneGiven);
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos::ParameterList& deck,
@@ -21,13 +21,21 @@ Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos
                                                                    const OperatorLibraries& libraries,
                                                                    int cellsWhenNoneGiven)
 {
+  return validSceneRunParameters(deck, appName, sceneLibrariesWith(libraries), cellsWhenNoneGiven);
+}
+
+Teuchos::RCP<const Teuchos::ParameterList> validSceneRunParameters(const Teuchos::ParameterList& deck,
+                                                                   const std::string& appName,
+                                                                   const SceneLibraries& libraries,
+                                                                   int cellsWhenNoneGiven)
+{
   auto valid = Teuchos::rcp(new Teuchos::ParameterList(appName));
-  scene::declareSceneParameters(*valid, deck, cellsWhenNoneGiven);
+  scene::declareSceneParameters(*valid, deck, cellsWhenNoneGiven, libraries.membraneLaws);
   timeint::declareTimeIntegrationParameters(
       core::declareSublist(*valid, "Time integration", "Time stepping (Section 3.10; docs/stiff-integration.md)."),
-      /*stabilityLimitDefault=*/true);
+      /*stabilityLimitDefault=*/true, libraries.timeMethods);
   operators::declareOperatorParameters(*valid);
-  declareOperatorLibraryParameters(*valid, libraries);
+  declareOperatorLibraryParameters(*valid, libraries.operators);
   scene::declareStiffSolverParameters(core::declareSublist(
       valid->sublist("Solver"), "Stiff",
       "The linear solves of the stiff time integrators (Time integration/Method ROS34PW2, ROS2, Auto)."));

@@ -80,7 +80,7 @@ private:
   double largestErrorFactor_ = 0.0;
 
   /// The correction rounds of boundLargestError on a converged x.
-  void checkLargestError(double shift, const std::vector<double>& r, std::vector<double>& x, double residualRms,
+  void checkLargestError(const std::vector<double>& r, std::vector<double>& x, double residualRms,
                          StageSolveResult& result);
 };
 

@@ -2,10 +2,11 @@
 // The command-line program around a scene run, shared by the apps that differ only in
 // their name, description and examples (cell3d, twocell3d): parse the command line, read
 // and validate the deck against validSceneRunParameters, run it (runScene) with the
-// standard operator libraries, report errors (core::runApplication). A program with
-// kernels or summation back-ends of its own passes its OperatorLibraries.
+// standard libraries, report errors (core::runApplication). A program with kernels,
+// summation back-ends, membrane laws or time methods of its own passes its SceneLibraries.
 #include <capsula/core/Application.hpp>
 #include <capsula/run/OperatorLibraries.hpp>
+#include <capsula/run/SceneLibraries.hpp>
 
 namespace capsula::run {
 
@@ -13,8 +14,12 @@ namespace capsula::run {
 /// `cellsWhenNoneGiven`: the cells of a deck that has none, as --print-defaults shows them.
 int runSceneApplication(int argc, char** argv, const core::AppDescription& app, int cellsWhenNoneGiven = 1);
 
-/// The same with the kernels and summation back-ends of `libraries` (instead of
-/// standardOperatorLibraries()) in the deck and the run.
+/// The same with the kernels, summation back-ends, membrane laws and time methods of
+/// `libraries` (instead of standardSceneLibraries()) in the deck and the run.
+int runSceneApplication(int argc, char** argv, const core::AppDescription& app, const SceneLibraries& libraries,
+                        int cellsWhenNoneGiven = 1);
+
+/// The same with the operator libraries `libraries` and the built-in laws and methods.
 int runSceneApplication(int argc, char** argv, const core::AppDescription& app, const OperatorLibraries& libraries,
                         int cellsWhenNoneGiven = 1);
 

@@ -48,7 +48,9 @@
 // checkpoint and outputs stay.
 #include "capsula/run/MetricsTable.hpp" // metricsColumns(): the layout of metrics.csv
 
+#include <capsula/elasticity/MembraneLawRegistry.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
+#include <capsula/timeint/MethodRegistry.hpp>
 
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
@@ -77,8 +79,12 @@ struct SceneRunResult {
   std::vector<std::string> terms; ///< physics and output terms built
 };
 
-/// Runs the scene `validatedDeck` describes. Collective over `comm`.
+/// Runs the scene `validatedDeck` describes, with the Green's functions of `kernels`, the
+/// membrane laws of `laws` and the time-integration methods of `methods` (the registries the
+/// deck was declared from). Collective over `comm`.
 SceneRunResult runScene(const Teuchos::ParameterList& validatedDeck, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
-                        const SceneRunOptions& options, const operators::KernelRegistry& kernels);
+                        const SceneRunOptions& options, const operators::KernelRegistry& kernels,
+                        const elasticity::MembraneLawRegistry& laws = elasticity::builtInMembraneLaws(),
+                        const timeint::MethodRegistry& methods = timeint::builtInMethods());
 
 } // namespace capsula::run
