@@ -12,6 +12,7 @@
 #include <complex>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 
 namespace capsula::ewald {
 
@@ -56,6 +57,18 @@ std::vector<std::complex<double>> farWallSpectrum(const std::vector<double>& onG
   return spectrum;
 }
 
+/// e^{i j theta} for j = 0..count-1 (by products: the phase tables of one target).
+void fillPhases(double theta, int count, std::vector<std::complex<double>>& phases)
+{
+  phases.resize(static_cast<std::size_t>(count));
+  const std::complex<double> step = std::polar(1.0, theta);
+  std::complex<double> p = 1.0;
+  for (int j = 0; j < count; ++j) {
+    phases[j] = p;
+    p *= step;
+  }
+}
+
 /// u_t += the slab flows cancelling the far wall's modes |k| <= k_c (SlabWallFlow.hpp),
 /// the pair +-k as 2 Re, and the mode k = 0 as V y / H.
 void addFarWallCorrection(const PeriodicLayer& layer, double height, double kc,
@@ -66,6 +79,7 @@ void addFarWallCorrection(const PeriodicLayer& layer, double height, double kc,
   const int mMax = static_cast<int>(std::floor(kc * layer.lengthX / (2.0 * channelFastPi)));
   const int nMax = static_cast<int>(std::floor(kc * layer.lengthZ / (2.0 * channelFastPi)));
   std::vector<SlabWallFlow> flows;
+  std::vector<std::pair<int, int>> indices;
   for (int n = 0; n <= nMax; ++n) {
     for (int m = -mMax; m <= mMax; ++m) {
       const double kx = 2.0 * channelFastPi * m / layer.lengthX;
@@ -76,20 +90,33 @@ void addFarWallCorrection(const PeriodicLayer& layer, double height, double kc,
       const std::complex<double>* coefficient = &spectrum[3 * (static_cast<std::size_t>((m + Mx) % Mx) * half + n)];
       const std::complex<double> cancel[3] = {-coefficient[0], -coefficient[1], -coefficient[2]};
       flows.emplace_back(kx, kz, height, cancel);
+      indices.emplace_back(m, n);
     }
   }
   const double meanX = -spectrum[0].real(), meanZ = -spectrum[2].real();
+  std::vector<std::complex<double>> phaseX, phaseZ;
   for (std::size_t t = 0; t < targets.size(); t += 3) {
     const double* x = &targets[t];
     u[t] += meanX * x[1] / height;
     u[t + 2] += meanZ * x[1] / height;
-    for (const SlabWallFlow& flow : flows) {
+    // e^{i kx x} for m = -mMax..mMax (stored from index 0) and e^{i kz z} for n = 0..nMax.
+    fillPhases(2.0 * channelFastPi * x[0] / layer.lengthX, 2 * mMax + 1, phaseX);
+    const std::complex<double> first = std::polar(1.0, -2.0 * channelFastPi * mMax * x[0] / layer.lengthX);
+    for (auto& p : phaseX) {
+      p *= first;
+    }
+    fillPhases(2.0 * channelFastPi * x[2] / layer.lengthZ, nMax + 1, phaseZ);
+    double sum[3] = {0.0, 0.0, 0.0};
+    for (std::size_t k = 0; k < flows.size(); ++k) {
       std::complex<double> v[3];
-      flow.velocity(x[1], v);
-      const std::complex<double> phase = std::polar(2.0, flow.kx() * x[0] + flow.kz() * x[2]);
+      flows[k].velocity(x[1], v);
+      const std::complex<double> phase = phaseX[indices[k].first + mMax] * phaseZ[indices[k].second];
       for (int i = 0; i < 3; ++i) {
-        u[t + i] += (v[i] * phase).real();
+        sum[i] += (v[i] * phase).real();
       }
+    }
+    for (int i = 0; i < 3; ++i) {
+      u[t + i] += 2.0 * sum[i];
     }
   }
 }
