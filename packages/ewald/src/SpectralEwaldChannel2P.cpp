@@ -2,6 +2,8 @@
 // in the reflected frame, each corrected on its far wall by the slab flows of SlabWallFlow.hpp.
 #include "capsula/ewald/SpectralEwaldChannel2P.hpp"
 
+#include "SlabFlowGather.hpp"
+
 #include "capsula/ewald/SlabWallFlow.hpp"
 #include "capsula/ewald/SpectralEwaldWall2P.hpp"
 
@@ -12,7 +14,6 @@
 #include <complex>
 #include <memory>
 #include <stdexcept>
-#include <utility>
 
 namespace capsula::ewald {
 
@@ -57,29 +58,16 @@ std::vector<std::complex<double>> farWallSpectrum(const std::vector<double>& onG
   return spectrum;
 }
 
-/// e^{i j theta} for j = 0..count-1 (by products: the phase tables of one target).
-void fillPhases(double theta, int count, std::vector<std::complex<double>>& phases)
-{
-  phases.resize(static_cast<std::size_t>(count));
-  const std::complex<double> step = std::polar(1.0, theta);
-  std::complex<double> p = 1.0;
-  for (int j = 0; j < count; ++j) {
-    phases[j] = p;
-    p *= step;
-  }
-}
-
-/// u_t += the slab flows cancelling the far wall's modes |k| <= k_c (SlabWallFlow.hpp),
-/// the pair +-k as 2 Re, and the mode k = 0 as V y / H.
-void addFarWallCorrection(const PeriodicLayer& layer, double height, double kc,
+/// u_t += the slab flows cancelling the far wall's modes |k| <= k_c (SlabWallFlow.hpp;
+/// gathered by SlabFlowGather.hpp), and the mode k = 0 as V y / H.
+void addFarWallCorrection(const PeriodicLayer& layer, double height, double kc, double tolerance,
                           const std::vector<std::complex<double>>& spectrum, int Mx, int Mz,
                           const std::vector<double>& targets, std::vector<double>& u)
 {
   const int half = Mz / 2 + 1;
   const int mMax = static_cast<int>(std::floor(kc * layer.lengthX / (2.0 * channelFastPi)));
   const int nMax = static_cast<int>(std::floor(kc * layer.lengthZ / (2.0 * channelFastPi)));
-  std::vector<SlabWallFlow> flows;
-  std::vector<std::pair<int, int>> indices;
+  std::vector<SlabMode> modes;
   for (int n = 0; n <= nMax; ++n) {
     for (int m = -mMax; m <= mMax; ++m) {
       const double kx = 2.0 * channelFastPi * m / layer.lengthX;
@@ -89,36 +77,15 @@ void addFarWallCorrection(const PeriodicLayer& layer, double height, double kc,
       }
       const std::complex<double>* coefficient = &spectrum[3 * (static_cast<std::size_t>((m + Mx) % Mx) * half + n)];
       const std::complex<double> cancel[3] = {-coefficient[0], -coefficient[1], -coefficient[2]};
-      flows.emplace_back(kx, kz, height, cancel);
-      indices.emplace_back(m, n);
+      modes.push_back(SlabMode{m, n, SlabWallFlow(kx, kz, height, cancel)});
     }
   }
   const double meanX = -spectrum[0].real(), meanZ = -spectrum[2].real();
-  std::vector<std::complex<double>> phaseX, phaseZ;
   for (std::size_t t = 0; t < targets.size(); t += 3) {
-    const double* x = &targets[t];
-    u[t] += meanX * x[1] / height;
-    u[t + 2] += meanZ * x[1] / height;
-    // e^{i kx x} for m = -mMax..mMax (stored from index 0) and e^{i kz z} for n = 0..nMax.
-    fillPhases(2.0 * channelFastPi * x[0] / layer.lengthX, 2 * mMax + 1, phaseX);
-    const std::complex<double> first = std::polar(1.0, -2.0 * channelFastPi * mMax * x[0] / layer.lengthX);
-    for (auto& p : phaseX) {
-      p *= first;
-    }
-    fillPhases(2.0 * channelFastPi * x[2] / layer.lengthZ, nMax + 1, phaseZ);
-    double sum[3] = {0.0, 0.0, 0.0};
-    for (std::size_t k = 0; k < flows.size(); ++k) {
-      std::complex<double> v[3];
-      flows[k].velocity(x[1], v);
-      const std::complex<double> phase = phaseX[indices[k].first + mMax] * phaseZ[indices[k].second];
-      for (int i = 0; i < 3; ++i) {
-        sum[i] += (v[i] * phase).real();
-      }
-    }
-    for (int i = 0; i < 3; ++i) {
-      u[t + i] += 2.0 * sum[i];
-    }
+    u[t] += meanX * targets[t + 1] / height;
+    u[t + 2] += meanZ * targets[t + 1] / height;
   }
+  addSlabFlows(layer, height, kc, tolerance, modes, targets, u);
 }
 
 /// One group's flow in its own frame (its wall y = 0, the far wall y = H): the lower wall's
@@ -149,7 +116,7 @@ std::vector<double> groupFlow(const PeriodicLayer& layer, double height, double 
   std::vector<double> u = spectralEwaldWall2P(layer, tolerance, sources, forces, points);
   const std::vector<double> onGrid(u.begin() + static_cast<std::ptrdiff_t>(targets.size()), u.end());
   u.resize(targets.size());
-  addFarWallCorrection(layer, height, kc, farWallSpectrum(onGrid, Mx, Mz), Mx, Mz, targets, u);
+  addFarWallCorrection(layer, height, kc, tolerance, farWallSpectrum(onGrid, Mx, Mz), Mx, Mz, targets, u);
   return u;
 }
 
