@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <vector>
 
 namespace spectral_ewald_channel_2p_test {
@@ -189,6 +190,40 @@ TEST(SpectralEwaldChannel2P, TendsToTheLowerWallsFastSumAsTheChannelWidens)
   }
   const auto u = spectralEwaldChannel2P(channelBox, H, tolerance, sources, forces, targets);
   EXPECT_LT(relativeError(u, expected), 2.0 * tolerance);
+}
+
+TEST(SpectralEwaldChannel2P, PeriodicInXAndZ)
+{
+  // Targets moved by lattice vectors land on the same grid nodes (indices wrapped) with the
+  // same window weights up to the rounding of x / h: the flows agree to 1e-12 of the largest.
+  const auto sources = randomPoints(channelBox, 30, 81, 0.05, channelHeight - 0.05);
+  const auto forces = randomForces(30, 82);
+  const auto targets = randomPoints(channelBox, 30, 83, 0.0, channelHeight);
+  auto moved = targets;
+  for (std::size_t t = 0; t < moved.size(); t += 3) {
+    moved[t] += 3.0 * channelBox.lengthX;
+    moved[t + 2] -= 2.0 * channelBox.lengthZ;
+  }
+  const auto u = spectralEwaldChannel2P(channelBox, channelHeight, 1e-6, sources, forces, targets);
+  const auto v = spectralEwaldChannel2P(channelBox, channelHeight, 1e-6, sources, forces, moved);
+  EXPECT_LT(relativeError(v, u), 1e-12);
+}
+
+TEST(SpectralEwaldChannel2P, RefusesPointsOutsideTheChannel)
+{
+  // Sources on or beyond a wall, and targets outside [0, H], have no channel flow.
+  const std::vector<double> inside{0.5, 0.6, 0.5}, force{1.0, 0.0, 0.0};
+  for (double h : {0.0, channelHeight, -0.1, 1.3}) {
+    const std::vector<double> source{0.5, h, 0.5};
+    EXPECT_THROW(spectralEwaldChannel2P(channelBox, channelHeight, 1e-6, source, force, inside), std::invalid_argument)
+        << "source height " << h;
+  }
+  for (double y : {-1e-9, channelHeight + 1e-9}) {
+    const std::vector<double> target{0.5, y, 0.5};
+    EXPECT_THROW(spectralEwaldChannel2P(channelBox, channelHeight, 1e-6, inside, force, target), std::invalid_argument)
+        << "target height " << y;
+  }
+  EXPECT_THROW(spectralEwaldChannel2P(channelBox, 0.0, 1e-6, inside, force, inside), std::invalid_argument);
 }
 
 } // namespace spectral_ewald_channel_2p_test
