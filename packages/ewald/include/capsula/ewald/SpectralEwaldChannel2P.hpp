@@ -3,7 +3,8 @@
 // 0 < y < H: for sources x_n with heights 0 < h_n < H, forces g_n and targets with
 // 0 <= y_t <= H,
 //   u_t = sum_n G^C(x_t, x_n) g_n        (G units: the velocity is u_t / (8 pi mu)),
-// zero mode included, to the tolerance relative to the largest velocity.
+// zero mode included, to the tolerance relative to the largest velocity. A target on a source
+// takes lim (G^C - G_free) g_n from that source (SpectralEwaldWall2P.hpp's convention).
 //
 // The sources split into the lower group (h_n <= H/2) and the upper group (h_n > H/2). The
 // lower group's flow is the lower wall's fast sum (SpectralEwaldWall2P.hpp), which has no slip
