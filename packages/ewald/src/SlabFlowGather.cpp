@@ -1,7 +1,7 @@
 // The gathered sum of the channel's slab flows (SlabFlowGather.hpp).
 #include "SlabFlowGather.hpp"
 
-#include "FastFftSize.hpp"
+#include "FftwGrids.hpp"
 
 #include <fftw3.h>
 
@@ -15,10 +15,6 @@ namespace capsula::ewald {
 namespace {
 
 constexpr double gatherPi = 3.14159265358979323846;
-
-struct GatherFftwFree {
-  void operator()(void* p) const { fftw_free(p); }
-};
 
 /// Ny: the first n with I_n(z) e^{-z} < tol / 100, plus 2 (header comment), at least 4.
 int chebyshevLevels(double z, double tolerance)
@@ -110,9 +106,8 @@ void addSlabFlows(const PeriodicLayer& layer, double height, double kc, double t
   // P^2 contiguous blocks.
   const std::size_t values = 3 * static_cast<std::size_t>(Ny);
   std::vector<double> grids(values * plane);
-  std::unique_ptr<fftw_complex[], GatherFftwFree> spectrum(
-      static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * Gx * half)));
-  std::unique_ptr<double[], GatherFftwFree> real(static_cast<double*>(fftw_malloc(sizeof(double) * plane)));
+  const detail::ComplexGrid spectrum = detail::makeComplexGrid(static_cast<std::size_t>(Gx) * half);
+  const detail::RealGrid real = detail::makeRealGrid(plane, false);
   fftw_plan plan = fftw_plan_dft_c2r_2d(Gx, Gz, spectrum.get(), real.get(), FFTW_ESTIMATE);
   std::vector<double> deconvolution(modes.size());
   for (std::size_t k = 0; k < modes.size(); ++k) {

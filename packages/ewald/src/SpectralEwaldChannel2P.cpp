@@ -2,6 +2,7 @@
 // in the reflected frame, each corrected on its far wall by the slab flows of SlabWallFlow.hpp.
 #include "capsula/ewald/SpectralEwaldChannel2P.hpp"
 
+#include "FftwGrids.hpp"
 #include "SlabFlowGather.hpp"
 
 #include "capsula/ewald/SlabWallFlow.hpp"
@@ -21,10 +22,6 @@ namespace {
 
 constexpr double channelFastPi = 3.14159265358979323846;
 
-struct FftwFree {
-  void operator()(void* p) const { fftw_free(p); }
-};
-
 /// k_c with e^{-k_c d} (1 + k_c d)^2 = tol: the far-wall modes beyond it are below tol.
 double farWallCutoff(double gap, double tolerance)
 {
@@ -41,9 +38,8 @@ std::vector<std::complex<double>> farWallSpectrum(const std::vector<double>& onG
 {
   const int half = Mz / 2 + 1;
   std::vector<std::complex<double>> spectrum(3 * static_cast<std::size_t>(Mx) * half);
-  std::unique_ptr<double[], FftwFree> real(static_cast<double*>(fftw_malloc(sizeof(double) * Mx * Mz)));
-  std::unique_ptr<fftw_complex[], FftwFree> modes(
-      static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * Mx * half)));
+  const detail::RealGrid real = detail::makeRealGrid(static_cast<std::size_t>(Mx) * Mz, false);
+  const detail::ComplexGrid modes = detail::makeComplexGrid(static_cast<std::size_t>(Mx) * half);
   fftw_plan plan = fftw_plan_dft_r2c_2d(Mx, Mz, real.get(), modes.get(), FFTW_ESTIMATE);
   for (int c = 0; c < 3; ++c) {
     for (int p = 0; p < Mx * Mz; ++p) {

@@ -1,6 +1,6 @@
 #include "capsula/ewald/SpectralEwald2P.hpp"
 
-#include "FastFftSize.hpp"
+#include "FftwGrids.hpp"
 
 #include <algorithm>
 #include <cmath>
