@@ -139,8 +139,8 @@ std::vector<double> spectralEwaldChannel2P(const PeriodicLayer& layer, double he
   if (sources.size() % 3 != 0 || forces.size() != sources.size() || targets.size() % 3 != 0) {
     throw std::invalid_argument("ewald: sources, forces and targets need 3 numbers per point, one force per source");
   }
-  if (!(height > 0.0)) {
-    throw std::invalid_argument("ewald: the channel height must be positive");
+  if (!(height > 0.0) || !(tolerance > 0.0) || !(tolerance < 1.0)) {
+    throw std::invalid_argument("ewald: the channel needs a positive height and 0 < tolerance < 1");
   }
   std::vector<double> lowerSources, lowerForces, upperSources, upperForces;
   for (std::size_t n = 0; n < sources.size(); n += 3) {

@@ -251,7 +251,8 @@ TEST(SpectralEwaldChannel2P, PeriodicInXAndZ)
 
 TEST(SpectralEwaldChannel2P, RefusesPointsOutsideTheChannel)
 {
-  // Sources on or beyond a wall, and targets outside [0, H], have no channel flow.
+  // Sources on or beyond a wall, and targets outside [0, H], have no channel flow; a channel
+  // without height or a tolerance outside (0, 1) has no sum.
   const std::vector<double> inside{0.5, 0.6, 0.5}, force{1.0, 0.0, 0.0};
   for (double h : {0.0, channelHeight, -0.1, 1.3}) {
     const std::vector<double> source{0.5, h, 0.5};
@@ -264,6 +265,11 @@ TEST(SpectralEwaldChannel2P, RefusesPointsOutsideTheChannel)
         << "target height " << y;
   }
   EXPECT_THROW(spectralEwaldChannel2P(channelBox, 0.0, 1e-6, inside, force, inside), std::invalid_argument);
+  for (double tolerance : {0.0, 1.0}) { // before the far-wall grid is sized from ln(1/tol)
+    EXPECT_THROW(spectralEwaldChannel2P(channelBox, channelHeight, tolerance, inside, force, inside),
+                 std::invalid_argument)
+        << "tolerance " << tolerance;
+  }
 }
 
 } // namespace spectral_ewald_channel_2p_test
