@@ -14,13 +14,14 @@
 // lie at least d = H - max h >= H/2 away, so that the velocity's Fourier coefficients in (x, z)
 // decay like e^{-|k| d}. The group's sum samples it on a uniform grid of the far wall (FFT in x
 // and z), and the correction is the Stokes flow in the slab that vanishes on the group's own
-// wall and cancels it on the far wall, exact per mode (SlabWallFlow.hpp), summed at the
-// targets over the modes |k| <= k_c with e^{-k_c d} (1 + k_c d)^2 = tol. The k = 0 mode
-// (linear in y) turns the lower wall's zero mode 8 pi min(y, h) / A into the channel's
+// wall and cancels it on the far wall, exact per mode (SlabWallFlow.hpp), for the modes
+// |k| <= k_c with e^{-k_c d} (1 + k_c d)^2 = tol, gathered at the targets on Chebyshev levels in
+// y and a Gaussian-window grid in x and z (SlabFlowGather.hpp). The k = 0 mode (linear in y)
+// turns the lower wall's zero mode 8 pi min(y, h) / A into the channel's
 // 8 pi min(y, h) (H - max(y, h)) / (H A).
 // The cost is that of the two lower-wall sums over N sources and the targets plus the far-wall
-// grid (N log N), and the targets times the retained modes, whose number, ~ A k_c^2 / (4 pi),
-// depends on the tolerance and on L / H, not on N.
+// grid, about (k_c L / pi)^2 points (N log N), and of the gather, 3 Ny P^2 per target plus the
+// FFTs of Ny levels of the x-z grid.
 #include "capsula/ewald/Ewald2PReference.hpp"
 
 #include <vector>
