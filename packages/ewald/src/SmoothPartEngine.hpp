@@ -5,6 +5,8 @@
 // out, (k_x, k_z) != 0), transformed back, given the zero mode (each source component's x-z sum
 // convolved in y with the kernel's 1D profile Kernel::zeroModeProfile, then combined by
 // Kernel::combineZeroMode), and gathered at the targets.
+#include "FftwGrids.hpp"
+
 #include "capsula/ewald/SpectralEwald2P.hpp"
 
 #include <fftw3.h>
@@ -16,22 +18,6 @@
 #include <vector>
 
 namespace capsula::ewald::detail {
-
-struct FftwFree {
-  void operator()(void* p) const { fftw_free(p); }
-};
-using RealGrid = std::unique_ptr<double[], FftwFree>;
-using ComplexGrid = std::unique_ptr<fftw_complex[], FftwFree>;
-
-/// A real grid, zeroed when it accumulates (the spread sources) and not when FFTW overwrites it.
-inline RealGrid makeRealGrid(std::size_t size, bool zeroed)
-{
-  RealGrid grid(static_cast<double*>(fftw_malloc(sizeof(double) * size)));
-  if (zeroed) {
-    std::fill(grid.get(), grid.get() + size, 0.0);
-  }
-  return grid;
-}
 
 /// The grid points a Gaussian centred at x reaches along one axis: first index (unwrapped) and
 /// the weights e^{-alpha (x_i - x)^2}.
@@ -208,12 +194,12 @@ void addSmoothPart(const PeriodicLayer& layer, const SpectralEwaldSettings& s, c
   std::vector<ComplexGrid> spectrum;
   for (int c = 0; c < C; ++c) {
     spread.push_back(makeRealGrid(points, true));
-    spectrum.emplace_back(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * modes)));
+    spectrum.push_back(makeComplexGrid(modes));
   }
   RealGrid field[3] = {makeRealGrid(points, false), makeRealGrid(points, false), makeRealGrid(points, false)};
   ComplexGrid fieldSpectrum[3];
   for (auto& component : fieldSpectrum) {
-    component.reset(static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * modes)));
+    component = makeComplexGrid(modes);
   }
   for (std::size_t n : gridOrder(s, sources)) {
     const double* q = &densities[C * n];

@@ -1,30 +1,18 @@
 #include "capsula/ewald/SpectralEwald2P.hpp"
 
+#include "FftwGrids.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace capsula::ewald {
 
+using detail::fastFftSize;
+
 namespace {
 
 constexpr double settingsPi = 3.14159265358979323846;
-
-/// The smallest n' >= n whose prime factors are 2, 3, 5 and 7 (FFTW's fast sizes).
-int fastFftSize(int n)
-{
-  for (int m = std::max(n, 1);; ++m) {
-    int rest = m;
-    for (int p : {2, 3, 5, 7}) {
-      while (rest % p == 0) {
-        rest /= p;
-      }
-    }
-    if (rest == 1) {
-      return m;
-    }
-  }
-}
 
 /// d with (1 + a d) e^{-a d} = tol (fixed point of d = (ln(1/tol) + ln(1 + a d)) / a).
 double yImageDistance(double a, double tolerance)
