@@ -3,14 +3,13 @@
 #include <capsula/core/Error.hpp>
 
 #include <algorithm>
-#include <stdexcept>
+#include <utility>
 
 namespace capsula::scene {
 
-LocalMobilityPreconditioner::LocalMobilityPreconditioner(Teuchos::RCP<const Map> map) : map_(std::move(map))
-{
-  core::require(!map_->isDistributed(), "LocalMobilityPreconditioner: the map must be locally replicated");
-}
+LocalMobilityPreconditioner::LocalMobilityPreconditioner(Teuchos::RCP<const Map> map)
+    : StagePreconditioner(std::move(map), "LocalMobilityPreconditioner")
+{}
 
 void LocalMobilityPreconditioner::setCell(int cell, int firstNode, const elasticity::TangentStiffness& stiffness,
                                           std::vector<double> mobility, const adhesion::LoadStiffness* external)
@@ -46,14 +45,11 @@ void LocalMobilityPreconditioner::setCell(int cell, int firstNode, const elastic
     block.inverseMobility[k] = 1.0 / mobility[static_cast<std::size_t>(k / 3)];
   }
   block.patternAnalysed = samePattern;
-  shift_ = -1.0; // refactorise at the next setShift
+  approximationChanged();
 }
 
-void LocalMobilityPreconditioner::setShift(double shift)
+void LocalMobilityPreconditioner::factorise(double shift)
 {
-  if (shift == shift_) {
-    return;
-  }
   for (CellBlock& block : cells_) {
     SparseMatrix A = shift * block.stiffness;
     A.diagonal() += block.inverseMobility; // H has every diagonal entry (a node couples to itself)
@@ -76,35 +72,21 @@ void LocalMobilityPreconditioner::setShift(double shift)
                                           "): set 'Solver/Stiff/Preconditioner' to None.");
     }
   }
-  shift_ = shift;
 }
 
-void LocalMobilityPreconditioner::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode, double alpha,
-                                        double beta) const
+void LocalMobilityPreconditioner::solve(const double* x, double* z) const
 {
-  if (mode != Teuchos::NO_TRANS) {
-    throw std::invalid_argument("LocalMobilityPreconditioner has no transpose apply.");
-  }
-  core::require(shift_ >= 0.0, "LocalMobilityPreconditioner: setShift before apply");
-  for (std::size_t v = 0; v < X.getNumVectors(); ++v) {
-    const auto x = X.getData(v);
-    auto y = Y.getDataNonConst(v);
-    const std::size_t total = map_->getNodeNumElements();
-    std::vector<double> z(x.begin(), x.end()); // nodes of no cell: identity
-    for (const CellBlock& block : cells_) {
-      const auto n = block.stiffness.rows();
-      const std::size_t first = 3 * static_cast<std::size_t>(block.firstNode);
-      local_.resize(n);
-      for (Eigen::Index k = 0; k < n; ++k) {
-        local_[k] = block.inverseMobility[k] * x[first + static_cast<std::size_t>(k)];
-      }
-      solved_ = block.lu ? Eigen::VectorXd(block.lu->solve(local_)) : Eigen::VectorXd(block.ldlt->solve(local_));
-      for (Eigen::Index k = 0; k < n; ++k) {
-        z[first + static_cast<std::size_t>(k)] = solved_[k];
-      }
+  std::copy(x, x + map().getNodeNumElements(), z); // nodes of no cell: identity
+  for (const CellBlock& block : cells_) {
+    const auto n = block.stiffness.rows();
+    const std::size_t first = 3 * static_cast<std::size_t>(block.firstNode);
+    local_.resize(n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+      local_[k] = block.inverseMobility[k] * x[first + static_cast<std::size_t>(k)];
     }
-    for (std::size_t k = 0; k < total; ++k) {
-      y[k] = (beta == 0.0 ? 0.0 : beta * y[k]) + alpha * z[k];
+    solved_ = block.lu ? Eigen::VectorXd(block.lu->solve(local_)) : Eigen::VectorXd(block.ldlt->solve(local_));
+    for (Eigen::Index k = 0; k < n; ++k) {
+      z[first + static_cast<std::size_t>(k)] = solved_[k];
     }
   }
 }

@@ -4,7 +4,6 @@
 #include "capsula/scene/Scene.hpp"
 
 #include <capsula/core/Error.hpp>
-#include <capsula/core/Timers.hpp>
 #include <capsula/mesh/Measures.hpp>
 #include <capsula/operators/CellSurfaces.hpp>
 
@@ -23,11 +22,12 @@ constexpr double kMassSolveTolerance = 1e-11;
 
 VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& deck,
                                    const operators::KernelRegistry& kernels)
-    : scene_(scene),
-      settings_(readStiffSolverSettings(deck.sublist("Solver").sublist("Stiff"))),
-      lineariseTimer_(core::timer("Stiff Jacobian: linearise")),
-      applyTimer_(core::timer("Stiff Jacobian: apply")),
-      preconditionerTimer_(core::timer("Stiff Jacobian: preconditioner"))
+    : VelocityJacobian(scene, deck, kernels, readStiffSolverSettings(deck.sublist("Solver").sublist("Stiff")))
+{}
+
+VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& deck,
+                                   const operators::KernelRegistry& kernels, const StiffSolverSettings& settings)
+    : StageJacobian(settings.stage, "Stiff Jacobian", "Local mobility"), scene_(scene), settings_(settings)
 {
   const SceneDescription& description = scene.description();
   for (const CellDescription& cell : description.cells) {
@@ -53,10 +53,10 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
                            operators::CellSurfaces(std::move(cells), description.viscosityRatios()), discretisation,
                            operators::readSolverParameters(deck.sublist("Solver")), scene.kernelParameters());
   const int numNodes = scene.numNodes();
-  map_ = Teuchos::rcp(
+  const auto map = Teuchos::rcp(
       new Tpetra::Map<>(3 * static_cast<Tpetra::global_size_t>(numNodes), 0, scene.comm(), Tpetra::LocallyReplicated));
   if (settings_.preconditioned) {
-    preconditioner_ = Teuchos::rcp(new LocalMobilityPreconditioner(map_));
+    preconditioner_ = Teuchos::rcp(new LocalMobilityPreconditioner(map));
   }
   // Eq 3.38 per node with the lambda of its cell.
   for (int c = 0; c < scene.numCells(); ++c) {
@@ -65,12 +65,7 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
                         -1.0 / (4.0 * M_PI * (1.0 + lambda) * scene.flow().capillaryNumber));
     flowFactor_.insert(flowFactor_.end(), static_cast<std::size_t>(scene.cell(c).numNodes()), 2.0 / (1.0 + lambda));
   }
-  gmres_.restart = settings_.stage.restart;
-  gmres_.maximumIterations = settings_.stage.maximumIterations;
-  solver_ = std::make_unique<operators::StageSolver>(
-      map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_,
-      static_cast<std::size_t>(settings_.stage.recycledProducts));
-  solver_->boundLargestError(settings_.stage.largestErrorFactor);
+  startSolver(map, preconditioner_);
   for (int c = 0; c < scene.numCells(); ++c) {
     mass_.push_back(std::make_unique<mesh::SurfaceMassMatrix>(scene.cell(c)));
   }
@@ -79,10 +74,8 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   }
 }
 
-void VelocityJacobian::linearise(double t, const std::vector<double>& y)
+void VelocityJacobian::freeze(double t, const std::vector<double>& y)
 {
-  Teuchos::TimeMonitor guard(*lineariseTimer_);
-  solver_->newJacobian();
   flowGradient_ = scene_.flowAt(t).background.gradient;
   frozenPositions_ = y;
   frozen_->setPositions(y.data());
@@ -124,10 +117,8 @@ void VelocityJacobian::linearise(double t, const std::vector<double>& y)
   }
 }
 
-void VelocityJacobian::apply(const double* x, double* y)
+void VelocityJacobian::applyFrozen(const double* x, double* y)
 {
-  Teuchos::TimeMonitor guard(*applyTimer_);
-  ++applications_;
   const std::size_t n = 3 * static_cast<std::size_t>(scene_.numNodes());
   forces_.resize(n);
   loads_.resize(n);
@@ -141,41 +132,14 @@ void VelocityJacobian::apply(const double* x, double* y)
     mass_[static_cast<std::size_t>(c)]->solve(forces_.data() + first, loads_.data() + first, kMassSolveTolerance);
   }
   const std::vector<double> single = frozen_->singleLayerOfNodalLoad(loads_.data());
-  const mesh::Mat3& gradient = flowGradient_;
-  for (std::size_t g = 0; g < n / 3; ++g) {
-    for (int i = 0; i < 3; ++i) {
-      const double flow = gradient(i, 0) * x[3 * g] + gradient(i, 1) * x[3 * g + 1] + gradient(i, 2) * x[3 * g + 2];
-      y[3 * g + i] = coefficient_[g] * single[3 * g + i] + flowFactor_[g] * flow;
-    }
-  }
+  operators::combineWithFlowGradient<3>(
+      flowGradient_, [this](std::size_t g) { return coefficient_[g]; },
+      [this](std::size_t g) { return flowFactor_[g]; }, n / 3, x, single, y);
   if (scene_.hasConstraints()) {
     product_.assign(y, y + n);
     scene_.constrain(frozenPositions_, product_);
     std::copy(product_.begin(), product_.end(), y);
   }
-}
-
-timeint::LinearSolveReport VelocityJacobian::solve(double shift, const std::vector<double>& r, std::vector<double>& x,
-                                                   double residualRms)
-{
-  timeint::LinearSolveReport report;
-  if (!preconditioner_.is_null()) {
-    Teuchos::TimeMonitor guard(*preconditionerTimer_);
-    preconditioner_->setShift(shift);
-  }
-  const operators::StageSolveResult result = solver_->solve(shift, r, x, residualRms);
-  report.converged = result.converged;
-  report.iterations = result.iterations;
-  report.residualRms = result.residualRms;
-  return report;
-}
-
-std::string VelocityJacobian::settingsHint() const
-{
-  std::ostringstream hint;
-  hint << "(" << operators::settingsHint(settings_.stage)
-       << (settings_.preconditioned ? "" : ", or set 'Solver/Stiff/Preconditioner' to 'Local mobility'") << ")";
-  return hint.str();
 }
 
 std::string VelocityJacobian::describe() const
@@ -199,7 +163,7 @@ std::string VelocityJacobian::describe() const
   if (scene_.hasConstraints()) {
     line << ", stage constraints";
   }
-  line << "; " << operators::describe(settings_.stage);
+  line << "; " << operators::describe(stageSettings());
   if (settings_.preconditioned) {
     line << " with the local-mobility preconditioner (beta = " << settings_.mobilityFactor << ")";
   } else {

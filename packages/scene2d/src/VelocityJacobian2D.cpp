@@ -1,7 +1,6 @@
 #include "capsula/scene2d/VelocityJacobian2D.hpp"
 
 #include <capsula/core/Error.hpp>
-#include <capsula/core/Timers.hpp>
 #include <capsula/operators/ContourDiscretisation2D.hpp>
 #include <capsula/operators/PointSingleLayer2D.hpp>
 
@@ -37,11 +36,14 @@ constexpr int kColumnSpacing = 24;
 
 VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
                                        const Teuchos::ParameterList& deck)
-    : model_(model),
-      settings_(readStiffSolverSettings2D(deck.sublist("Solver").sublist("Stiff"))),
-      lineariseTimer_(core::timer("Stiff Jacobian 2D: linearise")),
-      applyTimer_(core::timer("Stiff Jacobian 2D: apply")),
-      preconditionerTimer_(core::timer("Stiff Jacobian 2D: preconditioner"))
+    : VelocityJacobian2D(model, comm, deck, readStiffSolverSettings2D(deck.sublist("Solver").sublist("Stiff")))
+{}
+
+VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                                       const Teuchos::ParameterList& deck, const StiffSolverSettings2D& settings)
+    : StageJacobian(settings.stage, "Stiff Jacobian 2D", toString(StiffPreconditioner2D::PointSingleLayer)),
+      model_(model),
+      settings_(settings)
 {
   operators::ContourDiscretisation2D discretisation = model.discretisation();
   if (settings_.gaussLegendrePoints > 0) {
@@ -50,26 +52,20 @@ VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP
   const int n = model.numberOfNodes();
   velocity_ =
       model.makeInterfaceVelocity(comm, n, discretisation, operators::readSolverParameters(deck.sublist("Solver")));
-  map_ = Teuchos::rcp(new Tpetra::Map<>(2 * static_cast<Tpetra::global_size_t>(n), 0, comm, Tpetra::LocallyReplicated));
+  const auto map =
+      Teuchos::rcp(new Tpetra::Map<>(2 * static_cast<Tpetra::global_size_t>(n), 0, comm, Tpetra::LocallyReplicated));
   if (settings_.preconditioner != StiffPreconditioner2D::None) {
-    preconditioner_ = Teuchos::rcp(new StagePreconditioner2D(map_));
+    preconditioner_ = Teuchos::rcp(new operators::DenseStagePreconditioner(map));
   }
   tetherEnabled_ = deck.sublist("Tether").get<bool>("Enabled");
   const double lambda = model.flow().conditions.viscosityRatio;
   coefficient_ = 1.0 / (2.0 * M_PI * (1.0 + lambda) * model.flow().conditions.capillaryNumber);
   flowFactor_ = 2.0 / (1.0 + lambda);
-  gmres_.restart = settings_.stage.restart;
-  gmres_.maximumIterations = settings_.stage.maximumIterations;
-  solver_ = std::make_unique<operators::StageSolver>(
-      map_, [this](const double* x, double* y) { apply(x, y); }, preconditioner_, gmres_,
-      static_cast<std::size_t>(settings_.stage.recycledProducts));
-  solver_->boundLargestError(settings_.stage.largestErrorFactor);
+  startSolver(map, preconditioner_);
 }
 
-void VelocityJacobian2D::linearise(double t, const std::vector<double>& y)
+void VelocityJacobian2D::freeze(double t, const std::vector<double>& y)
 {
-  Teuchos::TimeMonitor guard(*lineariseTimer_);
-  solver_->newJacobian();
   flowGradient_ = model_.flowAt(t).background.gradient;
   frozenState_ = y;
   frozen_.emplace(model_.contour(y));
@@ -178,10 +174,8 @@ Eigen::MatrixXf VelocityJacobian2D::approximateJacobian(const contour::Contour& 
   return A;
 }
 
-void VelocityJacobian2D::apply(const double* x, double* y)
+void VelocityJacobian2D::applyFrozen(const double* x, double* y)
 {
-  Teuchos::TimeMonitor guard(*applyTimer_);
-  ++applications_;
   const std::size_t n = frozenState_.size();
   double largest = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
@@ -209,31 +203,12 @@ void VelocityJacobian2D::apply(const double* x, double* y)
                                     (states[2].loadAt(segment, t) - states[3].loadAt(segment, t))));
   };
   const std::vector<double> single = velocity_->singleLayer(*frozen_, derivative);
-  const Eigen::Matrix2d& gradient = flowGradient_;
-  for (std::size_t g = 0; g < n / 2; ++g) {
-    for (int i = 0; i < 2; ++i) {
-      const double flow = gradient(i, 0) * x[2 * g] + gradient(i, 1) * x[2 * g + 1];
-      y[2 * g + i] = -coefficient_ * single[2 * g + i] + flowFactor_ * flow;
-    }
-  }
+  operators::combineWithFlowGradient<2>(
+      flowGradient_, [this](std::size_t) { return -coefficient_; }, [this](std::size_t) { return flowFactor_; }, n / 2,
+      x, single, y);
   for (const int i : fixed_) {
     y[2 * i] = y[2 * i + 1] = 0.0;
   }
-}
-
-timeint::LinearSolveReport VelocityJacobian2D::solve(double shift, const std::vector<double>& r, std::vector<double>& x,
-                                                     double residualRms)
-{
-  timeint::LinearSolveReport report;
-  if (!preconditioner_.is_null()) {
-    Teuchos::TimeMonitor guard(*preconditionerTimer_);
-    preconditioner_->setShift(shift);
-  }
-  const operators::StageSolveResult result = solver_->solve(shift, r, x, residualRms);
-  report.converged = result.converged;
-  report.iterations = result.iterations;
-  report.residualRms = result.residualRms;
-  return report;
 }
 
 const Eigen::MatrixXf& VelocityJacobian2D::approximateJacobian() const
@@ -241,14 +216,6 @@ const Eigen::MatrixXf& VelocityJacobian2D::approximateJacobian() const
   core::require(!preconditioner_.is_null(), "VelocityJacobian2D: 'Solver/Stiff/Preconditioner' = None forms no "
                                             "approximate Jacobian");
   return preconditioner_->jacobian();
-}
-
-std::string VelocityJacobian2D::settingsHint() const
-{
-  std::ostringstream hint;
-  hint << "(" << operators::settingsHint(settings_.stage)
-       << (preconditioner_.is_null() ? ", or set 'Solver/Stiff/Preconditioner' to 'Point single layer'" : "") << ")";
-  return hint.str();
 }
 
 std::string VelocityJacobian2D::describe() const
@@ -261,7 +228,7 @@ std::string VelocityJacobian2D::describe() const
   if (tetherEnabled_) {
     line << ", the tethered node's rows zero once tethered";
   }
-  line << "; " << operators::describe(settings_.stage);
+  line << "; " << operators::describe(stageSettings());
   switch (settings_.preconditioner) {
   case StiffPreconditioner2D::PointSingleLayer:
     line << " with the point-single-layer preconditioner (dense LU)";

@@ -14,27 +14,22 @@
 //
 // On the fast, grid-scale membrane modes S acts locally and P is close to W; the smooth
 // modes, where the nonlocal S is larger than any local mobility, are left to GMRES, a few
-// iterations. Every rank applies P to the whole (replicated) vector. The stiffness of the
-// forces from outside (bonds, wall contact: adhesion LoadStiffness.hpp) adds to H.
+// iterations. Every rank applies P to the whole (replicated) vector (the shift bookkeeping
+// and the application are operators::StagePreconditioner's). The stiffness of the forces
+// from outside (bonds, wall contact: adhesion LoadStiffness.hpp) adds to H.
 #include <capsula/adhesion/LoadStiffness.hpp>
 #include <capsula/elasticity/TangentStiffness.hpp>
+#include <capsula/operators/StagePreconditioner.hpp>
 
 #include <Eigen/Sparse>
-#include <Teuchos_RCP.hpp>
-#include <Tpetra_Map.hpp>
-#include <Tpetra_MultiVector.hpp>
-#include <Tpetra_Operator.hpp>
 
 #include <memory>
 #include <vector>
 
 namespace capsula::scene {
 
-class LocalMobilityPreconditioner final : public Tpetra::Operator<double> {
+class LocalMobilityPreconditioner final : public operators::StagePreconditioner {
 public:
-  using Map = Tpetra::Map<>;
-  using MultiVector = Tpetra::MultiVector<double>;
-
   /// `map`: locally replicated, 3 unknowns per node of the scene.
   explicit LocalMobilityPreconditioner(Teuchos::RCP<const Map> map);
 
@@ -43,17 +38,12 @@ public:
   /// call gave for the same cell.
   void setCell(int cell, int firstNode, const elasticity::TangentStiffness& stiffness, std::vector<double> mobility,
                const adhesion::LoadStiffness* external = nullptr);
-  /// Factorises B^-1 + shift H of every cell (nothing if the shift has not changed).
-  void setShift(double shift);
-
-  Teuchos::RCP<const Map> getDomainMap() const override { return map_; }
-  Teuchos::RCP<const Map> getRangeMap() const override { return map_; }
-  bool hasTransposeApply() const override { return false; }
-  /// Y = alpha P^-1 X + beta Y. Throws std::invalid_argument for a transpose.
-  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS, double alpha = 1.0,
-             double beta = 0.0) const override;
 
 private:
+  /// Factorises B^-1 + shift H of every cell.
+  void factorise(double shift) override;
+  void solve(const double* x, double* z) const override;
+
   using SparseMatrix = Eigen::SparseMatrix<double>;
   struct CellBlock {
     int firstNode = 0;
@@ -64,9 +54,7 @@ private:
     bool patternAnalysed = false;
   };
 
-  Teuchos::RCP<const Map> map_;
   std::vector<CellBlock> cells_;
-  double shift_ = -1.0;
   mutable Eigen::VectorXd local_, solved_;
 };
 

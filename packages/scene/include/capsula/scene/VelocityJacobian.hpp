@@ -19,9 +19,10 @@
 // methods keep their order with such a J~; it needs to be right only on the stiff modes.
 //
 // Solves with W = I - shift J~ run Belos GMRES on a locally replicated map
-// (operators::StageSolver) with the LocalMobilityPreconditioner on the right; each
-// application of J~ is one single-layer evaluation, its rows shared by the ranks. The
-// results do not depend on the number of ranks (the right-hand side's do not either).
+// (operators::StageJacobian, shared with the 2D cell's VelocityJacobian2D) with the
+// LocalMobilityPreconditioner on the right; each application of J~ is one single-layer
+// evaluation, its rows shared by the ranks. The results do not depend on the number of
+// ranks (the right-hand side's do not either).
 #include "capsula/scene/LocalMobilityPreconditioner.hpp"
 #include "capsula/scene/StiffSolverParameters.hpp"
 
@@ -30,12 +31,10 @@
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
-#include <capsula/operators/StageSolver.hpp>
-#include <capsula/timeint/LinearisedSystem.hpp>
+#include <capsula/operators/StageJacobian.hpp>
 
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
-#include <Teuchos_Time.hpp>
 
 #include <memory>
 #include <string>
@@ -45,29 +44,26 @@ namespace capsula::scene {
 
 class Scene;
 
-class VelocityJacobian final : public timeint::LinearisedSystem {
+class VelocityJacobian final : public operators::StageJacobian {
 public:
   /// For `scene` (it must outlive this object), with the deck's "Solver/Stiff" settings
   /// and its Discretisation. Throws core::InputError naming the keys if a cell's membrane
   /// has no tangent stiffness (the contour-integral load).
   VelocityJacobian(Scene& scene, const Teuchos::ParameterList& deck, const operators::KernelRegistry& kernels);
 
-  void linearise(double t, const std::vector<double>& y) override;
-  timeint::LinearSolveReport solve(double shift, const std::vector<double>& r, std::vector<double>& x,
-                                   double residualRms) override;
-  std::string settingsHint() const override;
-
-  /// y = J~ x at the last linearisation (whole vectors, 3 per node). Collective.
-  void apply(const double* x, double* y);
   /// One line for the run's "Terms built".
   std::string describe() const;
-  /// Applications of J~ so far (each one single-layer evaluation).
-  long long applications() const { return applications_; }
 
 private:
+  VelocityJacobian(Scene& scene, const Teuchos::ParameterList& deck, const operators::KernelRegistry& kernels,
+                   const StiffSolverSettings& settings);
+
+  void freeze(double t, const std::vector<double>& y) override;
+  /// 3 unknowns per node.
+  void applyFrozen(const double* x, double* y) override;
+
   Scene& scene_;
   StiffSolverSettings settings_;
-  operators::SolverParameters gmres_;
   std::unique_ptr<operators::BoundaryIntegralSolver> frozen_;  // the single layer at x_n
   std::vector<elasticity::TangentStiffness> stiffness_;        // per cell, at x_n
   std::vector<adhesion::LoadStiffness> external_;              // per cell, at x_n (bonds, contact)
@@ -76,12 +72,8 @@ private:
   std::vector<double> coefficient_;              // -c_d per node
   std::vector<double> flowFactor_;               // 2 / (1 + lambda_d) per node
   mesh::Mat3 flowGradient_ = mesh::Mat3::Zero(); // grad u_inf at the step's start, k(t_n)
-  Teuchos::RCP<const Tpetra::Map<>> map_;
   Teuchos::RCP<LocalMobilityPreconditioner> preconditioner_;
-  std::unique_ptr<operators::StageSolver> solver_; // GMRES on W
   std::vector<double> forces_, loads_, product_;
-  long long applications_ = 0;
-  Teuchos::RCP<Teuchos::Time> lineariseTimer_, applyTimer_, preconditionerTimer_;
 };
 
 } // namespace capsula::scene

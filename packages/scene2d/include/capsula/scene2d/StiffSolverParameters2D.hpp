@@ -18,13 +18,13 @@
 
 namespace capsula::scene2d {
 
-/// What stands for the single layer in the stage preconditioner (StagePreconditioner2D.hpp).
+/// What stands for the single layer in the dense stage preconditioner (VelocityJacobian2D.hpp).
 enum class StiffPreconditioner2D { PointSingleLayer, LocalMobility, None };
 
 struct StiffSolverSettings2D {
   operators::StageSolverSettings stage; ///< iteration cap, restart, kept products of J~
   StiffPreconditioner2D preconditioner = StiffPreconditioner2D::PointSingleLayer;
-  double mobilityFactor = 1.0; ///< beta of the local mobility c beta l_i (StagePreconditioner2D.hpp)
+  double mobilityFactor = 1.0; ///< beta of the local mobility c beta l_i (VelocityJacobian2D.hpp)
   int gaussLegendrePoints = 3; ///< N_GL of J~'s single layer (0: Discretisation/Gauss-Legendre points)
 };
 

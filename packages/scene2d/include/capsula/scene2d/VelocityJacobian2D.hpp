@@ -25,23 +25,21 @@
 // methods keep their order with any J~ (docs/stiff-integration.md has the measurement).
 //
 // Solves with W = I - shift J~ run Belos GMRES on a locally replicated map
-// (operators::StageSolver) with a dense preconditioner on the right
-// (StagePreconditioner2D.hpp). J~ reads the model at every linearisation (its closure,
+// (operators::StageJacobian, shared with the 3D scenes' VelocityJacobian) with a dense
+// preconditioner on the right (operators::DenseStagePreconditioner). J~ reads the model at every linearisation (its closure,
 // tethered node and membrane reference), so it follows tethering and regridding without
 // being rebuilt. Every rank computes the same J~ v (the single layer's rows are shared and
 // gathered in a fixed order), so the solves do not depend on the number of ranks.
 #include "capsula/scene2d/CapsuleModel2D.hpp"
-#include "capsula/scene2d/StagePreconditioner2D.hpp"
 #include "capsula/scene2d/StiffSolverParameters2D.hpp"
 
+#include <capsula/operators/DenseStagePreconditioner.hpp>
 #include <capsula/operators/InterfaceVelocity2D.hpp>
-#include <capsula/operators/StageSolver.hpp>
-#include <capsula/timeint/LinearisedSystem.hpp>
+#include <capsula/operators/StageJacobian.hpp>
 
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
-#include <Teuchos_Time.hpp>
 
 #include <memory>
 #include <optional>
@@ -50,34 +48,30 @@
 
 namespace capsula::scene2d {
 
-class VelocityJacobian2D final : public timeint::LinearisedSystem {
+class VelocityJacobian2D final : public operators::StageJacobian {
 public:
   /// For `model` (it must outlive this object), with the deck's "Solver/Stiff" and
   /// "Discretisation" settings.
   VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
                      const Teuchos::ParameterList& deck);
 
-  void linearise(double t, const std::vector<double>& y) override;
-  timeint::LinearSolveReport solve(double shift, const std::vector<double>& r, std::vector<double>& x,
-                                   double residualRms) override;
-  std::string settingsHint() const override;
-
-  /// y = J~ x at the last linearisation (2 per node). Collective.
-  void apply(const double* x, double* y);
   /// One line for the run's "terms".
   std::string describe() const;
-  /// Applications of J~ so far (each one single-layer evaluation).
-  long long applications() const { return applications_; }
   /// The dense approximation of J~ the preconditioner factorises (single precision).
   /// Throws core::Error without a preconditioner.
   const Eigen::MatrixXf& approximateJacobian() const;
 
 private:
+  VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                     const Teuchos::ParameterList& deck, const StiffSolverSettings2D& settings);
+
+  void freeze(double t, const std::vector<double>& y) override;
+  /// 2 unknowns per node.
+  void applyFrozen(const double* x, double* y) override;
   Eigen::MatrixXf approximateJacobian(const contour::Contour& frozen);
 
   CapsuleModel2D& model_;
   StiffSolverSettings2D settings_;
-  operators::SolverParameters gmres_;
   std::unique_ptr<operators::InterfaceVelocity2D> velocity_; // S on the frozen contour
   std::optional<contour::Contour> frozen_;
   std::vector<double> frozenState_;
@@ -87,12 +81,8 @@ private:
   double flowFactor_ = 0.0;                                // 2 / (1 + lambda)
   Eigen::Matrix2d flowGradient_ = Eigen::Matrix2d::Zero(); // grad u_inf at the step's start, k(t_n)
   bool tetherEnabled_ = false;
-  Teuchos::RCP<const Tpetra::Map<>> map_;
-  Teuchos::RCP<StagePreconditioner2D> preconditioner_;
-  std::unique_ptr<operators::StageSolver> solver_; // GMRES on W
+  Teuchos::RCP<operators::DenseStagePreconditioner> preconditioner_;
   std::vector<double> probe_;
-  long long applications_ = 0;
-  Teuchos::RCP<Teuchos::Time> lineariseTimer_, applyTimer_, preconditionerTimer_;
 };
 
 } // namespace capsula::scene2d
