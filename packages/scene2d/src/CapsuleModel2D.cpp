@@ -6,7 +6,7 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
 #include <capsula/elasticity/BendingLoadBound.hpp>
-#include <capsula/elasticity/Prestress2D.hpp>
+#include <capsula/elasticity/Prestress.hpp>
 
 #include <cmath>
 #include <optional>
@@ -44,7 +44,7 @@ CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& com
       discretisation_(discretisation),
       krylovMethod_(solver.method),
       referenceNodes_(initialCellNodes(cell)),
-      freeReference_(elasticity::prestressedReference2D(referenceNodes_, cell.prestress))
+      freeReference_(elasticity::prestressedReference(referenceNodes_, cell.prestress))
 {
   core::require<core::InputError>(!flow.wall || cell.lowestPointHeight > 0.0,
                                   "Cell/Lowest point height must be > 0 above the wall, got ", cell.lowestPointHeight,

@@ -1,4 +1,4 @@
-// 2D membrane prestress (elasticity/Prestress2D.hpp): the reference is the initial contour
+// 2D membrane prestress (elasticity/Prestress.hpp, the contour overload): the reference is the initial contour
 // shrunk by 1 + alpha about its area centroid, so the initial contour carries the uniform
 // tension E alpha and, for a circle, the Laplace load (E alpha / R) n.
 #include <capsula/contour/Contour.hpp>
@@ -6,7 +6,7 @@
 #include <capsula/contour/InitialShapes.hpp>
 #include <capsula/core/Error.hpp>
 #include <capsula/elasticity/ElasticMembrane2D.hpp>
-#include <capsula/elasticity/Prestress2D.hpp>
+#include <capsula/elasticity/Prestress.hpp>
 
 #include <gtest/gtest.h>
 
@@ -19,7 +19,7 @@ using capsula::contour::Contour;
 using capsula::elasticity::ElasticMembrane2D;
 using capsula::elasticity::HookeanLaw2D;
 using capsula::elasticity::MembraneState2D;
-using capsula::elasticity::prestressedReference2D;
+using capsula::elasticity::prestressedReference;
 
 Eigen::Matrix2Xd offCentreEllipse(int n)
 {
@@ -35,7 +35,7 @@ TEST(Prestress2D, ShrinksAboutTheCentroidByOnePlusAlpha)
 {
   const Eigen::Matrix2Xd initial = offCentreEllipse(64);
   const double alpha = 0.2;
-  const Eigen::Matrix2Xd reference = prestressedReference2D(initial, alpha);
+  const Eigen::Matrix2Xd reference = prestressedReference(initial, alpha);
   const Contour a(initial), r(reference);
   // A similarity about the centroid: the centroid stays (to round-off of O(1) numbers), lengths
   // scale by 1/(1 + alpha) and areas by its square. A factor 1 + alpha instead of its inverse,
@@ -44,7 +44,7 @@ TEST(Prestress2D, ShrinksAboutTheCentroidByOnePlusAlpha)
   EXPECT_NEAR(r.length() * (1.0 + alpha), a.length(), 1e-12);
   EXPECT_NEAR(capsula::contour::enclosedArea(r) * (1.0 + alpha) * (1.0 + alpha), capsula::contour::enclosedArea(a),
               1e-12);
-  EXPECT_EQ((prestressedReference2D(initial, 0.0) - initial).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ((prestressedReference(initial, 0.0) - initial).cwiseAbs().maxCoeff(), 0.0);
 }
 
 TEST(Prestress2D, InitialContourCarriesTheUniformTensionAndTheLaplaceLoad)
@@ -52,7 +52,7 @@ TEST(Prestress2D, InitialContourCarriesTheUniformTensionAndTheLaplaceLoad)
   const double youngModulus = 2.5, alpha = 0.15, radius = 1.3;
   const Eigen::Vector2d centre(0.5, 2.0);
   const Contour initial(capsula::contour::circleNodes(128, radius, centre));
-  const ElasticMembrane2D membrane(Contour(prestressedReference2D(initial.nodes(), alpha)), HookeanLaw2D(youngModulus));
+  const ElasticMembrane2D membrane(Contour(prestressedReference(initial.nodes(), alpha)), HookeanLaw2D(youngModulus));
   const MembraneState2D state = membrane.evaluate(initial);
   const double gamma = youngModulus * alpha; // E (omega - 1), omega = 1 + alpha
   // Both arc lengths come from splines of similar polygons, so omega = 1 + alpha to round-off.
@@ -71,8 +71,8 @@ TEST(Prestress2D, InitialContourCarriesTheUniformTensionAndTheLaplaceLoad)
 TEST(Prestress2D, RejectsANegativeOrNonFinitePrestress)
 {
   const Eigen::Matrix2Xd initial = offCentreEllipse(16);
-  EXPECT_THROW(prestressedReference2D(initial, -0.01), capsula::core::InputError);
-  EXPECT_THROW(prestressedReference2D(initial, std::numeric_limits<double>::quiet_NaN()), capsula::core::InputError);
+  EXPECT_THROW(prestressedReference(initial, -0.01), capsula::core::InputError);
+  EXPECT_THROW(prestressedReference(initial, std::numeric_limits<double>::quiet_NaN()), capsula::core::InputError);
 }
 
 } // namespace

@@ -1,5 +1,5 @@
 // Cell/Prestress in the 2D cell model: the state starts at the deck's ellipse, the membrane's
-// reference is that ellipse shrunk by 1 + alpha (elasticity/Prestress2D.hpp), and A/A0 and the
+// reference is that ellipse shrunk by 1 + alpha (elasticity/Prestress.hpp), and A/A0 and the
 // area drift are measured against the initial contour, not the smaller reference.
 #include "Tether2DTesting.hpp"
 

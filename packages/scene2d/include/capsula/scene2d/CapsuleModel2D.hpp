@@ -65,7 +65,7 @@ public:
   /// Cell/Prestress > 0).
   const Eigen::Matrix2Xd& referenceNodes() const { return referenceNodes_; }
   /// The unstressed reference positions of the free cell's markers now: referenceNodes()
-  /// shrunk by 1 + prestress (elasticity/Prestress2D.hpp) until a regridFree().
+  /// shrunk by 1 + prestress (elasticity/Prestress.hpp) until a regridFree().
   const Eigen::Matrix2Xd& freeReferenceNodes() const { return freeReference_; }
   bool freeCellRegridded() const { return freeRegridded_; }
   /// The free cell gets new markers (TetherRegrid2D): node i of the state from now on is the

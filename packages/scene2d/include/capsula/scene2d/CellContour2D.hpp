@@ -18,7 +18,7 @@ struct CellSettings2D {
   double aspectRatio = 1.0;         ///< a/b
   int numberOfPoints = 256;         ///< marker points N_P = segments N_E (closed contour)
   double lowestPointHeight = 0.005; ///< y of the lowest point (the thesis's gap)
-  /// Initial stretch 1 + alpha over the unstressed reference (elasticity/Prestress2D.hpp;
+  /// Initial stretch 1 + alpha over the unstressed reference (elasticity/Prestress.hpp;
   /// the thesis's 2D study: 0).
   double prestress = 0.0;
   /// The membrane's tension law ('Cell/Membrane law', with E = 1; the thesis's: Hookean).
