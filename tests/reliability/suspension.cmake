@@ -12,10 +12,10 @@ function(suspension_refusal name matches)
 endfunction()
 
 suspension_refusal(height_left_open
-  "'Output/Suspension/Height' = 0, but 'Wall/Channel height' does not bound the domain: give the box's length"
+  "'Output/Suspension/Height' = 0, but 'Wall/Channel height' does not bound the domain: give the box's height over which the hematocrit is taken"
   --set "Output/Suspension/Box length x=8" --set "Output/Suspension/Box length z=8")
 suspension_refusal(box_length_z_left_open
-  "'Output/Suspension/Box length z' = 0, but 'Domain/Periodic length z' does not bound the domain"
+  "'Output/Suspension/Box length z' = 0, but 'Domain/Periodic length z' does not bound the domain: give the box's length along z"
   --set "Output/Suspension/Height=4" --set "Output/Suspension/Box length x=8")
 suspension_refusal(height_given_in_a_channel
   "'Output/Suspension/Height' = 4 is given, but 'Wall/Channel height' = 8 is the box's length there; leave it at 0"

@@ -38,8 +38,9 @@ void declareSuspensionOutputParameters(Teuchos::ParameterList& suspension)
 
 namespace {
 
-// A box length that the domain fixes (`fixed` > 0, named by `fixedBy`) or the deck must give.
-void requireBoxLength(double fixed, const char* fixedBy, double given, const char* key)
+// A box length that the domain fixes (`fixed` > 0, named by `fixedBy`) or the deck must give
+// (`what`: "height", "length along x", ...).
+void requireBoxLength(double fixed, const char* fixedBy, double given, const char* key, const char* what)
 {
   if (fixed > 0.0) {
     core::require<core::InputError>(given == 0.0, "'Output/Suspension/", key, "' = ", given, " is given, but ", fixedBy,
@@ -47,8 +48,8 @@ void requireBoxLength(double fixed, const char* fixedBy, double given, const cha
     return;
   }
   core::require<core::InputError>(given > 0.0, "'Output/Suspension/", key, "' = 0, but ", fixedBy,
-                                  " does not bound the domain: give the box's length over which the hematocrit "
-                                  "is taken (> 0).");
+                                  " does not bound the domain: give the box's ", what,
+                                  " over which the hematocrit is taken (> 0).");
 }
 
 } // namespace
@@ -70,9 +71,11 @@ SuspensionOutputSettings readSuspensionOutputSettings(const Teuchos::ParameterLi
   core::require<core::InputError>(domain.hasLowerWall(),
                                   "'Output/Suspension/Enabled' is true but 'Wall/Enabled' is false: the profile "
                                   "and the cell-free layer are measured from the lower wall.");
-  requireBoxLength(domain.channelHeight(), "'Wall/Channel height'", out.height, "Height");
-  requireBoxLength(domain.period(domain::flowAxis), "'Domain/Periodic length x'", out.boxLengthX, "Box length x");
-  requireBoxLength(domain.period(domain::vorticityAxis), "'Domain/Periodic length z'", out.boxLengthZ, "Box length z");
+  requireBoxLength(domain.channelHeight(), "'Wall/Channel height'", out.height, "Height", "height");
+  requireBoxLength(domain.period(domain::flowAxis), "'Domain/Periodic length x'", out.boxLengthX, "Box length x",
+                   "length along x");
+  requireBoxLength(domain.period(domain::vorticityAxis), "'Domain/Periodic length z'", out.boxLengthZ, "Box length z",
+                   "length along z");
   return out;
 }
 
