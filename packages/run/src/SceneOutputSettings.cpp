@@ -74,6 +74,8 @@ void declareSceneOutputParameters(Teuchos::ParameterList& output)
                     "an element's smallest corner angle falls below this many degrees at an "
                     "output: the mesh has degraded past what its quadrature resolves (0: never).",
                     core::atLeast(0.0), core::lessThan(60.0));
+  declareSuspensionOutputParameters(core::declareSublist(
+      output, "Suspension", "The cell-free layer and the hematocrit profile (docs/suspensions.md, section 'Outputs of a run')."));
 }
 
 SceneOutputSettings readSceneOutputSettings(const Teuchos::ParameterList& deck, const scene::SceneDescription& scene)
@@ -123,6 +125,7 @@ SceneOutputSettings readSceneOutputSettings(const Teuchos::ParameterList& deck, 
   core::require<core::InputError>(!ws.enabled || scene.wall,
                                   "'Output/Wall shear stress/Enabled' is true but 'Wall/Enabled' is "
                                   "false: there is no wall to measure.");
+  out.suspension = readSuspensionOutputSettings(output.sublist("Suspension"), scene.domain);
   return out;
 }
 

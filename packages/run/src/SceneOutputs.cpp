@@ -21,7 +21,8 @@ using mesh::Vec3;
 
 namespace {
 
-constexpr const char* kSnapshotBase = "snapshots"; // snapshots.h5 + snapshots.xdmf
+constexpr const char* kSnapshotBase = "snapshots";    // snapshots.h5 + snapshots.xdmf
+constexpr const char* kSuspensionBase = "suspension"; // suspension.h5 + suspension.xdmf
 
 // An adhering cell slower than this along the flow (a k: a hundredth of the undisturbed flow
 // one radius above the wall) counts as paused (RollingStatistics.hpp); a free cell near the
@@ -54,7 +55,11 @@ SceneOutputs::SceneOutputs(RunScene& live, const scene::SceneDescription& descri
       files_(files),
       steadyTolerance_(steadyTolerance),
       metrics_(description.numCells())
-{}
+{
+  if (settings.suspension.enabled) {
+    suspension_.emplace(settings.suspension, description.domain);
+  }
+}
 
 std::vector<std::string> SceneOutputs::terms() const
 {
@@ -69,6 +74,9 @@ std::vector<std::string> SceneOutputs::terms() const
   if (!settings_.flowProbes.empty()) {
     terms.push_back("output: fluid velocity at " + std::to_string(settings_.flowProbes.size()) + " flow probes");
   }
+  if (suspension_) {
+    terms.push_back(suspension_->term());
+  }
   if (settings_.snapshots) {
     terms.push_back("output: snapshots every " + std::to_string(settings_.snapshotStride) + " output(s)");
   }
@@ -81,10 +89,14 @@ std::vector<std::string> SceneOutputs::terms() const
 void SceneOutputs::open(std::optional<double> resumeAfter)
 {
   const auto& wall = settings_.wallShearStress;
-  files_.openTable("metrics.csv",
-                   metricsColumns(wall.enabled, description_.numCells(), wall.isolatedRange,
-                                  description_.adhesion.enabled, description_.tether.enabled),
-                   resumeAfter);
+  std::vector<std::string> columns = metricsColumns(wall.enabled, description_.numCells(), wall.isolatedRange,
+                                                    description_.adhesion.enabled, description_.tether.enabled);
+  if (suspension_) {
+    const std::vector<std::string> more = suspension_->columns();
+    columns.insert(columns.end(), more.begin(), more.end());
+    files_.openSnapshots(kSuspensionBase, resumeAfter);
+  }
+  files_.openTable("metrics.csv", columns, resumeAfter);
   if (!settings_.flowProbes.empty()) {
     files_.openTable("probes.csv", probeColumns(settings_.flowProbes.size()), resumeAfter);
   }
@@ -208,8 +220,24 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
       wallValues.insert(wallValues.end(), {lastOutsideIsolated_->below, lastOutsideIsolated_->above});
     }
   }
-  files_.appendRow("metrics.csv", metricsRow(t, state.statistics.acceptedSteps, state.statistics.lastStep, samples,
-                                             pairs, wallValues));
+  std::vector<double> row =
+      metricsRow(t, state.statistics.acceptedSteps, state.statistics.lastStep, samples, pairs, wallValues);
+  std::optional<SuspensionSample> suspensionSample;
+  if (suspension_) {
+    std::vector<const mesh::SurfaceMesh*> cells;
+    for (int c = 0; c < scene.numCells(); ++c) {
+      cells.push_back(&scene.cell(c));
+    }
+    suspensionSample = suspension_->measure(t, cells);
+    const std::vector<double> more = suspension_->row(*suspensionSample);
+    row.insert(row.end(), more.begin(), more.end());
+  }
+  files_.appendRow("metrics.csv", row);
+  if (suspensionSample) {
+    files_.writeSnapshot(kSuspensionBase, [&] {
+      return io::Snapshot{t, state.statistics.acceptedSteps, {suspension_->profileBlock(*suspensionSample)}};
+    });
+  }
   if (!settings_.flowProbes.empty()) {
     std::vector<double> probeRow{t};
     probeRow.insert(probeRow.end(), probeVelocities.begin(), probeVelocities.end());
@@ -236,12 +264,18 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
 void SceneOutputs::save(io::Checkpoint& checkpoint) const
 {
   metrics_.save(checkpoint);
+  if (suspension_) {
+    suspension_->save(checkpoint);
+  }
   checkpoint.integers["scene.outputs"] = outputsWritten_;
 }
 
 void SceneOutputs::load(const io::Checkpoint& checkpoint, const std::string& source)
 {
   metrics_.load(checkpoint, source);
+  if (suspension_) {
+    suspension_->load(checkpoint, source);
+  }
   const auto outputs = checkpoint.integers.find("scene.outputs");
   outputsWritten_ = outputs == checkpoint.integers.end() ? 0 : outputs->second;
 }
@@ -322,6 +356,9 @@ void SceneOutputs::addResults(io::JsonValue& summary) const
     summary["wall shear stress"]["maximum"] = lastWallAreas_->maximum;
     summary["wall shear stress"]["elevated area upstream"] = lastWallAreas_->upstream;
     summary["wall shear stress"]["elevated area downstream"] = lastWallAreas_->downstream;
+  }
+  if (suspension_) {
+    suspension_->addResults(summary);
   }
   if (lastOutsideIsolated_) {
     summary["wall shear stress"]["area below the isolated cell's minimum"] = lastOutsideIsolated_->below;

@@ -101,4 +101,24 @@ CellFreeLayer cellFreeLayer(const std::vector<const mesh::SurfaceMesh*>& cells, 
   return layer;
 }
 
+CellFreeLayer thinnestCellFreeLayer(const std::vector<const mesh::SurfaceMesh*>& cells, const domain::Domain& domain)
+{
+  core::require<core::InputError>(domain.hasLowerWall() && !cells.empty(),
+                                  "The thinnest cell-free layer needs the lower wall and cells, not ",
+                                  domain.describe(), " with ", cells.size(), " cells.");
+  double lowest = std::numeric_limits<double>::infinity();
+  double highest = -std::numeric_limits<double>::infinity();
+  for (const mesh::SurfaceMesh* cell : cells) {
+    const double* positions = cell->positionData();
+    for (int n = 0; n < cell->numNodes(); ++n) {
+      lowest = std::min(lowest, positions[3 * n + 1]);
+      highest = std::max(highest, positions[3 * n + 1]);
+    }
+  }
+  CellFreeLayer layer;
+  layer.lower = lowest;
+  layer.upper = domain.hasUpperWall() ? domain.channelHeight() - highest : std::numeric_limits<double>::infinity();
+  return layer;
+}
+
 } // namespace capsula::suspension

@@ -24,12 +24,19 @@ HematocritProfile hematocritProfile(const std::vector<const mesh::SurfaceMesh*>&
                                     int numSlabs)
 {
   requirePeriodicChannel(domain, "hematocrit profile");
+  return hematocritProfileInSlab(cells, domain.channelHeight(),
+                                 domain.period(domain::flowAxis) * domain.period(domain::vorticityAxis), numSlabs);
+}
+
+HematocritProfile hematocritProfileInSlab(const std::vector<const mesh::SurfaceMesh*>& cells, double top, double area,
+                                          int numSlabs)
+{
   core::require<core::InputError>(numSlabs >= 1, "The hematocrit profile needs at least one slab, not ", numSlabs, ".");
-  const double height = domain.channelHeight();
-  const double area = domain.period(domain::flowAxis) * domain.period(domain::vorticityAxis);
+  core::require<core::InputError>(top > 0.0 && area > 0.0, "The hematocrit profile needs a slab of positive height ",
+                                  "and area, not ", top, " and ", area, ".");
   HematocritProfile profile;
   for (int k = 0; k <= numSlabs; ++k) {
-    profile.heights.push_back(height * k / numSlabs);
+    profile.heights.push_back(top * k / numSlabs);
   }
   profile.fraction.assign(static_cast<std::size_t>(numSlabs), 0.0);
   double total = 0.0;
@@ -40,11 +47,11 @@ HematocritProfile hematocritProfile(const std::vector<const mesh::SurfaceMesh*>&
       total += volumes[k];
     }
   }
-  const double slab = area * height / numSlabs;
+  const double slab = area * top / numSlabs;
   for (double& f : profile.fraction) {
     f /= slab;
   }
-  profile.mean = total / (area * height);
+  profile.mean = total / (area * top);
   return profile;
 }
 

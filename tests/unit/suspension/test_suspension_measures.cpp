@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 namespace {
 
@@ -62,6 +63,54 @@ TEST(HematocritProfile, OneSphereInAPeriodicChannel)
 double sphereLayer(double d, double height, double area)
 {
   return height / 2 + M_PI * (d - height / 2) / area - 2.0 * M_PI / (3.0 * area);
+}
+
+// The slab of a periodic channel is the channel's profile; a box above a wall (no channel, no
+// periods) takes its top and area as given: the sphere at y = 2 in 0 < y < 4 over an area 10
+// holds the same volumes as in the 5 x 5 channel, at 2.5 times the fraction.
+TEST(HematocritProfile, SlabOfGivenTopAndArea)
+{
+  const mesh::SurfaceMesh sphere = unitSphereAt({1.0, 2.0, 3.0}, 2);
+  const std::vector<const mesh::SurfaceMesh*> cells{&sphere};
+  const auto channel = suspension::hematocritProfile(cells, periodicChannel(5.0, 4.0, 5.0), 4);
+  const auto slab = suspension::hematocritProfileInSlab(cells, 4.0, 25.0, 4);
+  EXPECT_EQ(slab.fraction, channel.fraction);
+  EXPECT_EQ(slab.heights, channel.heights);
+  const auto smaller = suspension::hematocritProfileInSlab(cells, 4.0, 10.0, 4);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR(smaller.fraction[k], 2.5 * channel.fraction[k], 1e-15);
+  }
+  // A top through the sphere's middle counts its lower half only: the slab 1 < y < 2.
+  const auto cut = suspension::hematocritProfileInSlab(cells, 2.0, 25.0, 2);
+  EXPECT_NEAR(cut.fraction[0], 0.0, 1e-15); // nodes on the sphere: none below y = 1 but by round-off
+  EXPECT_NEAR(cut.fraction[1], channel.fraction[1], 1e-15);
+  EXPECT_THROW(suspension::hematocritProfileInSlab(cells, 0.0, 25.0, 4), capsula::core::InputError);
+  EXPECT_THROW(suspension::hematocritProfileInSlab(cells, 4.0, 25.0, 0), capsula::core::InputError);
+}
+
+// The thinnest layer is the lowest (highest) node's distance from the lower (upper) wall: for
+// a sphere the icosphere's nodes on the unit sphere put it within the chord sag of d - 1.
+TEST(CellFreeLayer, ThinnestLayerIsTheExtremeNode)
+{
+  const mesh::SurfaceMesh sphere = unitSphereAt({0.5, 2.0, -7.0}, 2);
+  const mesh::SurfaceMesh other = unitSphereAt({3.0, 3.5, 1.0}, 2);
+  const std::vector<const mesh::SurfaceMesh*> cells{&sphere, &other};
+  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+  for (int n = 0; n < sphere.numNodes(); ++n) {
+    lowest = std::min(lowest, sphere.position(n)[1]);
+  }
+  for (int n = 0; n < other.numNodes(); ++n) {
+    highest = std::max(highest, other.position(n)[1]);
+  }
+  const auto channel = suspension::thinnestCellFreeLayer(cells, domain::Domain::channel(6.0));
+  EXPECT_EQ(channel.lower, lowest);
+  EXPECT_EQ(channel.upper, 6.0 - highest);
+  EXPECT_NEAR(channel.lower, 1.0, 0.05); // the sag of a level-2 icosphere is ~0.01
+  EXPECT_NEAR(channel.upper, 1.5, 0.05);
+  const auto wall = suspension::thinnestCellFreeLayer(cells, domain::Domain::aboveWall());
+  EXPECT_EQ(wall.lower, lowest);
+  EXPECT_TRUE(std::isinf(wall.upper));
+  EXPECT_THROW(suspension::thinnestCellFreeLayer(cells, domain::Domain::unbounded()), capsula::core::InputError);
 }
 
 TEST(CellFreeLayer, OneSphereHasTheClosedForm)

@@ -1,11 +1,12 @@
 #pragma once
 // What a scene run writes, where and when: the "Output" sublist of the cell3d and twocell3d
 // decks (Directory, Interval, Snapshots, Snapshot stride, Checkpoint, Progress steps, Flow
-// probes, Wall shear stress/, Stability/), declared and read here, by the run that uses it.
+// probes, Wall shear stress/, Stability/, Suspension/), declared and read here, by the run that uses it.
 // Reading checks what the validators cannot see alone: flow probes given as whole points in
 // the fluid, a wall stress map that needs the wall, a mesh regularisation that triggers
 // before the stability bound stops the run.
 #include <capsula/mesh/Vec3.hpp>
+#include <capsula/run/SuspensionOutput.hpp>
 #include <capsula/scene/SceneDescription.hpp>
 
 #include <Teuchos_ParameterList.hpp>
@@ -33,6 +34,7 @@ struct SceneOutputSettings {
   std::vector<mesh::Vec3> flowProbes;
   WallShearStressOutput wallShearStress;
   double minimumAngle = 5.0; ///< 'Output/Stability/Minimum angle', degrees (0: no bound)
+  SuspensionOutputSettings suspension;
 };
 
 /// Declares the "Output" sublist.

@@ -19,7 +19,8 @@
 // It keeps what summary.json reports (addResults): the last and the steady samples, and the
 // extremes of the stability diagnostics over the outputs of this process. Its checkpoint
 // section holds the metrics' memory (OutputMetrics, "metrics.") and the number of outputs
-// written ("scene.outputs", which the snapshot stride counts).
+// written ("scene.outputs", which the snapshot stride counts), and with
+// 'Output/Suspension/Enabled' the suspension's running average (SuspensionOutput.hpp).
 #include <capsula/io/CheckpointSection.hpp>
 #include <capsula/io/Json.hpp>
 #include <capsula/run/OutputMetrics.hpp>
@@ -27,6 +28,7 @@
 #include <capsula/run/RunOutputs.hpp>
 #include <capsula/run/RunScene.hpp>
 #include <capsula/run/SceneOutputSettings.hpp>
+#include <capsula/run/SuspensionOutput.hpp>
 #include <capsula/run/WallShearStressMap.hpp>
 #include <capsula/scene/SceneDescription.hpp>
 #include <capsula/timeint/TimeIntegrator.hpp>
@@ -96,6 +98,7 @@ private:
   RunOutputs& files_;
   double steadyTolerance_;
   OutputMetrics metrics_;
+  std::optional<SuspensionOutput> suspension_; ///< 'Output/Suspension/Enabled'
   std::function<void()> writeCheckpoint_;
   std::int64_t outputsWritten_ = 0;
   bool steady_ = false;

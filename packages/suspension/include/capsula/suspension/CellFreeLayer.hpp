@@ -25,4 +25,11 @@ struct CellFreeLayer {
 CellFreeLayer cellFreeLayer(const std::vector<const mesh::SurfaceMesh*>& cells, const domain::Domain& domain,
                             int columnsX, int columnsZ);
 
+/// The thinnest cell-free layer, for a domain without a periodic box to lay columns over: the
+/// smallest distance from the lower wall to a cell surface (`lower`) and, in a channel, from
+/// the upper wall (`upper`, else +infinity). The fine-column limit of the smallest column's
+/// layer above, uncapped; exact for the flat-faceted surfaces, whose extreme heights lie at
+/// their corners, the mesh nodes. Throws core::InputError without the lower wall or cells.
+CellFreeLayer thinnestCellFreeLayer(const std::vector<const mesh::SurfaceMesh*>& cells, const domain::Domain& domain);
+
 } // namespace capsula::suspension

@@ -21,4 +21,12 @@ struct HematocritProfile {
 HematocritProfile hematocritProfile(const std::vector<const mesh::SurfaceMesh*>& cells, const domain::Domain& domain,
                                     int numSlabs);
 
+/// The profile of `cells` in `numSlabs` slabs across 0 < y < `top`, each slab's volume
+/// fraction taken over `area` dy (area: the box's extent along x times along z), whatever
+/// the cells' x and z. The parts of cells outside 0 < y < top are not counted. The profile of
+/// a periodic channel is this with top = H and area = L_x L_z. Throws core::InputError
+/// unless top > 0, area > 0 and numSlabs >= 1.
+HematocritProfile hematocritProfileInSlab(const std::vector<const mesh::SurfaceMesh*>& cells, double top, double area,
+                                          int numSlabs);
+
 } // namespace capsula::suspension
