@@ -8,6 +8,9 @@
 //   check_metrics agree FILE_A FILE_B RELATIVE_TOLERANCE COLUMN...
 //       At every time both tables hold (two runs with different output intervals), each
 //       COLUMN within RELATIVE_TOLERANCE * max(|a|, |b|). Prints the largest difference.
+//   check_metrics shifted FILE_A FILE_B COLUMN=OFFSET:TOLERANCE...
+//       At every time both tables hold, |COLUMN_a - COLUMN_b - OFFSET| <= TOLERANCE: the same
+//       run moved by OFFSET (tests/regression/periodic.cmake). Prints the largest deviation.
 //   check_metrics within FILE COLUMN=LOW:HIGH...
 //       Every row must have LOW <= COLUMN <= HIGH, so also be finite (NaN fails); for the
 //       bounds a run must keep all along (tests/regression/stability.cmake). Prints the
@@ -134,6 +137,46 @@ int agree(int argc, char** argv)
   return ok ? 0 : 1;
 }
 
+int shifted(int argc, char** argv)
+{
+  const io::CsvTable a = io::readCsvTable(argv[2]);
+  const io::CsvTable b = io::readCsvTable(argv[3]);
+  const std::size_t timeA = columnIndex(a, "time", argv[2]), timeB = columnIndex(b, "time", argv[3]);
+  bool ok = true;
+  for (int k = 4; k < argc; ++k) {
+    const std::string spec = argv[k];
+    const auto equals = spec.find('='), colon = spec.rfind(':');
+    if (equals == std::string::npos || colon == std::string::npos || colon < equals) {
+      std::cerr << "bad expectation '" << spec << "' (COLUMN=OFFSET:TOLERANCE)\n";
+      return 2;
+    }
+    const std::string name = spec.substr(0, equals);
+    const double offset = std::atof(spec.substr(equals + 1, colon - equals - 1).c_str());
+    const double tolerance = std::atof(spec.substr(colon + 1).c_str());
+    const std::size_t ca = columnIndex(a, name, argv[2]), cb = columnIndex(b, name, argv[3]);
+    double worst = 0.0, worstTime = 0.0;
+    int common = 0;
+    for (const auto& ra : a.rows) {
+      for (const auto& rb : b.rows) {
+        if (ra[timeA] != rb[timeB]) {
+          continue;
+        }
+        ++common;
+        const double deviation = std::abs(ra[ca] - rb[cb] - offset);
+        if (!(deviation <= worst)) { // NaN counts as the worst
+          worst = deviation;
+          worstTime = ra[timeA];
+        }
+      }
+    }
+    const bool pass = common > 1 && worst <= tolerance;
+    ok = ok && pass;
+    std::cout << (pass ? "ok    " : "FAIL  ") << name << " at " << common << " common times: largest |a - b - "
+              << offset << "| " << worst << " at t = " << worstTime << " (allowed " << tolerance << ")\n";
+  }
+  return ok ? 0 : 1;
+}
+
 int within(int argc, char** argv)
 {
   const std::string file = argv[2];
@@ -188,12 +231,16 @@ int main(int argc, char** argv)
     if (mode == "agree" && argc >= 6) {
       return agree(argc, argv);
     }
+    if (mode == "shifted" && argc >= 5) {
+      return shifted(argc, argv);
+    }
     if (mode == "within" && argc >= 4) {
       return within(argc, argv);
     }
     std::cerr << "usage: check_metrics expect FILE CELL COLUMN=VALUE:TOLERANCE...\n"
                  "       check_metrics same FILE_A FILE_B RELATIVE_TOLERANCE\n"
                  "       check_metrics agree FILE_A FILE_B RELATIVE_TOLERANCE COLUMN...\n"
+                 "       check_metrics shifted FILE_A FILE_B COLUMN=OFFSET:TOLERANCE...\n"
                  "       check_metrics within FILE COLUMN=LOW:HIGH...\n";
     return 2;
   } catch (const std::exception& e) {

@@ -25,7 +25,7 @@ std::string describeKernelDomain(const KernelInfo& info)
   const std::string walls = info.domain == FluidDomain::Channel     ? "a channel between two walls"
                             : info.domain == FluidDomain::AboveWall ? "the fluid above the wall y = 0"
                                                                     : "an unbounded fluid";
-  return walls + (info.periodic ? ", periodic along the walls" : " without periodic directions");
+  return walls + (info.periodic ? ", periodic along x and z" : " without periodic directions");
 }
 
 // The keys that describe the deck's domain, with their values ('Wall/Enabled' always, the
@@ -68,19 +68,24 @@ std::string automaticKernel(const std::map<std::string, KernelInfo>& kernels, co
 
 bool servesDomain(const KernelInfo& info, const domain::Domain& domain)
 {
-  return info.domain == fluidOf(domain) && info.periodic == domain.isPeriodic();
+  // A periodic kernel is periodic along both x and z: a domain periodic in one direction
+  // only is served by none of them.
+  const bool doublyPeriodic = domain.isPeriodic(domain::flowAxis) && domain.isPeriodic(domain::vorticityAxis);
+  return info.domain == fluidOf(domain) && (info.periodic ? doublyPeriodic : !domain.isPeriodic());
 }
 
 void declareKernelParameters(Teuchos::ParameterList& operatorList, const std::map<std::string, KernelInfo>& kernels)
 {
   std::vector<std::string> choices{automaticChoice};
-  std::string doc = "The Green's function of the boundary-integral operators. Auto: Wall when 'Wall/Enabled' is "
-                    "true, FreeSpace otherwise.";
+  std::string doc = "The Green's function of the boundary-integral operators. Auto: without a channel and periodic "
+                    "directions, Wall when 'Wall/Enabled' is true and FreeSpace otherwise; else the registered kernel "
+                    "that serves the domain (docs/domains.md).";
   for (const auto& [name, info] : kernels) {
     choices.push_back(name);
     doc += " " + name + ": " + info.description;
   }
-  doc += " A named kernel must be for the fluid 'Wall/Enabled' describes (docs/extending.md).";
+  doc += " A named kernel must be for the domain the deck describes ('Wall/Enabled', 'Wall/Channel height', "
+         "'Domain/Periodic length x', 'z'; docs/extending.md).";
   core::declareChoice(operatorList, "Kernel", automaticChoice, choices, doc);
   for (const auto& [name, info] : kernels) {
     if (info.validParameters.is_null()) {

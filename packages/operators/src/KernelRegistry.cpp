@@ -7,14 +7,15 @@ namespace capsula::operators {
 std::unique_ptr<BoundaryIntegralSolver>
 KernelRegistry::create(const std::string& name, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
                        CellSurfaces surfaces, const DiscretisationParameters& discretisation,
-                       const SolverParameters& solver, const Teuchos::ParameterList& kernelParameters) const
+                       const SolverParameters& solver, const Teuchos::ParameterList& kernelParameters,
+                       const domain::Domain& domain) const
 {
   if (farField_ && !discretisation.farField) {
     DiscretisationParameters withFarField = discretisation;
     withFarField.farField = farField_;
-    return factory(name)(comm, std::move(surfaces), withFarField, solver, kernelParameters);
+    return factory(name)(comm, std::move(surfaces), withFarField, solver, kernelParameters, domain);
   }
-  return factory(name)(comm, std::move(surfaces), discretisation, solver, kernelParameters);
+  return factory(name)(comm, std::move(surfaces), discretisation, solver, kernelParameters, domain);
 }
 
 void registerBuiltInKernels(KernelRegistry& registry)

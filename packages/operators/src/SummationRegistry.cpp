@@ -77,6 +77,8 @@ void declareSummationParameters(Teuchos::ParameterList& operatorList, const Summ
   for (const auto& name : summations.names()) {
     doc += " " + name + ": " + summations.description(name);
   }
+  doc += " A kernel with a far-field sum of its own (the periodic kernels' spectral Ewald sums) uses it under " +
+         std::string(directSummation) + " and refuses the others.";
   core::declareChoice(operatorList, "Summation", directSummation, summations.names(), doc);
   for (const auto& name : summations.names()) {
     const auto& keys = summations.validParameters(name);

@@ -3,12 +3,14 @@
 #include <capsula/core/ParameterDeclaration.hpp>
 #include <capsula/fastsum/TreecodeRegistration.hpp>
 #include <capsula/operators/KernelChoice.hpp>
+#include <capsula/periodic/PeriodicKernelLibrary.hpp>
 
 namespace capsula::run {
 
 OperatorLibraries standardOperatorLibraries()
 {
   OperatorLibraries libraries{operators::builtInKernels(), operators::builtInSummations()};
+  periodic::registerPeriodicKernels(libraries.kernels);
   fastsum::registerTreecodeSummation(libraries.summations);
   return libraries;
 }

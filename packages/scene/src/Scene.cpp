@@ -168,7 +168,8 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
   kernel_ = operators::readKernelChoice(deck.isSublist("Operator") ? deck.sublist("Operator") : noOperatorList,
                                         kernels.infos(), description_.domain);
   const std::string& kernel = kernel_.name;
-  solver_ = kernels.create(kernel, comm_, std::move(surfaces), discretisation, solverParameters, kernel_.parameters);
+  solver_ = kernels.create(kernel, comm_, std::move(surfaces), discretisation, solverParameters, kernel_.parameters,
+                           description_.domain);
   if (solverParameters.warmStart) {
     warmStart_.emplace();
   }

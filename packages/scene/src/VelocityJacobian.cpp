@@ -51,7 +51,8 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   }
   frozen_ = kernels.create(scene.kernelKey(), scene.comm(),
                            operators::CellSurfaces(std::move(cells), description.viscosityRatios()), discretisation,
-                           operators::readSolverParameters(deck.sublist("Solver")), scene.kernelParameters());
+                           operators::readSolverParameters(deck.sublist("Solver")), scene.kernelParameters(),
+                           description.domain);
   const int numNodes = scene.numNodes();
   const auto map = Teuchos::rcp(
       new Tpetra::Map<>(3 * static_cast<Tpetra::global_size_t>(numNodes), 0, scene.comm(), Tpetra::LocallyReplicated));

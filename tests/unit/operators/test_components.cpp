@@ -387,8 +387,14 @@ TEST(KernelChoice, EachDomainGetsAKernelThatServesIt)
       << none;
   registry.add("PeriodicChannel", KernelInfo{"A periodic channel.", FluidDomain::Channel, Teuchos::null, true},
                solverFactory<FreeSpace3DKernel>());
-  EXPECT_EQ(readKernelChoice(automatic, registry.infos(), channelBox).name, "PeriodicChannel");
-  EXPECT_TRUE(servesDomain(registry.infos().at("PeriodicChannel"), channelBox));
+  // A periodic kernel is periodic along x and z: it serves the box periodic along both, and
+  // a box periodic along x only is still served by none.
+  domain::DomainShape doublyPeriodicChannel = periodicChannel;
+  doublyPeriodicChannel.periodZ = 12.0;
+  const domain::Domain channelBoxXZ(doublyPeriodicChannel);
+  EXPECT_EQ(readKernelChoice(automatic, registry.infos(), channelBoxXZ).name, "PeriodicChannel");
+  EXPECT_TRUE(servesDomain(registry.infos().at("PeriodicChannel"), channelBoxXZ));
+  EXPECT_FALSE(servesDomain(registry.infos().at("PeriodicChannel"), channelBox));
   EXPECT_FALSE(servesDomain(registry.infos().at("PeriodicChannel"), domain::Domain::channel(8.0)));
   // The built-in kernels still get the domains they serve with the new one registered.
   EXPECT_EQ(readKernelChoice(automatic, registry.infos(), domain::Domain::aboveWall()).name, "Wall");
@@ -402,7 +408,7 @@ TEST(KernelChoice, EachDomainGetsAKernelThatServesIt)
       << wallInChannel;
   named.set("Kernel", std::string("PeriodicChannel"));
   const std::string periodicAboveWall = refusal(named, domain::Domain::aboveWall());
-  EXPECT_NE(periodicAboveWall.find("is for a channel between two walls, periodic along the walls"), std::string::npos)
+  EXPECT_NE(periodicAboveWall.find("is for a channel between two walls, periodic along x and z"), std::string::npos)
       << periodicAboveWall;
 }
 

@@ -27,6 +27,10 @@ using namespace capsula;
 using namespace capsula::operators;
 using mesh::Vec3;
 
+// The policy instance an integrand evaluates its kernel through (the built-in ones are empty).
+template <class Kernel>
+const Kernel policy{};
+
 const double defaultTolerance = DiscretisationParameters{}.nearSingularTolerance;
 const auto& defaultRule()
 {
@@ -89,8 +93,9 @@ TEST(NearSingular, FlatElementSolidAngleAndDoubleLayerTrace)
       const double exact = flatSolidAngle(x0, p0, p1, p2);
       const double solid =
           integrateAdaptively(element, SolidAngleIntegrand{x0.data()}, defaultRule(), defaultTolerance)[0];
-      const auto dl = integrateAdaptively(element, DoubleLayerIntegrand<FreeSpace3DKernel>{x0.data()}, defaultRule(),
-                                          defaultTolerance);
+      const auto dl =
+          integrateAdaptively(element, DoubleLayerIntegrand<FreeSpace3DKernel>{&policy<FreeSpace3DKernel>, x0.data()},
+                              defaultRule(), defaultTolerance);
       double trace = 0.0;
       for (int a = 0; a < 6; ++a) {
         trace += dl[9 * a] + dl[9 * a + 4] + dl[9 * a + 8];
@@ -120,8 +125,8 @@ void expectCurvedElementMatchesReference(const Vec3& cellCentre)
     const double size = std::max({(x[1] - x[0]).norm(), (x[2] - x[1]).norm(), (x[0] - x[2]).norm()});
     for (const double ratio : {1.0, 0.1, 0.01}) {
       for (const Vec3& x0 : targets(x, ratio * size)) {
-        const LoadedSingleLayerIntegrand<Kernel> single{x0.data(), load};
-        const DoubleLayerIntegrand<Kernel> dbl{x0.data()};
+        const LoadedSingleLayerIntegrand<Kernel> single{&policy<Kernel>, x0.data(), load};
+        const DoubleLayerIntegrand<Kernel> dbl{&policy<Kernel>, x0.data()};
         const auto u = integrateAdaptively(element, single, defaultRule(), defaultTolerance);
         const auto uRef = integrateAdaptively(element, single, fine, 1e-13);
         const auto d = integrateAdaptively(element, dbl, defaultRule(), defaultTolerance);
@@ -153,7 +158,7 @@ TEST(NearSingular, RoundOffAroundZeroStopsAtTheBudget)
   const ElementMap element(x, mesh::shapeParameters(x));
   const mesh::Vec3 foot = mesh::surfacePosition(x, mesh::shapeParameters(x), 1.0 / 3.0, 1.0 / 3.0);
   const Vec3 x0(foot[0], 0.0, foot[2]);
-  const DoubleLayerIntegrand<greens::Wall3D> integrand{x0.data()};
+  const DoubleLayerIntegrand<greens::Wall3D> integrand{&policy<greens::Wall3D>, x0.data()};
   const double poles[1][3] = {{x0[0], x0[1], x0[2]}};
   AdaptiveElementQuadrature<DoubleLayerIntegrand<greens::Wall3D>> adaptive(element, integrand, defaultRule(),
                                                                            defaultTolerance, poles, 1);
@@ -175,7 +180,7 @@ TEST(NearSingular, RefinementIsLocal)
   std::vector<int> work;
   for (const double ratio : {1e-2, 1e-3, 1e-4}) {
     const Vec3 x0 = foot.position + ratio * (x[1] - x[0]).norm() * foot.normal;
-    const SingleLayerIntegrand<FreeSpace3DKernel> integrand{x0.data()};
+    const SingleLayerIntegrand<FreeSpace3DKernel> integrand{&policy<FreeSpace3DKernel>, x0.data()};
     const double poles[1][3] = {{x0[0], x0[1], x0[2]}};
     AdaptiveElementQuadrature<SingleLayerIntegrand<FreeSpace3DKernel>> adaptive(element, integrand, defaultRule(),
                                                                                 defaultTolerance, poles, 1);

@@ -101,9 +101,9 @@ void registerScaledStokesletKernel(operators::KernelRegistry& kernels)
                                     operators::FluidDomain::Unbounded, scaledStokesletParameters()},
               [](const Teuchos::RCP<const Teuchos::Comm<int>>& comm, operators::CellSurfaces surfaces,
                  const operators::DiscretisationParameters& discretisation, const operators::SolverParameters& solver,
-                 const Teuchos::ParameterList& settings) {
+                 const Teuchos::ParameterList& settings, const domain::Domain& domain) {
                 auto freeSpace = operators::solverFactory<operators::FreeSpace3DKernel>()(
-                    comm, std::move(surfaces), discretisation, solver, settings);
+                    comm, std::move(surfaces), discretisation, solver, settings, domain);
                 return std::unique_ptr<BoundaryIntegralSolver>(
                     new ScaledStokesletSolver(std::move(freeSpace), settings.get<double>("Stokeslet scale")));
               });

@@ -126,17 +126,18 @@ TEST(OperatorPlugins, UnknownNamesListTheRegisteredOnes)
   const OperatorLibraries libraries = librariesWithToyKernel();
   // The deck: the choices come from the registries.
   const std::string kernel = inputErrorMessage([&] { toyDeck(libraries, false, {{"Kernel", "ScaledFreeSpac"}}); });
-  EXPECT_NE(kernel.find("one of: Auto, FreeSpace, ScaledFreeSpace, Wall"), std::string::npos) << kernel;
+  EXPECT_NE(kernel.find("one of: Auto, FreeSpace, Periodic, PeriodicWall, ScaledFreeSpace, Wall"), std::string::npos)
+      << kernel;
   EXPECT_NE(kernel.find("did you mean \"ScaledFreeSpace\""), std::string::npos) << kernel;
   const std::string summation = inputErrorMessage([&] { toyDeck(libraries, false, {{"Summation", "FMM"}}); });
   EXPECT_NE(summation.find("one of: Direct, Treecode"), std::string::npos) << summation;
   // A list no validator saw: the registry's own message.
   Teuchos::ParameterList operatorList;
-  operatorList.set("Kernel", "Periodic");
+  operatorList.set("Kernel", "Hasimoto");
   const std::string unvalidated =
       inputErrorMessage([&] { operators::readKernelChoice(operatorList, libraries.kernels.infos(), false); });
-  EXPECT_NE(unvalidated.find("no Green's function kernel named 'Periodic'; registered: FreeSpace, ScaledFreeSpace, "
-                             "Wall."),
+  EXPECT_NE(unvalidated.find("no Green's function kernel named 'Hasimoto'; registered: FreeSpace, Periodic, "
+                             "PeriodicWall, ScaledFreeSpace, Wall."),
             std::string::npos)
       << unvalidated;
 }

@@ -111,12 +111,13 @@ struct SingleLayerIntegrand {
   static constexpr std::array<int, 2> groups = {0, 9};
   using Value = std::array<double, size>;
 
+  const Kernel* kernel;
   const double* x0;
 
   void evaluate(const ElementSample& s, Value& value) const
   {
     double G[3][3];
-    Kernel::stokeslet(s.x, x0, G);
+    kernel->stokeslet(s.x, x0, G);
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
         value[3 * i + j] = s.weight * G[i][j];
@@ -134,12 +135,13 @@ struct NodalSingleLayerIntegrand {
   static constexpr std::array<int, 2> groups = {0, 54};
   using Value = std::array<double, size>;
 
+  const Kernel* kernel;
   const double* x0;
 
   void evaluate(const ElementSample& s, Value& value) const
   {
     double G[3][3];
-    Kernel::stokeslet(s.x, x0, G);
+    kernel->stokeslet(s.x, x0, G);
     for (int a = 0; a < 6; ++a) {
       const double w = s.weight * s.phi[a];
       for (int i = 0; i < 3; ++i) {
@@ -160,6 +162,7 @@ struct LoadedSingleLayerIntegrand {
   static constexpr std::array<int, 2> groups = {0, 3};
   using Value = std::array<double, size>;
 
+  const Kernel* kernel;
   const double* x0;
   const double* load; ///< Delta f at the element's six nodes, [3 a + i] (LoadDensity.hpp)
 
@@ -175,7 +178,7 @@ struct LoadedSingleLayerIntegrand {
       fi *= s.weight;
     }
     value = {0.0, 0.0, 0.0};
-    addSingleLayerTerm<Kernel>(s.x, x0, f, value.data());
+    addSingleLayerTerm(*kernel, s.x, x0, f, value.data());
   }
 };
 
@@ -187,12 +190,13 @@ struct DoubleLayerIntegrand {
   static constexpr std::array<int, 2> groups = {0, 54};
   using Value = std::array<double, size>;
 
+  const Kernel* kernel;
   const double* x0;
 
   void evaluate(const ElementSample& s, Value& value) const
   {
     double Tn[9] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    addDoubleLayerMatrix<Kernel>(s.x, x0, s.weightedNormal, Tn);
+    addDoubleLayerMatrix(*kernel, s.x, x0, s.weightedNormal, Tn);
     for (int a = 0; a < 6; ++a) {
       for (int k = 0; k < 9; ++k) {
         value[9 * a + k] = s.phi[a] * Tn[k];

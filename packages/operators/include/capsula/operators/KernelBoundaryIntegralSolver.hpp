@@ -23,9 +23,11 @@ namespace capsula::operators {
 template <class Kernel>
 class KernelBoundaryIntegralSolver final : public BoundaryIntegralSolver {
 public:
-  /// The surfaces' current positions are the first geometry.
+  /// The surfaces' current positions are the first geometry; `kernel` is the policy
+  /// instance (its periods, for a periodic kernel).
   KernelBoundaryIntegralSolver(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
-                               const DiscretisationParameters& discretisation, const SolverParameters& solver);
+                               const DiscretisationParameters& discretisation, const SolverParameters& solver,
+                               Kernel kernel = Kernel{});
 
   std::string kernelName() const override { return Kernel::name; }
   const CellSurfaces& surfaces() const override { return surfaces_; }
@@ -66,13 +68,14 @@ private:
   Teuchos::RCP<Teuchos::Time> singleLayerTimer_, solveTimer_, flowTimer_;
 };
 
-/// The factory a KernelRegistry stores for `Kernel` (a policy has no settings of its own).
+/// The factory a KernelRegistry stores for `Kernel` (a policy without settings or state of
+/// its own, default-constructed; a kernel with state writes its own factory).
 template <class Kernel>
 SolverFactory solverFactory()
 {
   return [](const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
             const DiscretisationParameters& discretisation, const SolverParameters& solver,
-            const Teuchos::ParameterList& /*kernelParameters*/) {
+            const Teuchos::ParameterList& /*kernelParameters*/, const domain::Domain& /*domain*/) {
     return std::unique_ptr<BoundaryIntegralSolver>(
         new KernelBoundaryIntegralSolver<Kernel>(comm, std::move(surfaces), discretisation, solver));
   };
@@ -85,11 +88,11 @@ template <class Kernel>
 KernelBoundaryIntegralSolver<Kernel>::KernelBoundaryIntegralSolver(const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
                                                                    CellSurfaces surfaces,
                                                                    const DiscretisationParameters& discretisation,
-                                                                   const SolverParameters& solver)
+                                                                   const SolverParameters& solver, Kernel kernel)
     : distribution_(comm, surfaces.numNodes()),
       surfaces_(std::move(surfaces)),
       solverParameters_(solver),
-      potentials_(discretisation),
+      potentials_(discretisation, std::move(kernel)),
       singleLayerTimer_(core::timer("Single layer")),
       solveTimer_(core::timer("Viscosity-ratio GMRES solve")),
       flowTimer_(core::timer("Flow velocity at points"))
@@ -218,7 +221,7 @@ void KernelBoundaryIntegralSolver<Kernel>::requireInFluid(const std::vector<doub
   core::require<core::InputError>(points.size() % 3 == 0, "Flow points come as (x, y, z) triples; got ", points.size(),
                                   " numbers.");
   for (std::size_t p = 0; p < points.size(); p += 3) {
-    core::require<core::InputError>(KernelTraits<Kernel>::inFluid(&points[p]), "The flow point (", points[p], ", ",
+    core::require<core::InputError>(potentials_.traits().inFluid(&points[p]), "The flow point (", points[p], ", ",
                                     points[p + 1], ", ", points[p + 2], ") lies outside the fluid domain of the ",
                                     Kernel::name, " kernel.");
   }

@@ -32,9 +32,9 @@ struct KernelInfo {
   /// The kernel's own keys (defaults, validators, doc strings), declared as the deck
   /// sublist 'Operator/<name>' and handed to the factory; null: the kernel has none.
   Teuchos::RCP<const Teuchos::ParameterList> validParameters;
-  /// true: the kernel is periodic along the walls, with the periods the deck gives
-  /// ('Domain/Periodic length x', 'z'); false: it serves only domains without a periodic
-  /// direction.
+  /// true: the kernel is periodic along x and z (the walls' directions), with the periods
+  /// the deck gives ('Domain/Periodic length x', 'z'; both set); false: it serves only
+  /// domains without a periodic direction.
   bool periodic = false;
 };
 

@@ -11,6 +11,8 @@
 #include <capsula/operators/KernelCatalogue.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 
+#include <capsula/domain/Domain.hpp>
+
 #include <Teuchos_ParameterList.hpp>
 
 #include <functional>
@@ -20,11 +22,13 @@
 namespace capsula::operators {
 
 /// Builds the operator of one kernel; `kernelParameters` are its settings ('Operator/<name>',
-/// defaults filled in; empty for a kernel without settings).
+/// defaults filled in; empty for a kernel without settings) and `domain` the deck's fluid
+/// domain (a periodic kernel takes its periods from it; KernelChoice has checked that the
+/// kernel serves it).
 using SolverFactory = std::function<std::unique_ptr<BoundaryIntegralSolver>(
     const Teuchos::RCP<const Teuchos::Comm<int>>& comm, CellSurfaces surfaces,
     const DiscretisationParameters& discretisation, const SolverParameters& solver,
-    const Teuchos::ParameterList& kernelParameters)>;
+    const Teuchos::ParameterList& kernelParameters, const domain::Domain& domain)>;
 
 class KernelRegistry : public KernelCatalogue<SolverFactory> {
 public:
@@ -34,14 +38,15 @@ public:
   const std::shared_ptr<const FarFieldBackEnd>& farField() const { return farField_; }
 
   /// A solver for the kernel `name` with its settings `kernelParameters`
-  /// (KernelChoice::parameters). Throws core::InputError naming the registered kernels
+  /// (KernelChoice::parameters) in the fluid `domain`. Throws core::InputError naming the registered kernels
   /// (and the closest one) if there is none by that name, or naming 'Operator/Summation'
   /// if the far-field back-end does not support that kernel.
   std::unique_ptr<BoundaryIntegralSolver> create(const std::string& name,
                                                  const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
                                                  CellSurfaces surfaces, const DiscretisationParameters& discretisation,
                                                  const SolverParameters& solver,
-                                                 const Teuchos::ParameterList& kernelParameters = {}) const;
+                                                 const Teuchos::ParameterList& kernelParameters = {},
+                                                 const domain::Domain& domain = domain::Domain::unbounded()) const;
 
 private:
   std::shared_ptr<const FarFieldBackEnd> farField_;

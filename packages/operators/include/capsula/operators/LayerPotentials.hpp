@@ -58,6 +58,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+#include <utility>
 #include <limits>
 #include <memory>
 #include <typeinfo>
@@ -68,10 +70,11 @@ namespace capsula::operators {
 template <class Kernel>
 class LayerPotentials {
 public:
-  /// The regular sums go to the back-end of parameters.farField (DirectSummation<Kernel>
-  /// when null); throws core::InputError naming 'Operator/Summation' if it does not
-  /// support Kernel.
-  explicit LayerPotentials(const DiscretisationParameters& parameters);
+  /// The regular sums go to the back-end of parameters.farField; when that is null, to the
+  /// kernel's own summation if the policy has one (kernel.farFieldSummation(), a periodic
+  /// kernel's Ewald sum), else to DirectSummation<Kernel>. Throws core::InputError naming
+  /// 'Operator/Summation' if the back-end does not support Kernel.
+  explicit LayerPotentials(const DiscretisationParameters& parameters, Kernel kernel = Kernel{});
 
   /// Sets the node targets, the global nodes [firstTargetNode, firstTargetNode +
   /// numTargetNodes) (the rows this rank owns), and the topology of `surfaces`, then
@@ -85,6 +88,9 @@ public:
   const SurfaceQuadrature& quadrature() const { return quadrature_; }
   const DiscretisationParameters& parameters() const { return parameters_; }
   const FarFieldSummation& farField() const { return *farField_; }
+  /// The policy instance every kernel evaluation goes through, and its traits.
+  const Kernel& kernel() const { return kernel_; }
+  const KernelTraits<Kernel>& traits() const { return traits_; }
   int firstTargetNode() const { return firstTarget_; }
   int numTargetNodes() const { return numTargets_; }
 
@@ -180,13 +186,17 @@ private:
   void buildDoubleLayerSources(const double* density);
   SingleLayerSources singleLayerSources() const;
   DoubleLayerSources doubleLayerSources() const;
-  static void startPointBlock(TargetBlock& block, const double* points, int first, int n);
+  // The block of points [first, first + targetBlockSize) of n, each moved to its periodic
+  // image nearest to `reference` (itself for a kernel without periods).
+  void startPointBlock(TargetBlock& block, const double* points, int first, int n, const double* reference) const;
   // result = far + the near-singular corrections at each of n points; addNear(m, x0, u)
   // adds element m's correction for the target x0 to u[3].
   template <class AddNear>
   void addNearCorrectionsAtPoints(const double* points, int n, const std::vector<double>& far, double* result,
                                   const AddNear& addNear) const;
 
+  Kernel kernel_;
+  KernelTraits<Kernel> traits_;
   DiscretisationParameters parameters_;
   SurfaceQuadrature quadrature_;
   std::vector<ElementMap> elementMaps_; // per element, for the special rules

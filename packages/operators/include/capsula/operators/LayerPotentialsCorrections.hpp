@@ -4,6 +4,31 @@
 
 namespace capsula::operators {
 
+namespace detail {
+
+// Moves the `keep` poles closest to `centre` to the front of poles[0 .. numPoles).
+template <std::size_t N>
+void keepClosestPoles(double (&poles)[N][3], int numPoles, const double* centre, int keep)
+{
+  const auto distance2 = [centre](const double* p) {
+    const double dx = p[0] - centre[0], dy = p[1] - centre[1], dz = p[2] - centre[2];
+    return dx * dx + dy * dy + dz * dz;
+  };
+  for (int k = 0; k < keep && k < numPoles; ++k) {
+    int best = k;
+    for (int p = k + 1; p < numPoles; ++p) {
+      if (distance2(poles[p]) < distance2(poles[best])) {
+        best = p;
+      }
+    }
+    for (int i = 0; i < 3; ++i) {
+      std::swap(poles[k][i], poles[best][i]);
+    }
+  }
+}
+
+} // namespace detail
+
 template <class Kernel>
 template <class Integrand>
 typename Integrand::Value LayerPotentials<Kernel>::regularRule(int m, const Integrand& integrand) const
@@ -35,11 +60,18 @@ template <class Integrand>
 typename Integrand::Value LayerPotentials<Kernel>::nearCorrection(int m, const Integrand& integrand) const
 {
   const ElementMap& element = elementMaps_[m];
+  // The poles next to the element: the target's image nearest to it (the target itself
+  // unless the kernel is periodic) and that image's images; where there are more than the
+  // subdivision takes, the closest to the element.
   double poles[KernelTraits<Kernel>::maxImages + 1][3];
-  for (int i = 0; i < 3; ++i) {
-    poles[0][i] = integrand.x0[i];
+  double centre[3];
+  detail::elementCentre(quadrature_.elements(), m, centre);
+  traits_.nearestImage(integrand.x0, centre, poles[0]);
+  int numPoles = 1 + traits_.images(poles[0], poles + 1);
+  if (numPoles > maxPoles) {
+    detail::keepClosestPoles(poles, numPoles, centre, maxPoles);
+    numPoles = maxPoles;
   }
-  const int numPoles = 1 + KernelTraits<Kernel>::images(integrand.x0, poles + 1);
   auto value = AdaptiveElementQuadrature<Integrand>(element, integrand, quadrature_.rule(),
                                                     parameters_.nearSingularTolerance, poles, numPoles)
                    .integrate();
@@ -138,7 +170,7 @@ void LayerPotentials<Kernel>::prepareCorrections(bool subtractOwn, std::vector<T
 #pragma omp for schedule(dynamic, 16)
 #endif
     for (int t = 0; t < numTargets_; ++t) {
-      correctTarget(t, Integrand{positions + 3 * (firstTarget_ + t)}, subtractOwn, corrections[t], rule);
+      correctTarget(t, Integrand{&kernel_, positions + 3 * (firstTarget_ + t)}, subtractOwn, corrections[t], rule);
     }
   }
 }

@@ -144,12 +144,12 @@ void LayerPotentials<Kernel>::singleLayerAtNodes(const LoadDensity& load, double
         }
       };
       for (const auto& [m, localNode] : neighbourhoods_[t].incident) {
-        add(singularCorrection(m, localNode, LoadedSingleLayerIntegrand<Kernel>{x0, load.element(m)}, rule));
+        add(singularCorrection(m, localNode, LoadedSingleLayerIntegrand<Kernel>{&kernel_, x0, load.element(m)}, rule));
       }
       const std::vector<int>& near = nodeNear_[t];
       nearCount += static_cast<long long>(near.size());
       for (const int m : near) {
-        add(nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{x0, load.element(m)}));
+        add(nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{&kernel_, x0, load.element(m)}));
       }
       for (int j = 0; j < 3; ++j) {
         result[3 * t + j] = u[j];
@@ -226,7 +226,7 @@ void LayerPotentials<Kernel>::singleLayerAtPoints(const double* points, int n, c
   std::vector<double> far(3 * static_cast<std::size_t>(n));
   farField_->singleLayer(singleLayerSources(), points, n, far.data());
   addNearCorrectionsAtPoints(points, n, far, result, [&](int m, const double* x0, double* u) {
-    const auto correction = nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{x0, load.element(m)});
+    const auto correction = nearCorrection(m, LoadedSingleLayerIntegrand<Kernel>{&kernel_, x0, load.element(m)});
     for (int j = 0; j < 3; ++j) {
       u[j] += correction[j];
     }
@@ -240,7 +240,7 @@ void LayerPotentials<Kernel>::doubleLayerAtPoints(const double* points, int n, c
   std::vector<double> far(3 * static_cast<std::size_t>(n));
   farField_->doubleLayer(doubleLayerSources(), points, nullptr, nullptr, n, far.data());
   addNearCorrectionsAtPoints(points, n, far, result, [&](int m, const double* x0, double* u) {
-    const auto correction = nearCorrection(m, DoubleLayerIntegrand<Kernel>{x0});
+    const auto correction = nearCorrection(m, DoubleLayerIntegrand<Kernel>{&kernel_, x0});
     const auto& nodes = quadrature_.elements().nodes[m];
     for (int a = 0; a < 6; ++a) {
       detail::addTransposedProduct(&correction[9 * a], density + 3 * nodes[a], u);
@@ -260,7 +260,7 @@ void LayerPotentials<Kernel>::solidAnglesAtPoints(const double* points, int n, d
   for (int first = 0; first < n; first += targetBlockSize) {
     TargetBlock block;
     for (int c = 0; c < numCells; ++c) {
-      startPointBlock(block, points, first, n);
+      startPointBlock(block, points, first, n, cellReach_[c].centre);
       addSolidAngleSums(block, p.x.data(), p.y.data(), p.z.data(), p.nx.data(), p.ny.data(), p.nz.data(),
                         cells_[c].firstElement * nq, cells_[c].endElement * nq);
       for (int k = 0; k < block.size; ++k) {
@@ -276,20 +276,26 @@ void LayerPotentials<Kernel>::solidAnglesAtPoints(const double* points, int n, d
         while (m >= cells_[c].endElement) {
           ++c;
         }
-        omega[numCells * (first + k) + c] += nearCorrection(m, SolidAngleIntegrand{x0})[0];
+        double centre[3], image[3];
+        detail::elementCentre(quadrature_.elements(), m, centre);
+        traits_.nearestImage(x0, centre, image);
+        omega[numCells * (first + k) + c] += nearCorrection(m, SolidAngleIntegrand{image})[0];
       }
     }
   }
 }
 
 template <class Kernel>
-void LayerPotentials<Kernel>::startPointBlock(TargetBlock& block, const double* points, int first, int n)
+void LayerPotentials<Kernel>::startPointBlock(TargetBlock& block, const double* points, int first, int n,
+                                              const double* reference) const
 {
   block.start(std::min(targetBlockSize, n - first));
   for (int k = 0; k < block.size; ++k) {
-    block.x[k] = points[3 * (first + k)];
-    block.y[k] = points[3 * (first + k) + 1];
-    block.z[k] = points[3 * (first + k) + 2];
+    double image[3];
+    traits_.nearestImage(points + 3 * (first + k), reference, image);
+    block.x[k] = image[0];
+    block.y[k] = image[1];
+    block.z[k] = image[2];
   }
   block.pad();
 }

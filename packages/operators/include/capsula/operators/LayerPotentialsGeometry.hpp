@@ -41,22 +41,43 @@ std::vector<NodeBlock> nodeBlocks(const CellRanges& cells, int firstTarget, int 
   return blocks;
 }
 
+template <class Kernel, class = void>
+struct HasOwnFarField : std::false_type {};
+template <class Kernel>
+struct HasOwnFarField<Kernel, std::void_t<decltype(std::declval<const Kernel&>().farFieldSummation())>>
+    : std::true_type {};
+
+// The centre of element m's bounding sphere.
+inline void elementCentre(const ElementData& elements, int m, double centre[3])
+{
+  centre[0] = elements.cx[m];
+  centre[1] = elements.cy[m];
+  centre[2] = elements.cz[m];
+}
+
 } // namespace detail
 
 template <class Kernel>
-LayerPotentials<Kernel>::LayerPotentials(const DiscretisationParameters& parameters)
-    : parameters_(parameters),
+LayerPotentials<Kernel>::LayerPotentials(const DiscretisationParameters& parameters, Kernel kernel)
+    : kernel_(std::move(kernel)),
+      traits_(kernelTraits(kernel_)),
+      parameters_(parameters),
       quadrature_(parameters.quadraturePoints),
       gauss_(quadrature::gaussLegendre(parameters.singularQuadraturePoints, 0.0, 1.0))
 {
-  if (parameters.farField) {
+  if constexpr (detail::HasOwnFarField<Kernel>::value) {
+    if (!parameters.farField) {
+      farField_ = kernel_.farFieldSummation();
+    }
+  }
+  if (!farField_ && parameters.farField) {
     farField_ = parameters.farField->forKernel(typeid(Kernel), Kernel::name);
     core::require<core::InputError>(farField_ != nullptr, "'Operator/Summation' = ", parameters.farField->name(),
                                     " does not support the ", Kernel::name,
                                     " kernel ('Operator/Kernel'); use 'Operator/Summation' = Direct or another "
                                     "kernel.");
-  } else {
-    farField_ = std::make_unique<DirectSummation<Kernel>>();
+  } else if (!farField_) {
+    farField_ = std::make_unique<DirectSummation<Kernel>>(kernel_);
   }
   validate(parameters_);
   for (int vertex = 0; vertex < 3; ++vertex) {
@@ -124,7 +145,7 @@ void LayerPotentials<Kernel>::update(const CellSurfaces& surfaces)
   }
   const double* positions = quadrature_.nodePositions().data();
   for (int g = 0; g < surfaces.numNodes(); ++g) {
-    core::require<core::InputError>(KernelTraits<Kernel>::inFluid(positions + 3 * g), "Node ", g,
+    core::require<core::InputError>(traits_.inFluid(positions + 3 * g), "Node ", g,
                                     " of the scene lies outside the fluid domain of the ", Kernel::name, " kernel (at ",
                                     positions[3 * g], ", ", positions[3 * g + 1], ", ", positions[3 * g + 2], ").");
   }
@@ -183,16 +204,25 @@ void LayerPotentials<Kernel>::findNearElements(const double* x0, const Neighbour
 {
   near.clear();
   const double reach = parameters_.nearSingularDistance;
-  if (reach <= 0.0 || KernelTraits<Kernel>::vanishesAt(x0)) {
+  if (reach <= 0.0 || traits_.vanishesAt(x0)) {
     return;
   }
   double poles[KernelTraits<Kernel>::maxImages + 1][3];
   for (int i = 0; i < 3; ++i) {
     poles[0][i] = x0[i];
   }
-  const int numPoles = 1 + KernelTraits<Kernel>::images(x0, poles + 1);
+  int numPoles = 1 + traits_.images(x0, poles + 1);
   for (std::size_t c = 0; c < cells_.size(); ++c) {
     const CellReach& cell = cellReach_[c];
+    // A periodic kernel: the pole's image next to this cell, and that image's images.
+    double shifted[3];
+    traits_.nearestImage(x0, cell.centre, shifted);
+    if (shifted[0] != poles[0][0] || shifted[1] != poles[0][1] || shifted[2] != poles[0][2]) {
+      for (int i = 0; i < 3; ++i) {
+        poles[0][i] = shifted[i];
+      }
+      numPoles = 1 + traits_.images(shifted, poles + 1);
+    }
     bool reached = false;
     for (int p = 0; p < numPoles; ++p) {
       const double dx = poles[p][0] - cell.centre[0], dy = poles[p][1] - cell.centre[1],

@@ -13,6 +13,7 @@
 #include <capsula/operators/KernelTraits.hpp>
 
 #include <algorithm>
+#include <type_traits>
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && (__GNUC__ >= 11) &&       \
     !defined(CAPSULA_NO_KERNEL_CLONES)
@@ -82,7 +83,8 @@ struct DoubleLayerSources {
 
 /// u_t,j += sum_{q in [begin, end)} G_ij(x_q, x_t) f_q,i for every target t of the block.
 template <class Kernel>
-CAPSULA_KERNEL_CLONES void addSingleLayerSums(TargetBlock& block, const SingleLayerSources& s, int begin, int end)
+CAPSULA_KERNEL_CLONES void addSingleLayerSums(const Kernel& kernel, TargetBlock& block, const SingleLayerSources& s,
+                                              int begin, int end)
 {
   const int n = block.paddedSize;
   for (int q = begin; q < end; ++q) {
@@ -91,7 +93,7 @@ CAPSULA_KERNEL_CLONES void addSingleLayerSums(TargetBlock& block, const SingleLa
     for (int t = 0; t < n; ++t) {
       const double x0[3] = {block.x[t], block.y[t], block.z[t]};
       double u[3] = {0.0, 0.0, 0.0};
-      addSingleLayerTerm<Kernel>(x, x0, f, u);
+      addSingleLayerTerm(kernel, x, x0, f, u);
       block.ux[t] += u[0];
       block.uy[t] += u[1];
       block.uz[t] += u[2];
@@ -102,7 +104,8 @@ CAPSULA_KERNEL_CLONES void addSingleLayerSums(TargetBlock& block, const SingleLa
 /// u_t,j += sum_q T_ijk(x_q, x_t) (v_q - s_t)_i a_q,k, with s_t the block's subtracted
 /// density if SubtractTargetDensity (the singularity subtraction of eq 3.44), else 0.
 template <class Kernel, bool SubtractTargetDensity>
-CAPSULA_KERNEL_CLONES void addDoubleLayerSums(TargetBlock& block, const DoubleLayerSources& s, int begin, int end)
+CAPSULA_KERNEL_CLONES void addDoubleLayerSums(const Kernel& kernel, TargetBlock& block, const DoubleLayerSources& s,
+                                              int begin, int end)
 {
   const int n = block.paddedSize;
   for (int q = begin; q < end; ++q) {
@@ -118,12 +121,26 @@ CAPSULA_KERNEL_CLONES void addDoubleLayerSums(TargetBlock& block, const DoubleLa
         density[2] -= block.sz[t];
       }
       double u[3] = {0.0, 0.0, 0.0};
-      addDoubleLayerTerm<Kernel>(x, x0, density, a, u);
+      addDoubleLayerTerm(kernel, x, x0, density, a, u);
       block.ux[t] += u[0];
       block.uy[t] += u[1];
       block.uz[t] += u[2];
     }
   }
+}
+
+/// The two sums for a policy without state (the built-in ones, the treecode's).
+template <class Kernel>
+void addSingleLayerSums(TargetBlock& block, const SingleLayerSources& s, int begin, int end)
+{
+  static_assert(std::is_empty_v<Kernel>, "a policy with state is called through its instance");
+  addSingleLayerSums(Kernel{}, block, s, begin, end);
+}
+template <class Kernel, bool SubtractTargetDensity>
+void addDoubleLayerSums(TargetBlock& block, const DoubleLayerSources& s, int begin, int end)
+{
+  static_assert(std::is_empty_v<Kernel>, "a policy with state is called through its instance");
+  addDoubleLayerSums<Kernel, SubtractTargetDensity>(Kernel{}, block, s, begin, end);
 }
 
 /// ux_t += sum_q (x_q - x_t) . a_q / |x_q - x_t|^3: the solid angle of the elements.

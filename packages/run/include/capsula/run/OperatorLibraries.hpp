@@ -15,8 +15,8 @@ struct OperatorLibraries {
   operators::SummationRegistry summations;
 };
 
-/// What cell3d and twocell3d offer: the built-in kernels (FreeSpace, Wall), Direct and
-/// fastsum's Treecode.
+/// What cell3d and twocell3d offer: the built-in kernels (FreeSpace, Wall), the periodic
+/// ones (Periodic, PeriodicWall: capsula::periodic), Direct and fastsum's Treecode.
 OperatorLibraries standardOperatorLibraries();
 
 /// Declares the deck's "Operator" sublist in `valid`: 'Kernel', 'Summation' and the

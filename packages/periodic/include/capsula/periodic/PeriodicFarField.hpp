@@ -1,0 +1,49 @@
+#pragma once
+// The regular (far-field) sums of the periodic kernels (PeriodicKernels.hpp) by the spectral
+// Ewald method of capsula::ewald, to the kernel's tolerance (relative to the largest
+// velocity):
+//  - single layer: u_t = sum_q G(x_t, x_q) f_q over every quadrature point of every cell,
+//    G the periodic Stokeslet (SpectralEwald2P) or the periodic wall's (SpectralEwaldWall2P);
+//  - double layer (periodic fluid only): u_t,j = sum_q T_ijk(x_q - x_t) v_q,i a_q,k
+//    = -sum_q T_jik(x_t - x_q) (v_q a_q)_ik, T being odd and symmetric, one stresslet sum
+//    (SpectralEwaldStresslet2P) with the source tensors S_q = v_q a_q^T; the singularity
+//    subtraction on a target's own cell (FarFieldSummation.hpp) is then
+//      - s_t sum_{q in own cell} T(x_q, x_t) a_q,
+//    summed directly per cell with the LOCAL kernel (free space) in the cell's own,
+//    unfolded coordinates: the periodic T minus the local one is a Stokes flow without a
+//    singularity inside the cell, whose integral of T n over the closed surface is zero, so
+//    the difference is the regular rule's error on a smooth integrand.
+// Every rank sums all sources for its own targets, as the direct sums and the treecode do;
+// positions are folded into the box first (the sums are periodic).
+#include <capsula/operators/FarFieldSummation.hpp>
+#include <capsula/periodic/PeriodicKernels.hpp>
+
+#include <string>
+#include <vector>
+
+namespace capsula::periodic {
+
+class PeriodicFarField final : public operators::FarFieldSummation {
+public:
+  /// `wall`: the periodic wall's Stokeslet (no double layer); else the periodic fluid's.
+  PeriodicFarField(const PeriodicBox& box, double tolerance, bool wall);
+
+  std::string name() const override { return "Spectral Ewald"; }
+  void setSources(const double* x, const double* y, const double* z, const std::vector<int>& cellPointOffsets) override;
+  void singleLayer(const operators::SingleLayerSources& sources, const double* targets, int n, double* result) override;
+  /// Throws core::InputError for the periodic wall (no fast sum of its stresslet).
+  void doubleLayer(const operators::DoubleLayerSources& sources, const double* targets, const int* targetCells,
+                   const double* subtracted, int n, double* result) override;
+
+private:
+  std::vector<double> foldedTargets(const double* targets, int n) const;
+
+  PeriodicBox box_;
+  double tolerance_;
+  bool wall_;
+  const double *x_ = nullptr, *y_ = nullptr, *z_ = nullptr;
+  std::vector<int> offsets_;
+  std::vector<double> folded_; // the sources folded into the box, 3 per point
+};
+
+} // namespace capsula::periodic

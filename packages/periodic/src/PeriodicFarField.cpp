@@ -1,0 +1,112 @@
+#include "capsula/periodic/PeriodicFarField.hpp"
+
+#include <capsula/core/Error.hpp>
+#include <capsula/ewald/SpectralEwald2P.hpp>
+#include <capsula/ewald/SpectralEwaldStresslet2P.hpp>
+#include <capsula/ewald/SpectralEwaldWall2P.hpp>
+#include <capsula/operators/DirectSummation.hpp>
+#include <capsula/operators/RegularSums.hpp>
+
+#include <algorithm>
+
+namespace capsula::periodic {
+
+PeriodicFarField::PeriodicFarField(const PeriodicBox& box, double tolerance, bool wall)
+    : box_(box), tolerance_(tolerance), wall_(wall)
+{}
+
+void PeriodicFarField::setSources(const double* x, const double* y, const double* z,
+                                  const std::vector<int>& cellPointOffsets)
+{
+  x_ = x;
+  y_ = y;
+  z_ = z;
+  offsets_ = cellPointOffsets;
+  const int numPoints = offsets_.empty() ? 0 : offsets_.back();
+  folded_.resize(3 * static_cast<std::size_t>(numPoints));
+  for (int q = 0; q < numPoints; ++q) {
+    const double point[3] = {x[q], y[q], z[q]};
+    box_.fold(point, &folded_[3 * static_cast<std::size_t>(q)]);
+  }
+}
+
+std::vector<double> PeriodicFarField::foldedTargets(const double* targets, int n) const
+{
+  std::vector<double> folded(3 * static_cast<std::size_t>(n));
+  for (int t = 0; t < n; ++t) {
+    box_.fold(targets + 3 * t, &folded[3 * static_cast<std::size_t>(t)]);
+  }
+  return folded;
+}
+
+void PeriodicFarField::singleLayer(const operators::SingleLayerSources& sources, const double* targets, int n,
+                                   double* result)
+{
+  if (n == 0) {
+    return;
+  }
+  const std::size_t numPoints = folded_.size() / 3;
+  std::vector<double> forces(3 * numPoints);
+  for (std::size_t q = 0; q < numPoints; ++q) {
+    forces[3 * q] = sources.fx[q];
+    forces[3 * q + 1] = sources.fy[q];
+    forces[3 * q + 2] = sources.fz[q];
+  }
+  const ewald::PeriodicLayer layer{box_.lengthX, box_.lengthZ};
+  const std::vector<double> u =
+      wall_ ? ewald::spectralEwaldWall2P(layer, tolerance_, folded_, forces, foldedTargets(targets, n))
+            : ewald::spectralEwald2P(layer, tolerance_, folded_, forces, foldedTargets(targets, n));
+  std::copy(u.begin(), u.end(), result);
+}
+
+void PeriodicFarField::doubleLayer(const operators::DoubleLayerSources& sources, const double* targets,
+                                   const int* targetCells, const double* subtracted, int n, double* result)
+{
+  core::require<core::InputError>(!wall_, "The periodic lower wall's kernel has no double layer (no fast sum of its "
+                                          "stresslet): every 'Cells/<cell>/Viscosity ratio' must be 1.");
+  if (n == 0) {
+    return;
+  }
+  const std::size_t numPoints = folded_.size() / 3;
+  std::vector<double> tensors(9 * numPoints);
+  for (std::size_t q = 0; q < numPoints; ++q) {
+    const double v[3] = {sources.vx[q], sources.vy[q], sources.vz[q]};
+    const double a[3] = {sources.ax[q], sources.ay[q], sources.az[q]};
+    for (int i = 0; i < 3; ++i) {
+      for (int k = 0; k < 3; ++k) {
+        tensors[9 * q + 3 * i + k] = v[i] * a[k];
+      }
+    }
+  }
+  const ewald::PeriodicLayer layer{box_.lengthX, box_.lengthZ};
+  const std::vector<double> u =
+      ewald::spectralEwaldStresslet2P(layer, tolerance_, folded_, tensors, foldedTargets(targets, n));
+  if (!targetCells) {
+    for (std::size_t k = 0; k < u.size(); ++k) {
+      result[k] = -u[k];
+    }
+    return;
+  }
+  // - s_t sum_{own cell} T a_q: the direct sums of the subtracted form with zero density.
+  const std::vector<double> zero(numPoints, 0.0);
+  const operators::DoubleLayerSources own{x_,         y_,          z_,          sources.ax, sources.ay,
+                                          sources.az, zero.data(), zero.data(), zero.data()};
+  operators::forTargetBlocks(targets, targetCells, subtracted, n, result, [&](operators::TargetBlock& block, int cell) {
+    operators::addDoubleLayerSums<operators::FreeSpace3DKernel, true>(block, own, offsets_[cell], offsets_[cell + 1]);
+  });
+  for (std::size_t k = 0; k < u.size(); ++k) {
+    result[k] -= u[k];
+  }
+}
+
+std::unique_ptr<operators::FarFieldSummation> PeriodicFreeSpaceKernel::farFieldSummation() const
+{
+  return std::make_unique<PeriodicFarField>(box, tolerance, /*wall=*/false);
+}
+
+std::unique_ptr<operators::FarFieldSummation> PeriodicWallKernel::farFieldSummation() const
+{
+  return std::make_unique<PeriodicFarField>(box, tolerance, /*wall=*/true);
+}
+
+} // namespace capsula::periodic

@@ -1,0 +1,10 @@
+#include "capsula/periodic/PeriodicOperators.hpp"
+
+namespace capsula::operators {
+
+template class LayerPotentials<periodic::PeriodicFreeSpaceKernel>;
+template class LayerPotentials<periodic::PeriodicWallKernel>;
+template class KernelBoundaryIntegralSolver<periodic::PeriodicFreeSpaceKernel>;
+template class KernelBoundaryIntegralSolver<periodic::PeriodicWallKernel>;
+
+} // namespace capsula::operators
