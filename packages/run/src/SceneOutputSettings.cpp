@@ -75,7 +75,8 @@ void declareSceneOutputParameters(Teuchos::ParameterList& output)
                     "output: the mesh has degraded past what its quadrature resolves (0: never).",
                     core::atLeast(0.0), core::lessThan(60.0));
   declareSuspensionOutputParameters(core::declareSublist(
-      output, "Suspension", "The cell-free layer and the hematocrit profile (docs/suspensions.md, section 'Outputs of a run')."));
+      output, "Suspension",
+      "The cell-free layer and the hematocrit profile (docs/suspensions.md, section 'Outputs of a run')."));
 }
 
 SceneOutputSettings readSceneOutputSettings(const Teuchos::ParameterList& deck, const scene::SceneDescription& scene)
