@@ -1,6 +1,6 @@
 // bench_operators: the cost of one velocity evaluation of the boundary-integral operators.
 //
-//   mpiexec -n 2 bench_operators [--level=3] [--kernel=Wall|FreeSpace|WallTensors] [--lambda=1]
+//   mpiexec -n 2 bench_operators [--level=3] [--kernel=Wall|FreeSpace|WallTensors|PeriodicWall] [--lambda=1]
 //                                [--quadrature-points=7]
 //                                [--rings=2] [--repeat=3] [--cells=1]
 //                                [--summation=Direct|Treecode] [--tolerance=1e-5]
@@ -9,7 +9,10 @@
 // One spherical cell (radius 1, centre 2 above the wall) under a smooth non-uniform load;
 // with --cells=N > 1, N unit spheres 0.2 above the wall on a square grid of pitch 2.2 in
 // the wall plane (gaps of 0.2, no overlap; --cell-gap and --wall-gap set the gaps between
-// neighbours and above the wall). --summation picks the far-field back-end of the
+// neighbours and above the wall). --kernel=PeriodicWall puts the grid in a box periodic along
+// x and z whose periods are the grid's (columns and rows times the pitch, so the neighbours'
+// gaps repeat across the boundary), its far field the spectral Ewald sum to --ewald-tolerance
+// (docs/domains.md); lambda 1 only. --summation picks the far-field back-end of the
 // regular sums ('Operator/Summation'; Treecode to --tolerance, docs/fastsum.md; the single
 // layer's precision from the tolerance's table row or, with --single-layer, float or
 // double); for Treecode the velocities are also computed with Direct and their relative
@@ -34,6 +37,7 @@
 #include <capsula/mesh/Shapes.hpp>
 #include <capsula/operators/BuiltInKernels.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
+#include <capsula/periodic/PeriodicOperators.hpp>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_CommandLineProcessor.hpp>
@@ -49,6 +53,7 @@
 #include <iostream>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 namespace {
 
@@ -132,6 +137,8 @@ struct BenchOptions {
   double cellGap = 0.2;
   double wallGap = -1.0; ///< < 0: 1 for one cell (centre 2 above the wall), else 0.2
   std::string singleLayer = "table";
+  double ewaldTolerance = 1e-6;  ///< PeriodicWall: 'Operator/PeriodicWall/Tolerance'
+  double boxX = 0.0, boxZ = 0.0; ///< PeriodicWall: the periods, set from the grid
 };
 
 // The centres of the unit cells: one 2 above the wall, or a square grid 0.2 above it, the
@@ -147,6 +154,18 @@ std::vector<mesh::Vec3> cellCentres(const BenchOptions& options)
     centres.emplace_back(pitch * (c % columns), height, pitch * (c / columns));
   }
   return centres;
+}
+
+// The box periodic along x and z that repeats the grid of cellCentres: columns and rows
+// times the pitch.
+void setGridBox(BenchOptions& options)
+{
+  const int n = options.cells;
+  const double pitch = 2.0 + options.cellGap;
+  const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+  const int rows = (n + columns - 1) / columns;
+  options.boxX = columns * pitch;
+  options.boxZ = rows * pitch;
 }
 
 using capsula::fastsum::largestNodeError; // fastsum/LargestNodeError.hpp
@@ -189,7 +208,7 @@ LayerErrors layerErrors(BoundaryIntegralSolver& fast, BoundaryIntegralSolver& di
 }
 
 template <class Kernel>
-int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& options)
+int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& options, const Kernel& kernel = {})
 {
   const bool root = comm->getRank() == 0;
   const int level = options.level, quadraturePoints = options.quadraturePoints, rings = options.rings;
@@ -223,7 +242,7 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
     throw core::InputError(core::message("--summation=", options.summation, ": use Direct or Treecode."));
   }
   const CellSurfaces scene(std::move(cells), lambda);
-  KernelBoundaryIntegralSolver<Kernel> solver(comm, scene, discretisation, SolverParameters{});
+  KernelBoundaryIntegralSolver<Kernel> solver(comm, scene, discretisation, SolverParameters{}, kernel);
   const CellSurfaces& surfaces = solver.surfaces();
   // A smooth non-uniform membrane load: an inflation-like normal part and a shear part.
   std::vector<double> loads;
@@ -253,11 +272,14 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
   double difference = -1.0;
   Timing reference;
   LayerErrors layers;
+  constexpr bool periodic = std::is_same_v<Kernel, periodic::PeriodicWallKernel>;
   if (options.summation == "Direct") {
-    directTime = timeIt(*comm, repeat, [&] { sink += directSum(solver.layerPotentials(), loads, direct); });
+    if constexpr (!periodic) { // a periodic kernel's regular sums are its Ewald sums, timed above
+      directTime = timeIt(*comm, repeat, [&] { sink += directSum(solver.layerPotentials(), loads, direct); });
+    }
   } else {
     // The same evaluation with the direct sums, once: the reference and its time.
-    KernelBoundaryIntegralSolver<Kernel> directSolver(comm, scene, directDiscretisation, SolverParameters{});
+    KernelBoundaryIntegralSolver<Kernel> directSolver(comm, scene, directDiscretisation, SolverParameters{}, kernel);
     VelocitySolution exact;
     reference = timeIt(*comm, 1, [&] {
       directSolver.setPositions(positions.data());
@@ -318,6 +340,11 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
       std::printf("  (velocity cpu ms per cell: %.1f)\n", velocity.cpu / surfaces.numCells());
       return 0;
     }
+    if (periodic) {
+      std::printf("  box %g x %g, Ewald tolerance %.0e; (velocity cpu ms per cell: %.1f)\n", options.boxX, options.boxZ,
+                  options.ewaldTolerance, velocity.cpu / surfaces.numCells());
+      return 0;
+    }
     std::printf("  direct sum (floor)       %8.1f  %8.1f   (%d targets x %d points)\n", directTime.wall, directTime.cpu,
                 surfaces.numNodes(), numPoints);
     std::printf("  ratio velocity / direct  %8.2f  %8.2f\n", velocity.wall / directTime.wall,
@@ -339,7 +366,11 @@ int main(int argc, char* argv[])
   clp.setDocString("Times one velocity evaluation of the boundary-integral operators "
                    "(mpiexec -n N bench_operators [options]).");
   clp.setOption("level", &options.level, "icosphere level of the cells (3: 2562 nodes each)");
-  clp.setOption("kernel", &kernel, "Wall, FreeSpace, or WallTensors (the wall kernel without the contracted forms)");
+  clp.setOption(
+      "kernel", &kernel,
+      "Wall, FreeSpace, WallTensors (the wall kernel without the contracted forms), or PeriodicWall (the grid "
+      "in a periodic box)");
+  clp.setOption("ewald-tolerance", &options.ewaldTolerance, "PeriodicWall: tolerance of the spectral Ewald sums");
   clp.setOption("lambda", &options.lambda, "viscosity ratio (1: explicit; otherwise GMRES)");
   clp.setOption("quadrature-points", &options.quadraturePoints, "N_Q");
   clp.setOption("rings", &options.rings, "regular neighbour rings (0: subdivide near elements of the own cell too)");
@@ -370,11 +401,22 @@ int main(int argc, char* argv[])
     if (kernel == "FreeSpace") {
       return run<FreeSpace3DKernel>(comm, options);
     }
+    if (kernel == "PeriodicWall") {
+      setGridBox(options);
+      periodic::PeriodicWallKernel policy;
+      policy.box = periodic::PeriodicBox{options.boxX, options.boxZ};
+      policy.tolerance = options.ewaldTolerance;
+      core::require<core::InputError>(options.lambda == 1.0 && options.summation == "Direct",
+                                      "--kernel=PeriodicWall: lambda 1 and --summation=Direct only (its far field is "
+                                      "its Ewald sum).");
+      return run<periodic::PeriodicWallKernel>(comm, options, policy);
+    }
     if (kernel == "WallTensors") {
       // The wall kernel straight from greens: full tensors contracted in the loops.
       return run<greens::Wall3D>(comm, options);
     }
-    std::fprintf(stderr, "bench_operators: unknown --kernel=%s (Wall, FreeSpace or WallTensors)\n", kernel.c_str());
+    std::fprintf(stderr, "bench_operators: unknown --kernel=%s (Wall, FreeSpace, WallTensors or PeriodicWall)\n",
+                 kernel.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_operators: %s\n", e.what());
   }

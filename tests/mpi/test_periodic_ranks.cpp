@@ -50,14 +50,15 @@ std::vector<double> loadsOf(const CellSurfaces& surfaces)
   return loads;
 }
 
-void compareRanks(const std::string& kernel, bool wall, double lambda)
+// `channelHeight` > 0: the channel 0 < y < H (needs the wall).
+void compareRanks(const std::string& kernel, bool wall, double lambda, double channelHeight = 0.0)
 {
   const auto comm = Tpetra::getDefaultComm();
   ASSERT_EQ(comm->getSize(), 2) << "this test is registered to run on 2 ranks";
   const auto serial = Teuchos::rcp(new Teuchos::SerialComm<int>);
   KernelRegistry registry = builtInKernels();
   periodic::registerPeriodicKernels(registry);
-  const domain::Domain box(domain::DomainShape{wall, 0.0, 3.2, 2.8});
+  const domain::Domain box(domain::DomainShape{wall, channelHeight, 3.2, 2.8});
   Teuchos::ParameterList settings;
   settings.set("Tolerance", 1e-10);
   SolverParameters solverParameters;
@@ -105,6 +106,13 @@ TEST(PeriodicRanks, GmresVelocitiesMatchOneRank)
 TEST(PeriodicRanks, AboveTheWallVelocitiesMatchOneRank)
 {
   compareRanks("PeriodicWall", true, 1.0);
+}
+
+// The channel 0 < y < 3: the ellipsoid's top and two probes lie in its upper half, where the
+// upper wall's kernel corrects the near-singular integrals.
+TEST(PeriodicRanks, InTheChannelVelocitiesMatchOneRank)
+{
+  compareRanks("PeriodicChannel", true, 1.0, 3.0);
 }
 
 } // namespace

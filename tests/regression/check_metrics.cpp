@@ -11,6 +11,9 @@
 //   check_metrics shifted FILE_A FILE_B COLUMN=OFFSET:TOLERANCE...
 //       At every time both tables hold, |COLUMN_a - COLUMN_b - OFFSET| <= TOLERANCE: the same
 //       run moved by OFFSET (tests/regression/periodic.cmake). Prints the largest deviation.
+//   check_metrics mirrored FILE_A FILE_B COLUMN=SUM:TOLERANCE...
+//       At every time both tables hold, |COLUMN_a + COLUMN_b - SUM| <= TOLERANCE: the run
+//       reflected about a plane (tests/regression/channel.cmake). Prints the largest deviation.
 //   check_metrics within FILE COLUMN=LOW:HIGH...
 //       Every row must have LOW <= COLUMN <= HIGH, so also be finite (NaN fails); for the
 //       bounds a run must keep all along (tests/regression/stability.cmake). Prints the
@@ -137,7 +140,8 @@ int agree(int argc, char** argv)
   return ok ? 0 : 1;
 }
 
-int shifted(int argc, char** argv)
+// shifted (sign -1: a - b) and mirrored (sign +1: a + b) against OFFSET.
+int combined(int argc, char** argv, double sign)
 {
   const io::CsvTable a = io::readCsvTable(argv[2]);
   const io::CsvTable b = io::readCsvTable(argv[3]);
@@ -162,7 +166,7 @@ int shifted(int argc, char** argv)
           continue;
         }
         ++common;
-        const double deviation = std::abs(ra[ca] - rb[cb] - offset);
+        const double deviation = std::abs(ra[ca] + sign * rb[cb] - offset);
         if (!(deviation <= worst)) { // NaN counts as the worst
           worst = deviation;
           worstTime = ra[timeA];
@@ -171,8 +175,9 @@ int shifted(int argc, char** argv)
     }
     const bool pass = common > 1 && worst <= tolerance;
     ok = ok && pass;
-    std::cout << (pass ? "ok    " : "FAIL  ") << name << " at " << common << " common times: largest |a - b - "
-              << offset << "| " << worst << " at t = " << worstTime << " (allowed " << tolerance << ")\n";
+    std::cout << (pass ? "ok    " : "FAIL  ") << name << " at " << common << " common times: largest |a "
+              << (sign < 0 ? "-" : "+") << " b - " << offset << "| " << worst << " at t = " << worstTime << " (allowed "
+              << tolerance << ")\n";
   }
   return ok ? 0 : 1;
 }
@@ -232,7 +237,10 @@ int main(int argc, char** argv)
       return agree(argc, argv);
     }
     if (mode == "shifted" && argc >= 5) {
-      return shifted(argc, argv);
+      return combined(argc, argv, -1.0);
+    }
+    if (mode == "mirrored" && argc >= 5) {
+      return combined(argc, argv, 1.0);
     }
     if (mode == "within" && argc >= 4) {
       return within(argc, argv);
@@ -241,6 +249,7 @@ int main(int argc, char** argv)
                  "       check_metrics same FILE_A FILE_B RELATIVE_TOLERANCE\n"
                  "       check_metrics agree FILE_A FILE_B RELATIVE_TOLERANCE COLUMN...\n"
                  "       check_metrics shifted FILE_A FILE_B COLUMN=OFFSET:TOLERANCE...\n"
+                 "       check_metrics mirrored FILE_A FILE_B COLUMN=SUM:TOLERANCE...\n"
                  "       check_metrics within FILE COLUMN=LOW:HIGH...\n";
     return 2;
   } catch (const std::exception& e) {

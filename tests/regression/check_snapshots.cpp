@@ -5,6 +5,11 @@
 //       positions and fields, bit for bit (a restarted run against the uninterrupted one).
 //   check_snapshots count FILE N
 //       The file holds exactly N snapshots.
+//   check_snapshots folded FILE LX LZ
+//       In every snapshot the mean of each cell block's ("cell<c>") nodes lies in the box
+//       [0, LX) x R x [0, LZ) ('Output/Fold into box'), and at least one snapshot holds a
+//       cell with nodes on both sides of a boundary or outside the box (else the test
+//       proves nothing about folding whole cells).
 //   check_snapshots checkpoint-time FILE T
 //       The checkpoint FILE (io/Checkpoint.hpp) holds the state at time T exactly (a run
 //       that failed kept its last good checkpoint).
@@ -80,6 +85,35 @@ int same(const std::string& fileA, const std::string& fileB)
   return ok ? 0 : 1;
 }
 
+int folded(const std::string& file, double lx, double lz)
+{
+  const std::size_t count = io::readSnapshotLayouts(file).size();
+  bool ok = count > 0, reachesOut = false;
+  for (std::size_t k = 0; k < count; ++k) {
+    const io::Snapshot snapshot = io::readSnapshot(file, k);
+    for (const auto& block : snapshot.blocks) {
+      if (block.name.rfind("cell", 0) != 0) {
+        continue;
+      }
+      const std::size_t n = block.positions.size() / 3;
+      double mean[3] = {0.0, 0.0, 0.0};
+      for (std::size_t p = 0; p < n; ++p) {
+        for (int i = 0; i < 3; ++i) {
+          mean[i] += block.positions[3 * p + static_cast<std::size_t>(i)] / static_cast<double>(n);
+        }
+        const double x = block.positions[3 * p], z = block.positions[3 * p + 2];
+        reachesOut = reachesOut || x < 0.0 || x >= lx || z < 0.0 || z >= lz;
+      }
+      const bool inside = mean[0] >= 0.0 && mean[0] < lx && mean[2] >= 0.0 && mean[2] < lz;
+      ok = ok && inside;
+      std::cout << (inside ? "ok    " : "FAIL  ") << "snapshot " << k << " (t = " << snapshot.time << ") " << block.name
+                << ": node mean (" << mean[0] << ", " << mean[1] << ", " << mean[2] << ")\n";
+    }
+  }
+  std::cout << (reachesOut ? "ok    " : "FAIL  ") << "some cell reaches across the box's boundary\n";
+  return ok && reachesOut ? 0 : 1;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -94,6 +128,9 @@ int main(int argc, char** argv)
       const auto expected = static_cast<std::size_t>(std::atoll(argv[3]));
       std::cout << (count == expected ? "ok    " : "FAIL  ") << count << " snapshots, expected " << expected << "\n";
       return count == expected ? 0 : 1;
+    }
+    if (mode == "folded" && argc == 5) {
+      return folded(argv[2], std::atof(argv[3]), std::atof(argv[4]));
     }
     if (mode == "checkpoint-time" && argc == 4) {
       const double time = io::readCheckpoint(argv[2]).time;

@@ -18,7 +18,7 @@ set(_periodic_run ${PROJECT_SOURCE_DIR}/input/cell3d/demo.xml --set "Cells/Cell 
     --set "Time integration/Initial step=0.02" --set "Time integration/End time=0.4" --set "Output/Interval=0.04")
 capsula_add_mpi_command_test(regression_periodic_crossing
   COMMAND $<TARGET_FILE:cell3d> ${_periodic_run} --output ${_periodic_out}/crossing
-          --set "Cells/Cell 0/Center={3.5, 1.6, 0}"
+          --set "Cells/Cell 0/Center={3.5, 1.6, 0}" --set "Output/Fold into box=true"
   LABELS regression TIMEOUT 600)
 set_tests_properties(regression_periodic_crossing PROPERTIES FIXTURES_SETUP periodic_crossing)
 add_test(NAME regression_periodic_inside
@@ -29,6 +29,13 @@ add_test(NAME regression_periodic_crossing_is_the_run_moved
           x_c=2:1e-8 y_c=0:1e-8 z_c=0:1e-8 D12=0:1e-8 volume=0:1e-8 area=0:1e-8 u_slip=0:1e-8 omega_z=0:1e-8)
 set_tests_properties(regression_periodic_crossing_is_the_run_moved PROPERTIES
   FIXTURES_REQUIRED "periodic_crossing;periodic_inside" LABELS "mpi;regression")
+# The crossing run draws its snapshots folded ('Output/Fold into box'): the capsule, whose
+# nodes reach past x = 4 from the start, is drawn whole with its node mean inside the box
+# (at t = 0.4 the unfolded mean is at x = 4.1), while its metrics keep the true travel.
+add_test(NAME regression_periodic_crossing_snapshots_are_folded
+  COMMAND check_snapshots folded ${_periodic_out}/crossing/snapshots.h5 4 4)
+set_tests_properties(regression_periodic_crossing_snapshots_are_folded PROPERTIES
+  FIXTURES_REQUIRED periodic_crossing LABELS "mpi;regression")
 # x_c grows through the boundary: from 3.5 to 4.0985 at t = 0.4 (the capsule moves at ~1.5);
 # 0.05 is far below the 4 a folded x_c would lose.
 add_test(NAME regression_periodic_crossing_x_c_grows

@@ -41,3 +41,7 @@ domain_refusal(no_kernel_serves_a_periodic_box
 domain_refusal(wall_kernel_named_for_a_channel
   "'Operator/Kernel' = Wall is for the fluid above the wall y = 0 without periodic directions but the deck \\('Wall/Enabled' = true, 'Wall/Channel height' = 6\\) describes a channel 0 < y < 6"
   cell3d ${_cell3d_demo} --set "Operator/Kernel=Wall" --set "Wall/Channel height=6")
+# Folding the snapshots into the box needs a box.
+domain_refusal(fold_into_box_without_a_period
+  "'Output/Fold into box' = true, but the fluid above the wall y = 0 has no periodic direction: set 'Domain/Periodic length x' or 'z'"
+  cell3d ${_cell3d_demo} --set "Output/Fold into box=true")

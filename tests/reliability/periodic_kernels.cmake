@@ -1,4 +1,4 @@
-# The periodic kernels (Periodic, PeriodicWall; docs/domains.md): what they cannot serve is
+# The periodic kernels (Periodic, PeriodicWall, PeriodicChannel; docs/domains.md): what they cannot serve is
 # refused at start-up with exit 2, the keys named, and no output directory made.
 #
 # periodic_refusal(<name> <regex> <app> <deck> [--set ...]...)
@@ -19,6 +19,11 @@ periodic_refusal(viscosity_ratio_above_the_periodic_wall
   "'Operator/Kernel' = PeriodicWall needs every viscosity ratio to be 1 \\('Flow/Viscosity ratio', 'Cells/<cell>/Viscosity ratio'\\); cell 0 has 5"
   cell3d ${_cell3d_demo} --set "Domain/Periodic length x=8" --set "Domain/Periodic length z=8"
   --set "Flow/Viscosity ratio=5")
+# Nor has the periodic channel's.
+periodic_refusal(viscosity_ratio_in_the_periodic_channel
+  "'Operator/Kernel' = PeriodicChannel needs every viscosity ratio to be 1 \\('Flow/Viscosity ratio', 'Cells/<cell>/Viscosity ratio'\\); cell 0 has 5\\. The periodic channel's stresslet has no fast sum"
+  cell3d ${_cell3d_demo} --set "Domain/Periodic length x=8" --set "Domain/Periodic length z=8"
+  --set "Wall/Channel height=6" --set "Flow/Profile=Poiseuille" --set "Flow/Viscosity ratio=5")
 # The Ewald sums are doubly periodic: a box periodic along x only has no periodic kernel.
 periodic_refusal(periodic_kernel_named_for_one_period
   "'Operator/Kernel' = PeriodicWall is for the fluid above the wall y = 0, periodic along x and z but the deck \\('Wall/Enabled' = true, 'Domain/Periodic length x' = 8\\) describes"

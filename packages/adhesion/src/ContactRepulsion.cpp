@@ -98,12 +98,12 @@ const quadrature::TriangleRule& cellRule()
 // Whether any point of element e can lie within `reach` of the plane y = 0: its lowest node
 // less a quarter of its largest vertex-to-vertex chord c. A surface of curvature 1 / R bulges
 // by c^2 / (8 R) between nodes c apart, less than c / 4 wherever c < 2 R.
-bool mayReachWall(const mesh::ElementNodes& x, double reach)
+bool mayReachWall(const mesh::ElementNodes& x, const ContactWall& wall, double reach)
 {
-  double lowest = x[0][1];
+  double lowest = wall.gap(x[0][1]);
   double chord = 0.0;
   for (int i = 0; i < 6; ++i) {
-    lowest = std::min(lowest, x[static_cast<std::size_t>(i)][1]);
+    lowest = std::min(lowest, wall.gap(x[static_cast<std::size_t>(i)][1]));
   }
   for (int i = 0; i < 3; ++i) {
     chord = std::max(chord, (x[static_cast<std::size_t>(i)] - x[static_cast<std::size_t>((i + 1) % 3)]).norm());
@@ -111,27 +111,28 @@ bool mayReachWall(const mesh::ElementNodes& x, double reach)
   return lowest - 0.25 * chord < reach;
 }
 
-// Calls visit(e, phi, y, dS) at every point of the wall rule on the elements that can reach
-// the range: phi the six shape functions there, y its height, dS its weight times h_s.
+// Calls visit(e, phi, g, dS) at every point of the wall rule on the elements that can reach
+// the range: phi the six shape functions there, g its gap to the wall, dS its weight times h_s.
 template <class Visit>
-void forEachWallPoint(const ContactSettings& contact, const mesh::SurfaceMesh& mesh, const double* positions,
-                      Visit&& visit)
+void forEachWallPoint(const ContactSettings& contact, const ContactWall& wall, const mesh::SurfaceMesh& mesh,
+                      const double* positions, Visit&& visit)
 {
   const quadrature::TriangleRule& rule = wallRule();
   for (int e = 0; e < mesh.numElements(); ++e) {
     const mesh::ElementNodes x = mesh.elementNodes(e, positions);
-    if (!mayReachWall(x, contact.range)) {
+    if (!mayReachWall(x, wall, contact.range)) {
       continue;
     }
     const mesh::ShapeParameters p = mesh::shapeParameters(x);
     for (int q = 0; q < rule.size(); ++q) {
       const mesh::SurfacePoint s = mesh::evaluateSurfacePoint(x, p, rule.xi[q], rule.eta[q]);
-      if (s.position[1] >= contact.range) {
+      const double gap = wall.gap(s.position[1]);
+      if (gap >= contact.range) {
         continue;
       }
       double phi[6];
       mesh::shapeFunctions(p, rule.xi[q], rule.eta[q], phi);
-      visit(e, phi, s.position[1], rule.weight[q] * s.metric);
+      visit(e, phi, gap, rule.weight[q] * s.metric);
     }
   }
 }
@@ -303,20 +304,22 @@ std::vector<double> nodalAreaShares(const mesh::SurfaceMesh& mesh, const double*
 }
 
 mesh::Vec3 addWallContactForces(const ContactSettings& contact, const mesh::SurfaceMesh& mesh, const double* positions,
-                                double* nodalForces)
+                                double* nodalForces, const ContactWall& wall)
 {
   double total = 0.0;
+  const double side = wall.fluidSide;
   if (contact.load == ContactLoad::NodalArea) {
     const std::vector<double> areas = nodalAreaShares(mesh, positions);
     for (int k = 0; k < mesh.numNodes(); ++k) {
-      const double f = repulsionPressure(contact, positions[3 * k + 1]) * areas[static_cast<std::size_t>(k)];
+      const double f =
+          side * repulsionPressure(contact, wall.gap(positions[3 * k + 1])) * areas[static_cast<std::size_t>(k)];
       nodalForces[3 * k + 1] += f;
       total += f;
     }
     return mesh::Vec3(0.0, total, 0.0);
   }
-  forEachWallPoint(contact, mesh, positions, [&](int e, const double phi[6], double y, double dS) {
-    const double f = repulsionPressure(contact, y) * dS;
+  forEachWallPoint(contact, wall, mesh, positions, [&](int e, const double phi[6], double gap, double dS) {
+    const double f = side * repulsionPressure(contact, gap) * dS;
     const auto& nodes = mesh.element(e);
     for (int k = 0; k < 6; ++k) {
       nodalForces[3 * nodes[static_cast<std::size_t>(k)] + 1] += phi[k] * f;
@@ -327,12 +330,13 @@ mesh::Vec3 addWallContactForces(const ContactSettings& contact, const mesh::Surf
 }
 
 void addWallContactStiffness(const ContactSettings& contact, const mesh::SurfaceMesh& mesh, const double* positions,
-                             LoadStiffness& stiffness)
+                             LoadStiffness& stiffness, const ContactWall& wall)
 {
+  // F_y = s p(g) with g = s (y - h): dF_y/dy = s^2 p'(g) = p'(g) on either side of a wall.
   if (contact.load == ContactLoad::NodalArea) { // diagonal, at frozen area shares
     const std::vector<double> areas = nodalAreaShares(mesh, positions);
     for (int k = 0; k < mesh.numNodes(); ++k) {
-      const double slope = repulsionPressureSlope(contact, positions[3 * k + 1]);
+      const double slope = repulsionPressureSlope(contact, wall.gap(positions[3 * k + 1]));
       if (slope != 0.0) {
         stiffness.add(3 * k + 1, 3 * k + 1, -slope * areas[static_cast<std::size_t>(k)]);
       }
@@ -341,8 +345,8 @@ void addWallContactStiffness(const ContactSettings& contact, const mesh::Surface
   }
   // Element matrices, in the order the elements are visited.
   std::vector<std::pair<int, std::array<double, 36>>> blocks;
-  forEachWallPoint(contact, mesh, positions, [&](int e, const double phi[6], double y, double dS) {
-    const double slope = repulsionPressureSlope(contact, y);
+  forEachWallPoint(contact, wall, mesh, positions, [&](int e, const double phi[6], double gap, double dS) {
+    const double slope = repulsionPressureSlope(contact, gap);
     if (slope == 0.0) {
       return;
     }

@@ -35,6 +35,11 @@ double FlowProfile::shearRate(double y) const
   return kind_ == FlowProfileKind::Poiseuille ? 1.0 - 2.0 * y / height_ : 1.0;
 }
 
+double FlowProfile::curvature() const
+{
+  return kind_ == FlowProfileKind::Poiseuille ? -1.0 / height_ : 0.0;
+}
+
 std::array<double, 3> FlowProfile::velocityAt(const double x[3]) const
 {
   return {velocity(x[wallNormalAxis]), 0.0, 0.0};

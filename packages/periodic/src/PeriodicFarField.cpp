@@ -2,6 +2,7 @@
 
 #include <capsula/core/Error.hpp>
 #include <capsula/ewald/SpectralEwald2P.hpp>
+#include <capsula/ewald/SpectralEwaldChannel2P.hpp>
 #include <capsula/ewald/SpectralEwaldStresslet2P.hpp>
 #include <capsula/ewald/SpectralEwaldWall2P.hpp>
 #include <capsula/operators/DirectSummation.hpp>
@@ -11,8 +12,8 @@
 
 namespace capsula::periodic {
 
-PeriodicFarField::PeriodicFarField(const PeriodicBox& box, double tolerance, bool wall)
-    : box_(box), tolerance_(tolerance), wall_(wall)
+PeriodicFarField::PeriodicFarField(const PeriodicBox& box, double tolerance, PeriodicFluid fluid, double channelHeight)
+    : box_(box), tolerance_(tolerance), fluid_(fluid), channelHeight_(channelHeight)
 {}
 
 void PeriodicFarField::setSources(const double* x, const double* y, const double* z,
@@ -53,17 +54,28 @@ void PeriodicFarField::singleLayer(const operators::SingleLayerSources& sources,
     forces[3 * q + 2] = sources.fz[q];
   }
   const ewald::PeriodicLayer layer{box_.lengthX, box_.lengthZ};
-  const std::vector<double> u =
-      wall_ ? ewald::spectralEwaldWall2P(layer, tolerance_, folded_, forces, foldedTargets(targets, n))
-            : ewald::spectralEwald2P(layer, tolerance_, folded_, forces, foldedTargets(targets, n));
+  const std::vector<double> folded = foldedTargets(targets, n);
+  std::vector<double> u;
+  switch (fluid_) {
+  case PeriodicFluid::Unbounded:
+    u = ewald::spectralEwald2P(layer, tolerance_, folded_, forces, folded);
+    break;
+  case PeriodicFluid::AboveWall:
+    u = ewald::spectralEwaldWall2P(layer, tolerance_, folded_, forces, folded);
+    break;
+  case PeriodicFluid::Channel:
+    u = ewald::spectralEwaldChannel2P(layer, channelHeight_, tolerance_, folded_, forces, folded);
+    break;
+  }
   std::copy(u.begin(), u.end(), result);
 }
 
 void PeriodicFarField::doubleLayer(const operators::DoubleLayerSources& sources, const double* targets,
                                    const int* targetCells, const double* subtracted, int n, double* result)
 {
-  core::require<core::InputError>(!wall_, "The periodic lower wall's kernel has no double layer (no fast sum of its "
-                                          "stresslet): every 'Cells/<cell>/Viscosity ratio' must be 1.");
+  core::require<core::InputError>(fluid_ == PeriodicFluid::Unbounded,
+                                  "The periodic wall's and channel's kernels have no double layer (no fast sum of "
+                                  "their stresslets): every 'Cells/<cell>/Viscosity ratio' must be 1.");
   if (n == 0) {
     return;
   }
@@ -101,12 +113,17 @@ void PeriodicFarField::doubleLayer(const operators::DoubleLayerSources& sources,
 
 std::unique_ptr<operators::FarFieldSummation> PeriodicFreeSpaceKernel::farFieldSummation() const
 {
-  return std::make_unique<PeriodicFarField>(box, tolerance, /*wall=*/false);
+  return std::make_unique<PeriodicFarField>(box, tolerance, PeriodicFluid::Unbounded);
 }
 
 std::unique_ptr<operators::FarFieldSummation> PeriodicWallKernel::farFieldSummation() const
 {
-  return std::make_unique<PeriodicFarField>(box, tolerance, /*wall=*/true);
+  return std::make_unique<PeriodicFarField>(box, tolerance, PeriodicFluid::AboveWall);
+}
+
+std::unique_ptr<operators::FarFieldSummation> PeriodicChannelKernel::farFieldSummation() const
+{
+  return std::make_unique<PeriodicFarField>(box, tolerance, PeriodicFluid::Channel, local.height);
 }
 
 } // namespace capsula::periodic

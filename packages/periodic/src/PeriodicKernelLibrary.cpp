@@ -5,6 +5,7 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
 
+#include <string>
 #include <memory>
 #include <utility>
 
@@ -33,6 +34,21 @@ PeriodicBox requireDoublyPeriodic(const domain::Domain& domain, const std::strin
                                   " and 'Domain/Periodic length z' = ", lz,
                                   ": set both periods (> 0); a domain periodic in one direction has no kernel.");
   return PeriodicBox{lx, lz};
+}
+
+// The wall and channel kernels have no fast sum of their stresslets (PeriodicFarField.hpp).
+void requireViscosityRatiosOne(const operators::CellSurfaces& surfaces, const std::string& kernel,
+                               const std::string& aperiodic)
+{
+  for (int c = 0; c < surfaces.numCells(); ++c) {
+    core::require<core::InputError>(
+        surfaces.viscosityRatio(c) == 1.0, "'Operator/Kernel' = ", kernel,
+        " needs every viscosity ratio to be 1 ('Flow/Viscosity ratio', 'Cells/<cell>/Viscosity ratio'); cell ", c,
+        " has ", surfaces.viscosityRatio(c), ". The periodic ", kernel == "PeriodicWall" ? "wall's" : "channel's",
+        " stresslet has no fast sum: set the ratios to 1",
+        aperiodic.empty() ? std::string(".")
+                          : ", or drop 'Domain/Periodic length x' and 'z' for the " + aperiodic + " kernel.");
+  }
 }
 
 template <class Kernel>
@@ -72,19 +88,29 @@ void registerPeriodicKernels(operators::KernelRegistry& registry)
                   const SolverParameters& solver, const Teuchos::ParameterList& settings,
                   const domain::Domain& domain) {
                  auto kernel = periodicKernel<PeriodicWallKernel>(domain, settings, "PeriodicWall");
-                 for (int c = 0; c < surfaces.numCells(); ++c) {
-                   core::require<core::InputError>(
-                       surfaces.viscosityRatio(c) == 1.0,
-                       "'Operator/Kernel' = PeriodicWall needs every viscosity "
-                       "ratio to be 1 ('Flow/Viscosity ratio', 'Cells/<cell>/Viscosity ratio'); cell ",
-                       c, " has ", surfaces.viscosityRatio(c),
-                       ". The periodic wall's stresslet has no fast sum: set "
-                       "the ratios to 1, or drop 'Domain/Periodic length x' and 'z' for the Wall kernel.");
-                 }
+                 requireViscosityRatiosOne(surfaces, "PeriodicWall", "Wall");
                  return std::unique_ptr<operators::BoundaryIntegralSolver>(
                      new operators::KernelBoundaryIntegralSolver<PeriodicWallKernel>(comm, std::move(surfaces),
                                                                                      discretisation, solver, kernel));
                });
+  registry.add(
+      "PeriodicChannel",
+      operators::KernelInfo{"Fluid between the walls y = 0 and y = H ('Wall/Channel height'), periodic in x "
+                            "and z: the channel's Stokeslet summed by the spectral Ewald method, plane "
+                            "Couette or Poiseuille flow; viscosity ratio 1 only (docs/domains.md).",
+                            operators::FluidDomain::Channel, periodicKernelParameters("PeriodicChannel"), true},
+      [](const Comm& comm, CellSurfaces surfaces, const DiscretisationParameters& discretisation,
+         const SolverParameters& solver, const Teuchos::ParameterList& settings, const domain::Domain& domain) {
+        auto kernel = periodicKernel<PeriodicChannelKernel>(domain, settings, "PeriodicChannel");
+        core::require<core::InputError>(domain.hasUpperWall(),
+                                        "'Operator/Kernel' = PeriodicChannel needs a channel: set 'Wall/"
+                                        "Channel height' > 0.");
+        kernel.local.height = domain.channelHeight();
+        requireViscosityRatiosOne(surfaces, "PeriodicChannel", "");
+        return std::unique_ptr<operators::BoundaryIntegralSolver>(
+            new operators::KernelBoundaryIntegralSolver<PeriodicChannelKernel>(comm, std::move(surfaces),
+                                                                               discretisation, solver, kernel));
+      });
 }
 
 } // namespace capsula::periodic

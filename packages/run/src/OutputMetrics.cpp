@@ -61,6 +61,7 @@ std::vector<CellSample> OutputMetrics::record(double t, const scene::Scene& scen
     s.shapeChangeRate = shapeChangeRate(velocities, scene.membrane(c).nodeNormals(), s.instantVelocity);
     s.gmresIterations = fields.gmresIterations;
     s.shearRate = scene.description().shearRate.factor(t);
+    s.profileAtCentroid = scene.description().flowProfile.velocity(s.shape.centroid[1]);
     s.stability = measureStability(cell, scene.membrane(c));
     if (scene.hasBonds()) {
       s.adhesion = scene.bonds().summary(c, cell, cell.positionData());

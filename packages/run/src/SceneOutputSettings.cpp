@@ -58,6 +58,10 @@ void declareSceneOutputParameters(Teuchos::ParameterList& output)
                    "Write a snapshot at every n-th output only (metrics are written at every "
                    "output).",
                    1);
+  core::declareBool(output, "Fold into box", false,
+                    "In a periodic box: draw each cell in the snapshots moved by the lattice vector that brings the "
+                    "mean of its nodes into [0, L_x) x R x [0, L_z), whole, with its bonds and tether (metrics and "
+                    "checkpoints keep the unfolded positions). Needs 'Domain/Periodic length x' or 'z'.");
   core::declareBool(output, "Checkpoint", true,
                     "Write checkpoint.h5 at every output, so --restart can continue the run.");
   core::declareInt(output, "Progress steps", 20,
@@ -87,6 +91,11 @@ SceneOutputSettings readSceneOutputSettings(const Teuchos::ParameterList& deck, 
   out.interval = output.get<double>("Interval");
   out.snapshots = output.get<bool>("Snapshots");
   out.snapshotStride = output.get<int>("Snapshot stride");
+  out.foldIntoBox = output.get<bool>("Fold into box");
+  core::require<core::InputError>(!out.foldIntoBox || scene.domain.isPeriodic(), "'Output/Fold into box' = true, but ",
+                                  scene.domain.describe(),
+                                  " has no periodic direction: set 'Domain/Periodic length x' or 'z', or leave it "
+                                  "false.");
   out.checkpoint = output.get<bool>("Checkpoint");
   out.progressSteps = output.get<int>("Progress steps");
   const auto& probes = output.get<Teuchos::Array<double>>("Flow probes");

@@ -245,7 +245,7 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
   }
   if (snapshotDue && degraded.empty()) {
     files_.writeSnapshot(kSnapshotBase, [&] {
-      io::Snapshot snapshot = sceneSnapshot(scene, fields, t, state.statistics.acceptedSteps);
+      io::Snapshot snapshot = sceneSnapshot(scene, fields, t, state.statistics.acceptedSteps, settings_.foldIntoBox);
       if (wall) {
         snapshot.blocks.push_back(wallSnapshotBlock(wall->grid, wall->stress));
       }

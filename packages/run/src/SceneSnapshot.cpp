@@ -1,5 +1,6 @@
 #include "capsula/run/SceneSnapshot.hpp"
 
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -68,13 +69,40 @@ io::SnapshotBlock tetherBlock(const scene::Scene& scene, const double* positions
   return block;
 }
 
+// The mean of n nodes' positions (3 per node).
+std::array<double, 3> nodeMean(const double* positions, int n)
+{
+  std::array<double, 3> mean{};
+  for (int k = 0; k < n; ++k) {
+    for (int i = 0; i < 3; ++i) {
+      mean[static_cast<std::size_t>(i)] += positions[3 * k + i] / n;
+    }
+  }
+  return mean;
+}
+
+void shift(io::SnapshotBlock& block, const std::array<double, 3>& by)
+{
+  for (std::size_t k = 0; k < block.positions.size(); ++k) {
+    block.positions[k] += by[k % 3];
+  }
+}
+
 } // namespace
 
-io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& fields, double time, std::int64_t step)
+io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& fields, double time, std::int64_t step,
+                           bool foldIntoBox)
 {
   io::Snapshot snapshot;
   snapshot.time = time;
   snapshot.step = step;
+  // The lattice shift that draws each cell in the box (zero unless folded).
+  std::vector<std::array<double, 3>> shifts(static_cast<std::size_t>(scene.numCells()), {0.0, 0.0, 0.0});
+  for (int c = 0; foldIntoBox && c < scene.numCells(); ++c) {
+    shifts[static_cast<std::size_t>(c)] = scene.description().domain.foldingShift(
+        nodeMean(fields.positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(c)), scene.cell(c).numNodes())
+            .data());
+  }
   for (int c = 0; c < scene.numCells(); ++c) {
     const mesh::SurfaceMesh& cell = scene.cell(c);
     const auto nodes = static_cast<std::size_t>(cell.numNodes());
@@ -86,6 +114,7 @@ io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& 
     block.topology = io::Topology::QuadraticTriangles;
     block.dimension = 3;
     block.positions = slice(fields.positions, 3 * firstNode, 3 * nodes);
+    shift(block, shifts[static_cast<std::size_t>(c)]);
     block.connectivity.reserve(6 * elements);
     for (const auto& element : cell.elements()) {
       block.connectivity.insert(block.connectivity.end(), element.begin(), element.end());
@@ -109,13 +138,16 @@ io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& 
   for (int c = 0; scene.hasBonds() && c < scene.numCells(); ++c) {
     const double* positions = fields.positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(c));
     if (auto bonds = bondBlock(scene, c, positions)) {
+      shift(*bonds, shifts[static_cast<std::size_t>(c)]);
       snapshot.blocks.push_back(std::move(*bonds));
     }
   }
   if (scene.hasTether()) {
     const int c = scene.tether().cell();
-    snapshot.blocks.push_back(
-        tetherBlock(scene, fields.positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(c))));
+    io::SnapshotBlock tether =
+        tetherBlock(scene, fields.positions.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(c)));
+    shift(tether, shifts[static_cast<std::size_t>(c)]);
+    snapshot.blocks.push_back(std::move(tether));
   }
   return snapshot;
 }

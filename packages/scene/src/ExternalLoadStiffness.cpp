@@ -1,5 +1,7 @@
 #include "capsula/scene/ExternalLoadStiffness.hpp"
 
+#include "capsula/scene/ExternalForces.hpp"
+
 #include <capsula/adhesion/ContactRepulsion.hpp>
 
 namespace capsula::scene {
@@ -7,7 +9,7 @@ namespace capsula::scene {
 bool hasExternalLoadStiffness(const Scene& scene)
 {
   const SceneDescription& description = scene.description();
-  return scene.hasBonds() || scene.hasTether() || (description.contact.enabled && description.wall);
+  return scene.hasBonds() || scene.hasTether() || (description.contact.enabled && description.domain.hasWalls());
 }
 
 void externalLoadStiffness(const Scene& scene, int c, const double* positions, adhesion::LoadStiffness& stiffness)
@@ -21,8 +23,10 @@ void externalLoadStiffness(const Scene& scene, int c, const double* positions, a
     scene.tether().addStiffness(cell, positions, stiffness);
   }
   const SceneDescription& description = scene.description();
-  if (description.contact.enabled && description.wall) {
-    adhesion::addWallContactStiffness(description.contact, cell, positions, stiffness);
+  if (description.contact.enabled) {
+    for (const adhesion::ContactWall& wall : contactWalls(description.domain)) {
+      adhesion::addWallContactStiffness(description.contact, cell, positions, stiffness, wall);
+    }
   }
 }
 

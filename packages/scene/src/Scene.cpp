@@ -25,6 +25,14 @@ namespace capsula::scene {
 namespace core = capsula::core;
 
 namespace {
+// u_inf = k(t) (y + c y^2) e_x (domain/FlowProfile.hpp) as the operators take it.
+operators::BackgroundFlow backgroundFlow(const domain::FlowProfile& profile, double shearRate)
+{
+  operators::BackgroundFlow flow = operators::LinearFlow::simpleShear(shearRate);
+  flow.curvature = shearRate * profile.curvature();
+  return flow;
+}
+
 std::string describeMembrane(const CellDescription& cell, const mesh::SurfaceMesh& surface)
 {
   std::ostringstream line;
@@ -192,14 +200,14 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     terms_.push_back(line.str());
   }
   flow_.capillaryNumber = description_.capillaryNumber;
-  flow_.background = operators::LinearFlow::simpleShear(1.0);
+  flow_.background = backgroundFlow(description_.flowProfile, 1.0);
   {
     std::ostringstream line;
+    line << "flow: " << description_.flowProfile.describe() << ", Ca = " << description_.capillaryNumber;
     if (description_.shearRate.periodic()) {
-      line << "flow: simple shear u = (k(t) y, 0, 0), Ca = " << description_.capillaryNumber << " at the mean k; k(t) "
-           << description_.shearRate.describe();
+      line << " at the mean k; k(t) " << description_.shearRate.describe();
     } else {
-      line << "flow: simple shear u = (y, 0, 0), Ca = " << description_.capillaryNumber;
+      line << " (k = 1)";
     }
     terms_.push_back(line.str());
   }
@@ -446,7 +454,7 @@ adhesion::BondEvents Scene::updateBonds(const std::vector<double>& positions, do
 operators::FlowConditions Scene::flowAt(double t) const
 {
   operators::FlowConditions flow = flow_;
-  flow.background = operators::LinearFlow::simpleShear(description_.shearRate.factor(t));
+  flow.background = backgroundFlow(description_.flowProfile, description_.shearRate.factor(t));
   return flow;
 }
 

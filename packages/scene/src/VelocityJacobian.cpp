@@ -77,7 +77,12 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
 
 void VelocityJacobian::freeze(double t, const std::vector<double>& y)
 {
-  flowGradient_ = scene_.flowAt(t).background.gradient;
+  // grad u_inf at each node as it is at the step's start (Poiseuille's varies with y).
+  const operators::BackgroundFlow background = scene_.flowAt(t).background;
+  flowGradients_.resize(y.size() / 3);
+  for (std::size_t g = 0; g < flowGradients_.size(); ++g) {
+    flowGradients_[g] = background.gradientAt(mesh::nodeAt(y.data(), static_cast<int>(g)));
+  }
   frozenPositions_ = y;
   frozen_->setPositions(y.data());
   stiffness_.clear();
@@ -133,9 +138,9 @@ void VelocityJacobian::applyFrozen(const double* x, double* y)
     mass_[static_cast<std::size_t>(c)]->solve(forces_.data() + first, loads_.data() + first, kMassSolveTolerance);
   }
   const std::vector<double> single = frozen_->singleLayerOfNodalLoad(loads_.data());
-  operators::combineWithFlowGradient<3>(
-      flowGradient_, [this](std::size_t g) { return coefficient_[g]; },
-      [this](std::size_t g) { return flowFactor_[g]; }, n / 3, x, single, y);
+  operators::combineWithFlowGradient<3>([this](std::size_t g) -> const mesh::Mat3& { return flowGradients_[g]; },
+                                        [this](std::size_t g) { return coefficient_[g]; },
+                                        [this](std::size_t g) { return flowFactor_[g]; }, n / 3, x, single, y);
   if (scene_.hasConstraints()) {
     product_.assign(y, y + n);
     scene_.constrain(frozenPositions_, product_);

@@ -203,9 +203,9 @@ void VelocityJacobian2D::applyFrozen(const double* x, double* y)
                                     (states[2].loadAt(segment, t) - states[3].loadAt(segment, t))));
   };
   const std::vector<double> single = velocity_->singleLayer(*frozen_, derivative);
-  operators::combineWithFlowGradient<2>(
-      flowGradient_, [this](std::size_t) { return -coefficient_; }, [this](std::size_t) { return flowFactor_; }, n / 2,
-      x, single, y);
+  operators::combineWithFlowGradient<2>([this](std::size_t) -> const Eigen::Matrix2d& { return flowGradient_; },
+                                        [this](std::size_t) { return -coefficient_; },
+                                        [this](std::size_t) { return flowFactor_; }, n / 2, x, single, y);
   for (const int i : fixed_) {
     y[2 * i] = y[2 * i + 1] = 0.0;
   }

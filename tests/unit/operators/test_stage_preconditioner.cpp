@@ -161,21 +161,26 @@ TEST(StagePreconditioner, SingularFactorisationNamesThePreconditionerKey)
 // transposed G, a swapped weight or a missing term changes some entry.
 TEST(StageJacobian, CombinesTheSingleLayerAndTheFlowGradientPerNode)
 {
-  Eigen::Matrix2d G;
+  // Node 0 takes G, node 1 takes G + E_01 (the gradient of plane Poiseuille flow varies with
+  // the node's height).
+  Eigen::Matrix2d G, G1;
   G << 1.0, 2.0, 3.0, 5.0;
+  G1 << 1.0, 3.0, 3.0, 5.0;
   const std::vector<double> x{1.0, -1.0, 2.0, 4.0};
   const std::vector<double> s{10.0, 20.0, 30.0, 40.0};
   std::vector<double> y(4);
   const auto a = [](std::size_t g) { return g == 0 ? -1.0 : -2.0; };
   const auto b = [](std::size_t g) { return g == 0 ? 0.5 : 3.0; };
-  capsula::operators::combineWithFlowGradient<2>(G, a, b, 2, x.data(), s, y.data());
-  // node 0: G x = (1 - 2, 3 - 5) = (-1, -2); node 1: G x = (2 + 8, 6 + 20) = (10, 26).
-  EXPECT_EQ(y, (std::vector<double>{-10.0 - 0.5, -20.0 - 1.0, -60.0 + 30.0, -80.0 + 78.0}));
+  const auto gradient = [&](std::size_t g) -> const Eigen::Matrix2d& { return g == 0 ? G : G1; };
+  capsula::operators::combineWithFlowGradient<2>(gradient, a, b, 2, x.data(), s, y.data());
+  // node 0: G x = (1 - 2, 3 - 5) = (-1, -2); node 1: G1 x = (2 + 12, 6 + 20) = (14, 26).
+  EXPECT_EQ(y, (std::vector<double>{-10.0 - 0.5, -20.0 - 1.0, -60.0 + 42.0, -80.0 + 78.0}));
 
   const Eigen::Matrix3d G3 = Eigen::Matrix3d::Identity() * 2.0;
   const std::vector<double> x3{1.0, 2.0, 3.0}, s3{1.0, 1.0, 1.0};
   std::vector<double> y3(3);
-  capsula::operators::combineWithFlowGradient<3>(
-      G3, [](std::size_t) { return 4.0; }, [](std::size_t) { return 0.5; }, 1, x3.data(), s3, y3.data());
+  capsula::operators::combineWithFlowGradient<3>([&](std::size_t) -> const Eigen::Matrix3d& { return G3; },
+                                                 [](std::size_t) { return 4.0; }, [](std::size_t) { return 0.5; }, 1,
+                                                 x3.data(), s3, y3.data());
   EXPECT_EQ(y3, (std::vector<double>{5.0, 6.0, 7.0}));
 }

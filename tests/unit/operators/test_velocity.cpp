@@ -250,8 +250,8 @@ TEST(Velocity, RigidMotionOfTheFlowIsFollowedForAnyViscosityRatio)
     for (const int level : levels) {
       auto solver = makeSolver("Wall", sphereAbove(level), lambda);
       FlowConditions flow;
-      flow.background.velocity = Vec3(0.2, -0.1, 0.3);
-      flow.background.gradient << 0.0, -0.5, 0.2, 0.5, 0.0, -0.3, -0.2, 0.3, 0.0; // antisymmetric
+      flow.background.linear.velocity = Vec3(0.2, -0.1, 0.3);
+      flow.background.linear.gradient << 0.0, -0.5, 0.2, 0.5, 0.0, -0.3, -0.2, 0.3, 0.0; // antisymmetric
       const std::vector<double> zero(3 * solver->surfaces().numElements(), 0.0);
       const auto solution = solver->nodeVelocities(LoadDensity::constantOverElements(zero), flow);
       const auto exact = nodalField(solver->surfaces(), [&](const Vec3& x) { return Vec3(flow.background.at(x)); });

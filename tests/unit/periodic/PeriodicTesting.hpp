@@ -26,7 +26,13 @@ inline domain::Domain box(double lx, double lz, bool wall)
   return domain::Domain(domain::DomainShape{wall, 0.0, lx, lz});
 }
 
-/// A solver of `kernel` ("Periodic", "PeriodicWall", "FreeSpace", "Wall") for `cells` in
+/// The channel 0 < y < H periodic in x and z with periods lx, lz.
+inline domain::Domain channel(double lx, double lz, double height)
+{
+  return domain::Domain(domain::DomainShape{true, height, lx, lz});
+}
+
+/// A solver of `kernel` ("Periodic", "PeriodicWall", "PeriodicChannel", "FreeSpace", "Wall") for `cells` in
 /// `domain`, its Ewald sums to `tolerance`.
 inline std::unique_ptr<operators::BoundaryIntegralSolver>
 makeSolver(const std::string& kernel, std::vector<mesh::SurfaceMesh> cells, std::vector<double> lambdas,
@@ -35,7 +41,7 @@ makeSolver(const std::string& kernel, std::vector<mesh::SurfaceMesh> cells, std:
 {
   const operators::KernelRegistry registry = periodicRegistry();
   Teuchos::ParameterList settings;
-  if (kernel == "Periodic" || kernel == "PeriodicWall") {
+  if (kernel == "Periodic" || kernel == "PeriodicWall" || kernel == "PeriodicChannel") {
     settings.set("Tolerance", tolerance);
   }
   operators::SolverParameters solver;

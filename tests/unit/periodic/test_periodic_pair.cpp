@@ -34,9 +34,9 @@ mesh::Vec3 normalLoad(const mesh::Vec3& /*x*/, const mesh::Vec3& n)
 }
 
 std::vector<double> velocities(const std::string& kernel, std::vector<mesh::SurfaceMesh> cells, double lambda,
-                               bool wall)
+                               const domain::Domain& domain)
 {
-  auto solver = pt::makeSolver(kernel, std::move(cells), {lambda, lambda}, pt::box(lx, lz, wall), 1e-9);
+  auto solver = pt::makeSolver(kernel, std::move(cells), {lambda, lambda}, domain, 1e-9);
   const auto load = operators::LoadDensity::constantOverElements(ot::elementAverages(solver->surfaces(), normalLoad));
   operators::FlowConditions flow;
   flow.capillaryNumber = 0.1;
@@ -44,7 +44,7 @@ std::vector<double> velocities(const std::string& kernel, std::vector<mesh::Surf
   return solver->nodeVelocities(load, flow).velocities;
 }
 
-void expectSameVelocities(const std::string& kernel, double lambda, bool wall)
+void expectSameVelocities(const std::string& kernel, double lambda, const domain::Domain& domain)
 {
   const mesh::Vec3 first(1.5, 1.0, 1.4), second(2.62, 1.12, 1.55);
   // The same pair moved by (2, 0, 1.4), the first cell by two more periods along x and the
@@ -52,9 +52,9 @@ void expectSameVelocities(const std::string& kernel, double lambda, bool wall)
   // (0.62, 1.12, -0.05) are 11 apart in unfolded coordinates, nearest images across both
   // boundaries, and the first cell straddles z = L_z.
   const mesh::Vec3 shift(2.0, 0.0, 1.4);
-  const std::vector<double> inside = velocities(kernel, pair(first, second), lambda, wall);
+  const std::vector<double> inside = velocities(kernel, pair(first, second), lambda, domain);
   const std::vector<double> across = velocities(
-      kernel, pair(first + shift + mesh::Vec3(2 * lx, 0, 0), second + shift - mesh::Vec3(lx, 0, lz)), lambda, wall);
+      kernel, pair(first + shift + mesh::Vec3(2 * lx, 0, 0), second + shift - mesh::Vec3(lx, 0, lz)), lambda, domain);
   ASSERT_EQ(inside.size(), across.size());
   double difference = 0.0, size = 0.0;
   for (std::size_t k = 0; k < inside.size(); ++k) {
@@ -73,17 +73,24 @@ void expectSameVelocities(const std::string& kernel, double lambda, bool wall)
 
 TEST(PeriodicPair, AcrossTheBoundaryMovesAsInsideTheBox)
 {
-  expectSameVelocities("Periodic", 1.0, false);
+  expectSameVelocities("Periodic", 1.0, pt::box(lx, lz, false));
 }
 
 TEST(PeriodicPair, AcrossTheBoundaryMovesAsInsideTheBoxWithTheDoubleLayer)
 {
-  expectSameVelocities("Periodic", 5.0, false);
+  expectSameVelocities("Periodic", 5.0, pt::box(lx, lz, false));
 }
 
 TEST(PeriodicPair, AboveTheWallAcrossTheBoundaryMovesAsInsideTheBox)
 {
-  expectSameVelocities("PeriodicWall", 1.0, true);
+  expectSameVelocities("PeriodicWall", 1.0, pt::box(lx, lz, true));
+}
+
+// The channel 0 < y < 2.2: the pair (heights 0.5 to 1.57) straddles the mid-plane, so each
+// cell's nodes take the lower or the upper wall's kernel by their height.
+TEST(PeriodicPair, InTheChannelAcrossTheBoundaryMovesAsInsideTheBox)
+{
+  expectSameVelocities("PeriodicChannel", 1.0, pt::channel(lx, lz, 2.2));
 }
 
 } // namespace

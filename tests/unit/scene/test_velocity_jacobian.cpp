@@ -8,6 +8,7 @@
 #include "capsula/testing/ConvergenceOrder.hpp"
 
 #include <capsula/core/Error.hpp>
+#include <capsula/periodic/PeriodicKernelLibrary.hpp>
 #include <capsula/scene/CellKinematics.hpp>
 #include <capsula/scene/VelocityJacobian.hpp>
 #include <capsula/scene/VolumeConstraint.hpp>
@@ -110,6 +111,31 @@ TEST(VelocityJacobian, IsTheDerivativeOfTheVelocityAtRest)
       EXPECT_LT(worst, 1e-6 * size) << (wall ? "wall" : "free space") << (pulsatile ? ", pulsatile" : "");
     }
   }
+}
+
+// In plane Poiseuille flow (a channel 0 < y < 4, periodic in a box 6 x 6, kernel
+// PeriodicChannel) grad u_inf varies with the height, k (1 - 2 y / H) e_x e_y: J~'s flow term
+// takes it at each node. The sphere spans 0.6 < y < 2.6, where the rate runs from 0.7 to
+// -0.3; one gradient for all nodes (the lower wall's k) would miss by up to 1.3 |v|, O(1).
+// Tolerance as above.
+TEST(VelocityJacobian, IsTheDerivativeOfTheVelocityAtRestInPoiseuilleFlow)
+{
+  auto deck = smallDeck(1, 1.6, true, [](Teuchos::ParameterList& d) {
+    d.sublist("Flow").set("Capillary number", 0.05);
+    d.sublist("Flow").set("Profile", std::string("Poiseuille"));
+    d.sublist("Wall").set("Channel height", 4.0);
+    d.sublist("Domain").set("Periodic length x", 6.0);
+    d.sublist("Domain").set("Periodic length z", 6.0);
+    d.sublist("Cells").sublist("Cell 0").set("Membrane law", std::string("NeoHookean"));
+    d.sublist("Solver").sublist("Stiff").set("Quadrature points", 0);
+  });
+  capsula::operators::KernelRegistry registry = capsula::operators::builtInKernels();
+  capsula::periodic::registerPeriodicKernels(registry);
+  scene::Scene s(scene::describeScene(*deck), *deck, Tpetra::getDefaultComm(), registry);
+  scene::VelocityJacobian jacobian(s, *deck, registry);
+  const std::vector<double> x = s.initialPositions();
+  const auto [worst, size] = mismatchWithDifferences(s, jacobian, 0.0, x);
+  EXPECT_LT(worst, 1e-6 * size);
 }
 
 // With bonds, J~ carries their stiffness (ExternalLoadStiffness.hpp). Bonds set by hand at

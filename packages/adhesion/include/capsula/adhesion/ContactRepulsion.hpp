@@ -47,6 +47,16 @@
 
 namespace capsula::adhesion {
 
+/// A no-slip plane y = height that repels membranes on its fluid side (`fluidSide` +1: the
+/// fluid lies above it, the lower wall; -1: below it, a channel's upper wall).
+struct ContactWall {
+  double height = 0.0;
+  int fluidSide = 1;
+
+  /// The gap of a point at height y, positive in the fluid.
+  double gap(double y) const { return fluidSide * (y - height); }
+};
+
 /// p(gap) in units of G / a.
 double repulsionPressure(const ContactSettings& contact, double gap);
 
@@ -58,17 +68,18 @@ double repulsionPressureSlope(const ContactSettings& contact, double gap);
 /// partition of the area for measures (the contact area), not a load.
 std::vector<double> nodalAreaShares(const mesh::SurfaceMesh& mesh, const double* positions);
 
-/// Adds the wall repulsion F_k = int_S phi_k p(y) dS e_y to `nodalForces` (3 per node);
-/// returns the total, int_S p dS e_y.
+/// Adds the repulsion of `wall`, F_k = int_S phi_k p(g) dS s e_y (g the gap, s the wall's
+/// fluid side), to `nodalForces` (3 per node); returns the total, int_S p dS s e_y.
 mesh::Vec3 addWallContactForces(const ContactSettings& contact, const mesh::SurfaceMesh& mesh, const double* positions,
-                                double* nodalForces);
+                                double* nodalForces, const ContactWall& wall = {});
 
-/// Adds the stiffness of the wall repulsion, -dF_k,y/dy_l = -int_S phi_k phi_l p'(y) dS
+/// Adds the stiffness of the repulsion of `wall`, -dF_k,y/dy_l = -int_S phi_k phi_l p'(g) dS
+/// (s^2 = 1)
 /// (symmetric, positive semi-definite: p' <= 0), to `stiffness`. How dS and the direction
 /// change with the nodes is left out: it is of the size of the force itself and does not
 /// make the motion stiff.
 void addWallContactStiffness(const ContactSettings& contact, const mesh::SurfaceMesh& mesh, const double* positions,
-                             LoadStiffness& stiffness);
+                             LoadStiffness& stiffness, const ContactWall& wall = {});
 
 /// Adds the repulsion between cells A and B to their nodal forces (3 per node each); returns
 /// the total force on A (the one on B is its opposite). Elements farther than the range from

@@ -37,6 +37,8 @@ public:
   /// f(y) and f'(y): the streamwise velocity and the shear rate at height y, for k = 1.
   double velocity(double y) const;
   double shearRate(double y) const;
+  /// c in f(y) = y + c y^2, the form of every profile: -1 / H for Poiseuille, 0 for shear.
+  double curvature() const;
   /// u_inf(x) for k = 1.
   std::array<double, 3> velocityAt(const double x[3]) const;
   /// d u_i / d x_j at x for k = 1 (row-major 3 x 3; only (0, 1) is non-zero).

@@ -30,13 +30,15 @@
 
 namespace capsula::operators {
 
-/// y_i = a(g) s_i + b(g) (G x_g)_i for every node g of D unknowns: J~'s single-layer term s
-/// and the background flow's gradient G acting on x, weighted per node (see above).
-template <int D, class SingleLayerWeight, class FlowWeight>
-void combineWithFlowGradient(const Eigen::Matrix<double, D, D>& G, const SingleLayerWeight& a, const FlowWeight& b,
+/// y_i = a(g) s_i + b(g) (G(g) x_g)_i for every node g of D unknowns: J~'s single-layer term
+/// s and the background flow's gradient at the node, G(g) (a D x D matrix), acting on x,
+/// weighted per node (see above).
+template <int D, class FlowGradient, class SingleLayerWeight, class FlowWeight>
+void combineWithFlowGradient(const FlowGradient& gradient, const SingleLayerWeight& a, const FlowWeight& b,
                              std::size_t nodes, const double* x, const std::vector<double>& s, double* y)
 {
   for (std::size_t g = 0; g < nodes; ++g) {
+    const Eigen::Matrix<double, D, D>& G = gradient(g);
     const double* xg = x + D * g;
     for (int i = 0; i < D; ++i) {
       double flow = G(i, 0) * xg[0];

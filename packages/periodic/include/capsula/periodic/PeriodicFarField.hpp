@@ -3,7 +3,8 @@
 // Ewald method of capsula::ewald, to the kernel's tolerance (relative to the largest
 // velocity):
 //  - single layer: u_t = sum_q G(x_t, x_q) f_q over every quadrature point of every cell,
-//    G the periodic Stokeslet (SpectralEwald2P) or the periodic wall's (SpectralEwaldWall2P);
+//    G the periodic Stokeslet (SpectralEwald2P), the periodic wall's (SpectralEwaldWall2P)
+//    or the periodic channel's (SpectralEwaldChannel2P);
 //  - double layer (periodic fluid only): u_t,j = sum_q T_ijk(x_q - x_t) v_q,i a_q,k
 //    = -sum_q T_jik(x_t - x_q) (v_q a_q)_ik, T being odd and symmetric, one stresslet sum
 //    (SpectralEwaldStresslet2P) with the source tensors S_q = v_q a_q^T; the singularity
@@ -23,15 +24,22 @@
 
 namespace capsula::periodic {
 
+/// The walls of the periodic fluid whose Green's function the sums use.
+enum class PeriodicFluid {
+  Unbounded, ///< no wall: single and double layer
+  AboveWall, ///< the wall y = 0: single layer only
+  Channel    ///< the walls y = 0 and y = H: single layer only
+};
+
 class PeriodicFarField final : public operators::FarFieldSummation {
 public:
-  /// `wall`: the periodic wall's Stokeslet (no double layer); else the periodic fluid's.
-  PeriodicFarField(const PeriodicBox& box, double tolerance, bool wall);
+  /// `channelHeight`: H for PeriodicFluid::Channel (ignored otherwise).
+  PeriodicFarField(const PeriodicBox& box, double tolerance, PeriodicFluid fluid, double channelHeight = 0.0);
 
   std::string name() const override { return "Spectral Ewald"; }
   void setSources(const double* x, const double* y, const double* z, const std::vector<int>& cellPointOffsets) override;
   void singleLayer(const operators::SingleLayerSources& sources, const double* targets, int n, double* result) override;
-  /// Throws core::InputError for the periodic wall (no fast sum of its stresslet).
+  /// Throws core::InputError for the periodic wall and channel (no fast sum of their stresslets).
   void doubleLayer(const operators::DoubleLayerSources& sources, const double* targets, const int* targetCells,
                    const double* subtracted, int n, double* result) override;
 
@@ -40,7 +48,8 @@ private:
 
   PeriodicBox box_;
   double tolerance_;
-  bool wall_;
+  PeriodicFluid fluid_;
+  double channelHeight_;
   const double *x_ = nullptr, *y_ = nullptr, *z_ = nullptr;
   std::vector<int> offsets_;
   std::vector<double> folded_; // the sources folded into the box, 3 per point

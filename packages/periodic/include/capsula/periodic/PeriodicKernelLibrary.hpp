@@ -3,11 +3,13 @@
 // KernelRegistry
 //   "Periodic"      the fluid periodic in x and z, unbounded in y (no wall);
 //   "PeriodicWall"  the fluid above the no-slip plane y = 0, periodic in x and z;
+//   "PeriodicChannel" the fluid between the no-slip planes y = 0 and y = H ('Wall/Channel
+//                   height'), periodic in x and z: plane Couette and Poiseuille flow;
 // each with its sublist 'Operator/<name>' (Tolerance of the spectral Ewald sums). Their
 // factories take the periods from the deck's domain ('Domain/Periodic length x', 'z') and
 // refuse what they cannot serve (core::InputError naming the keys): a domain periodic in
-// one direction only (the Ewald sums are doubly periodic), and for PeriodicWall a viscosity
-// ratio other than 1 (its stresslet has only a reference sum, O(N M) with hundreds of
+// one direction only (the Ewald sums are doubly periodic), and for PeriodicWall and
+// PeriodicChannel a viscosity ratio other than 1 (their stresslets have has only a reference sum, O(N M) with hundreds of
 // Fourier modes per pair, too slow for a double layer applied at every GMRES iteration).
 // 'Operator/Summation' = Treecode is refused by the operators ("does not support the
 // kernel"); Direct (the default) leaves the far field to the kernel's Ewald sums.
@@ -15,8 +17,8 @@
 
 namespace capsula::periodic {
 
-/// Registers "Periodic" and "PeriodicWall" (KernelInfo: FluidDomain Unbounded and
-/// AboveWall, periodic = true).
+/// Registers "Periodic", "PeriodicWall" and "PeriodicChannel" (KernelInfo: FluidDomain
+/// Unbounded, AboveWall and Channel, periodic = true).
 void registerPeriodicKernels(operators::KernelRegistry& registry);
 
 } // namespace capsula::periodic

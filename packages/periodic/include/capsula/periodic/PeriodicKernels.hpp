@@ -1,9 +1,10 @@
 #pragma once
 // The doubly periodic Green's functions as operator policies (operators/KernelTraits.hpp):
 // PeriodicFreeSpaceKernel, the Stokeslet of a fluid periodic in x and z and unbounded in y
-// (ewald/Ewald2PReference.hpp), and PeriodicWallKernel, the same above the no-slip plane
-// y = 0 (ewald/WallStokeslet2P.hpp). A policy instance carries the periods and the
-// tolerance of its Ewald sums.
+// (ewald/Ewald2PReference.hpp); PeriodicWallKernel, the same above the no-slip plane y = 0
+// (ewald/WallStokeslet2P.hpp); PeriodicChannelKernel, the same between the no-slip planes
+// y = 0 and y = H (ewald/ChannelStokeslet2P.hpp). A policy instance carries the periods, the
+// channel's height and the tolerance of its Ewald sums.
 //
 // The two halves of the operators get two different kernels:
 //  - the regular (far-field) sums over every quadrature point are the periodic Green's
@@ -11,8 +12,9 @@
 //    farFieldSummation());
 //  - the pointwise kernel (stokeslet, stresslet and their contractions), which only the
 //    singular and near-singular corrections "special rule minus regular rule" evaluate, is
-//    the free-space (Blake's, above the wall) kernel of the periodic image of the field
-//    point NEAREST to the pole.
+//    the free-space (Blake's, above the wall; in the channel Blake's of the wall nearer to
+//    the pole, NearestWallKernel.hpp) kernel of the periodic image of the field point
+//    NEAREST to the pole.
 // Why that is right: the periodic Green's function minus the nearest-image local kernel
 // solves the homogeneous Stokes equations wherever no other image of the pole lies, so it
 // is smooth within half a period of the pole; the special rules integrate that smooth
@@ -20,12 +22,13 @@
 // is at the level of the regular rule's error. The corrected element integrals are thus
 // those of the periodic kernel, as the element's own singular part is integrated exactly.
 // The images (KernelTraits) are the pole's images in the eight neighbouring boxes (and,
-// above the wall, the mirror points of all nine), so that a target near a cell across the
+// above a wall, the mirror points of all nine in the wall of the local kernel), so that a target near a cell across the
 // periodic boundary gets its near-singular treatment; nearestImage shifts the pole next
 // to each cell first, so cell positions are never folded into the box.
 #include <capsula/operators/ContractedKernels.hpp>
 #include <capsula/operators/FarFieldSummation.hpp>
 #include <capsula/operators/KernelTraits.hpp>
+#include <capsula/periodic/NearestWallKernel.hpp>
 
 #include <cmath>
 #include <memory>
@@ -62,10 +65,11 @@ struct PeriodicBox {
   }
 };
 
-/// What both periodic policies share, over the local (non-periodic) policy `Local`.
+/// What the periodic policies share, over the local (non-periodic) policy `Local`.
 template <class Local>
 struct PeriodicKernel {
   PeriodicBox box;
+  Local local{};
   /// Of the spectral Ewald sums, relative to the largest velocity ('Operator/<name>/Tolerance').
   double tolerance = 1e-6;
 
@@ -73,32 +77,32 @@ struct PeriodicKernel {
   {
     double image[3];
     box.nearestField(x, x0, image);
-    Local::stokeslet(image, x0, G);
+    local.stokeslet(image, x0, G);
   }
   void stresslet(const double x[3], const double x0[3], double T[3][3][3]) const
   {
     double image[3];
     box.nearestField(x, x0, image);
-    Local::stresslet(image, x0, T);
+    local.stresslet(image, x0, T);
   }
   void addSingleLayerTerm(const double x[3], const double x0[3], const double f[3], double u[3]) const
   {
     double image[3];
     box.nearestField(x, x0, image);
-    Local::addSingleLayerTerm(image, x0, f, u);
+    local.addSingleLayerTerm(image, x0, f, u);
   }
   void addDoubleLayerTerm(const double x[3], const double x0[3], const double v[3], const double a[3],
                           double u[3]) const
   {
     double image[3];
     box.nearestField(x, x0, image);
-    Local::addDoubleLayerTerm(image, x0, v, a, u);
+    local.addDoubleLayerTerm(image, x0, v, a, u);
   }
   void addDoubleLayerMatrix(const double x[3], const double x0[3], const double a[3], double M[9]) const
   {
     double image[3];
     box.nearestField(x, x0, image);
-    Local::addDoubleLayerMatrix(image, x0, a, M);
+    local.addDoubleLayerMatrix(image, x0, a, M);
   }
 };
 
@@ -115,6 +119,15 @@ struct PeriodicFreeSpaceKernel : PeriodicKernel<operators::FreeSpace3DKernel> {
 struct PeriodicWallKernel : PeriodicKernel<operators::Wall3DKernel> {
   static constexpr const char* name = "periodic lower wall";
   /// The spectral Ewald sum of the wall's Stokeslet (PeriodicFarField.hpp).
+  std::unique_ptr<operators::FarFieldSummation> farFieldSummation() const;
+};
+
+/// The Stokeslet of the channel 0 < y < H between no-slip planes, periodic in x and z
+/// ('Operator/Kernel' = PeriodicChannel); `local.height` is H. Its double layer has no fast
+/// sum: the factory refuses a viscosity ratio other than 1 (PeriodicKernelLibrary.hpp).
+struct PeriodicChannelKernel : PeriodicKernel<NearestWallKernel> {
+  static constexpr const char* name = "periodic channel";
+  /// The spectral Ewald sum of the channel's Stokeslet (PeriodicFarField.hpp).
   std::unique_ptr<operators::FarFieldSummation> farFieldSummation() const;
 };
 
@@ -180,6 +193,34 @@ struct KernelTraits<periodic::PeriodicWallKernel> : periodic::PeriodicImages {
   }
   static bool inFluid(const double* x0) { return KernelTraits<greens::Wall3D>::inFluid(x0); }
   static bool vanishesAt(const double* x0) { return KernelTraits<greens::Wall3D>::vanishesAt(x0); }
+};
+
+/// In the periodic channel: the pole's images in the neighbouring boxes and the mirror points
+/// of all nine in the wall whose kernel serves the pole (NearestWallKernel.hpp).
+template <>
+struct KernelTraits<periodic::PeriodicChannelKernel> : periodic::PeriodicImages {
+  explicit KernelTraits(const periodic::PeriodicChannelKernel& kernel)
+      : PeriodicImages(kernel.box), walls_(kernel.local)
+  {}
+  static constexpr int maxImages = 2 * periodic::PeriodicImages::count + 1;
+  int images(const double* x0, double (*out)[3]) const
+  {
+    const int n = PeriodicImages::images(x0, out);
+    const double mirror = walls_.upperHalf(x0) ? 2.0 * walls_.height : 0.0;
+    for (int p = 0; p <= n; ++p) {
+      const double* source = p == 0 ? x0 : out[p - 1];
+      out[n + p][0] = source[0];
+      out[n + p][1] = mirror - source[1];
+      out[n + p][2] = source[2];
+    }
+    return 2 * n + 1;
+  }
+  bool inFluid(const double* x0) const { return x0[1] >= 0.0 && x0[1] <= walls_.height; }
+  /// A pole on either wall: the channel's G and T vanish there (no slip).
+  bool vanishesAt(const double* x0) const { return x0[1] == 0.0 || x0[1] == walls_.height; }
+
+private:
+  periodic::NearestWallKernel walls_;
 };
 
 } // namespace capsula::operators

@@ -9,7 +9,9 @@ namespace capsula::operators {
 
 extern template class LayerPotentials<periodic::PeriodicFreeSpaceKernel>;
 extern template class LayerPotentials<periodic::PeriodicWallKernel>;
+extern template class LayerPotentials<periodic::PeriodicChannelKernel>;
 extern template class KernelBoundaryIntegralSolver<periodic::PeriodicFreeSpaceKernel>;
 extern template class KernelBoundaryIntegralSolver<periodic::PeriodicWallKernel>;
+extern template class KernelBoundaryIntegralSolver<periodic::PeriodicChannelKernel>;
 
 } // namespace capsula::operators

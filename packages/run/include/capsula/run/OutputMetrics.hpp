@@ -40,21 +40,25 @@ struct CellSample {
   double meanStressIncrease = 0.0;          ///< mean sigma_SS - its value at t = 0 (eq 3.58)
   double maximumStressIncrease = 0.0;
   int gmresIterations = 0;
-  double shearRate = 1.0;         ///< k(t) over its mean at this output ('Flow/Shear rate')
+  double shearRate = 1.0; ///< k(t) over its mean at this output ('Flow/Shear rate')
+  /// f(y_c) of the undisturbed profile at the centroid (y_c in shear, y_c (1 - y_c / H) in
+  /// Poiseuille flow; domain/FlowProfile.hpp), for k = 1.
+  double profileAtCentroid = 0.0;
   scene::CellStability stability; ///< mesh quality, compression, wall gap (CellStability.hpp)
   /// Bonds, their force, contact area and gap; only in a scene with 'Adhesion' enabled.
   std::optional<adhesion::AdhesionSummary> adhesion;
   /// The tether; only on the tethered cell of a scene with 'Tether' enabled.
   std::optional<TetherSample> tether;
 
-  /// u_slip = k y_c - dx_c/dt (eq 3.55, k = k(t) of this instant, 1 in steady shear), and
+  /// u_slip = k f(y_c) - dx_c/dt (eq 3.55, k = k(t) of this instant, 1 in steady shear;
+  /// f(y_c) = y_c in shear), and
   /// u_migr = dy_c/dt, with dx_c/dt the centroid velocity of this instant (the mean surface
   /// velocity): independent of how often the run writes output.
-  double slipVelocity() const { return shearRate * shape.centroid[1] - instantVelocity[0]; }
+  double slipVelocity() const { return shearRate * profileAtCentroid - instantVelocity[0]; }
   double migrationVelocity() const { return instantVelocity[1]; }
   /// The same from the cubic spline through the output centroids (thesis Section 3.11.2):
   /// for comparison with the thesis; it moves with Output/Interval.
-  double splineSlipVelocity() const { return shearRate * shape.centroid[1] - splineVelocity[0]; }
+  double splineSlipVelocity() const { return shearRate * profileAtCentroid - splineVelocity[0]; }
   double splineMigrationVelocity() const { return splineVelocity[1]; }
 };
 

@@ -29,6 +29,7 @@ struct SceneOutputSettings {
   double interval = 0.0;
   bool snapshots = true;
   int snapshotStride = 1;
+  bool foldIntoBox = false; ///< 'Output/Fold into box': cells drawn in the periodic box
   bool checkpoint = true;
   int progressSteps = 20;
   std::vector<mesh::Vec3> flowProbes;

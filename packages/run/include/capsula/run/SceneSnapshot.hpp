@@ -11,6 +11,10 @@
 // The block, and so the mesh version, changes with the number of bonds. With a tether, a
 // block "tether" (Polyline, one segment from the attachment point to the anchor) with the
 // cell fields force (on the membrane, 3) and length.
+// Positions are the run's own, unfolded (a cell that left a periodic box is drawn where it
+// travelled), unless `foldIntoBox`: then each cell, with its bonds and tether, is drawn moved
+// by the lattice vector that brings the mean of its nodes into the box [0, L_x) x R x
+// [0, L_z) (domain::Domain::foldingShift), whole, so that a suspension stays in view.
 #include <capsula/io/Snapshot.hpp>
 #include <capsula/operators/WallShearStress.hpp>
 #include <capsula/scene/Scene.hpp>
@@ -20,7 +24,8 @@
 
 namespace capsula::run {
 
-io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& fields, double time, std::int64_t step);
+io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& fields, double time, std::int64_t step,
+                           bool foldIntoBox = false);
 
 io::SnapshotBlock wallSnapshotBlock(const WallGrid& grid, const operators::WallShearStress& stress);
 

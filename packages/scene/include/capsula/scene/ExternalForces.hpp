@@ -12,14 +12,19 @@
 #include "capsula/scene/SceneBonds.hpp"
 #include "capsula/scene/SceneDescription.hpp"
 
+#include <capsula/adhesion/ContactRepulsion.hpp>
 #include <capsula/adhesion/Tether.hpp>
 #include <capsula/mesh/SurfaceMesh.hpp>
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace capsula::scene {
+
+/// The walls of `domain` as the contact repulsion takes them (lower first).
+std::vector<adhesion::ContactWall> contactWalls(const domain::Domain& domain);
 
 class ExternalForces {
 public:
@@ -49,7 +54,13 @@ public:
   const adhesion::Tether& tether() const { return *tether_; }
 
 private:
-  bool wall_ = true;
+  /// The mean of the cell's node positions.
+  static std::array<double, 3> nodeCentre(const mesh::SurfaceMesh& cell);
+  /// The lattice vector that moves a cell centred at b next to one centred at a.
+  std::array<double, 3> imageShift(const std::array<double, 3>& a, const std::array<double, 3>& b) const;
+
+  domain::Domain domain_;                    // its walls repel; its periodic images touch
+  std::vector<adhesion::ContactWall> walls_; // the domain's walls, as contact takes them
   adhesion::ContactSettings contact_;
   std::vector<std::vector<double>> forces_; // per cell, 3 per node; empty without any term
   std::optional<SceneBonds> bonds_;         // with 'Adhesion/Enabled'

@@ -69,9 +69,9 @@ private:
   std::vector<adhesion::LoadStiffness> external_;              // per cell, at x_n (bonds, contact)
   std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_; // per cell, at x_n
   std::vector<double> frozenPositions_;
-  std::vector<double> coefficient_;              // -c_d per node
-  std::vector<double> flowFactor_;               // 2 / (1 + lambda_d) per node
-  mesh::Mat3 flowGradient_ = mesh::Mat3::Zero(); // grad u_inf at the step's start, k(t_n)
+  std::vector<double> coefficient_;       // -c_d per node
+  std::vector<double> flowFactor_;        // 2 / (1 + lambda_d) per node
+  std::vector<mesh::Mat3> flowGradients_; // grad u_inf per node at the step's start, k(t_n)
   Teuchos::RCP<LocalMobilityPreconditioner> preconditioner_;
   std::vector<double> forces_, loads_, product_;
 };
