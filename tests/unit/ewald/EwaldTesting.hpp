@@ -1,5 +1,6 @@
 #pragma once
-// Shared by the spectral Ewald tests: random points and densities, and the error measure.
+// Shared by the spectral Ewald tests: random points and densities, reference sums over a pair
+// kernel, and the error measures.
 #include <capsula/ewald/Ewald2PReference.hpp>
 
 #include <algorithm>
@@ -45,6 +46,37 @@ inline double relativeError(const std::vector<double>& u, const std::vector<doub
     size = std::max(size, std::hypot(v[t], v[t + 1], v[t + 2]));
   }
   return error / size;
+}
+
+/// u_t = sum_n G(x_t, x_n) g_n, with pair(x_t, x_n, G) writing the 3 x 3 kernel of one pair
+/// (3 numbers per point and per force): the reference sums the fast ones are tested against.
+template <class Pair>
+std::vector<double> pairSum(const std::vector<double>& sources, const std::vector<double>& forces,
+                            const std::vector<double>& targets, const Pair& pair)
+{
+  std::vector<double> u(targets.size(), 0.0);
+  for (std::size_t t = 0; t < targets.size(); t += 3) {
+    for (std::size_t n = 0; n < sources.size(); n += 3) {
+      double G[3][3];
+      pair(&targets[t], &sources[n], G);
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+          u[t + i] += G[i][j] * forces[n + j];
+        }
+      }
+    }
+  }
+  return u;
+}
+
+/// max_t |u_t| over the 3-vectors of u.
+inline double largestSpeed(const std::vector<double>& u)
+{
+  double m = 0.0;
+  for (std::size_t t = 0; t < u.size(); t += 3) {
+    m = std::max(m, std::hypot(u[t], u[t + 1], u[t + 2]));
+  }
+  return m;
 }
 
 } // namespace capsula::ewald::testing

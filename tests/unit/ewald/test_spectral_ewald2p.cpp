@@ -28,20 +28,11 @@ std::vector<double> referenceSum(const std::vector<double>& sources, const std::
                                  const std::vector<double>& targets)
 {
   const EwaldTruncation truncation = ewaldTruncation(2.0, 1e-15);
-  std::vector<double> u(targets.size(), 0.0);
-  for (std::size_t t = 0; t < targets.size(); t += 3) {
-    for (std::size_t n = 0; n < sources.size(); n += 3) {
-      const double xh[3] = {targets[t] - sources[n], targets[t + 1] - sources[n + 1], targets[t + 2] - sources[n + 2]};
-      double G[3][3];
-      periodicStokeslet2P(box, truncation, xh, G);
-      for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-          u[t + i] += G[i][j] * forces[n + j];
-        }
-      }
-    }
-  }
-  return u;
+  return capsula::ewald::testing::pairSum(sources, forces, targets,
+                                          [&](const double* x, const double* x0, double G[3][3]) {
+                                            const double xh[3] = {x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]};
+                                            periodicStokeslet2P(box, truncation, xh, G);
+                                          });
 }
 
 struct Problem {

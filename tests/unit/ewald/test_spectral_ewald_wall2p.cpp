@@ -16,6 +16,7 @@
 namespace spectral_ewald_wall_2p_test {
 
 using namespace capsula::ewald;
+using capsula::ewald::testing::largestSpeed;
 using capsula::ewald::testing::randomForces;
 using capsula::ewald::testing::randomPoints;
 using capsula::ewald::testing::relativeError;
@@ -27,28 +28,10 @@ std::vector<double> wallReferenceSum(const std::vector<double>& sources, const s
                                      const std::vector<double>& targets)
 {
   const EwaldTruncation truncation = ewaldTruncation(2.0, 1e-15);
-  std::vector<double> u(targets.size(), 0.0);
-  for (std::size_t t = 0; t < targets.size(); t += 3) {
-    for (std::size_t n = 0; n < sources.size(); n += 3) {
-      double G[3][3];
-      periodicWallStokeslet2P(wallBox, truncation, &targets[t], &sources[n], G);
-      for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-          u[t + i] += G[i][j] * forces[n + j];
-        }
-      }
-    }
-  }
-  return u;
-}
-
-double largestSpeed(const std::vector<double>& u)
-{
-  double m = 0.0;
-  for (std::size_t t = 0; t < u.size(); t += 3) {
-    m = std::max(m, std::hypot(u[t], u[t + 1], u[t + 2]));
-  }
-  return m;
+  return capsula::ewald::testing::pairSum(sources, forces, targets,
+                                          [&](const double* x, const double* x0, double G[3][3]) {
+                                            periodicWallStokeslet2P(wallBox, truncation, x, x0, G);
+                                          });
 }
 
 TEST(SpectralEwaldWall2P, AgreesWithTheReferenceWithinTheTolerance)
