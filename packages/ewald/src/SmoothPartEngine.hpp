@@ -1,10 +1,12 @@
 #pragma once
 // The smooth part of a spectral Ewald sum in a 2P layer (SpectralEwald2P.hpp), for any kernel
-// that is a Stokes singularity: sources with C components are spread with Gaussians onto the grid,
-// FFT'd, multiplied by the kernel's screened transform (Kernel::multiply: C components in, 3
-// out, (k_x, k_z) != 0), transformed back, given the zero mode (each source component's x-z sum
-// convolved in y with the kernel's 1D profile Kernel::zeroModeProfile, then combined by
-// Kernel::combineZeroMode), and gathered at the targets.
+// that is a Stokes singularity: sources with C components are spread with Gaussians onto the grid
+// (y-levels outermost: index (j N_x + i) N_z + l), FFT'd in x and z on every level, each mode
+// (k_x, k_z) != 0 FFT'd in y over its own zero-padded period (yPeriodLevels), multiplied by the
+// kernel's screened transform (Kernel::multiply: C components in, 3 out), transformed back,
+// given the zero mode (each source component's x-z sum convolved in y with the kernel's 1D
+// profile Kernel::zeroModeProfile, then combined by Kernel::combineZeroMode), and gathered at
+// the targets.
 #include "FftwGrids.hpp"
 
 #include "capsula/ewald/SpectralEwald2P.hpp"
@@ -54,12 +56,12 @@ void forEachGridPoint(const SpectralEwaldSettings& s, const double* x, Visit vis
   for (std::size_t c = 0; c < countZ; ++c) {
     wrappedZ[c] = ((sz.first + static_cast<int>(c)) % s.gridZ + s.gridZ) % s.gridZ;
   }
-  for (std::size_t a = 0; a < sx.weight.size(); ++a) {
-    const int i = ((sx.first + static_cast<int>(a)) % s.gridX + s.gridX) % s.gridX;
-    for (std::size_t b = 0; b < sy.weight.size(); ++b) {
-      const int j = sy.first + static_cast<int>(b);
+  for (std::size_t b = 0; b < sy.weight.size(); ++b) {
+    const int j = sy.first + static_cast<int>(b);
+    for (std::size_t a = 0; a < sx.weight.size(); ++a) {
+      const int i = ((sx.first + static_cast<int>(a)) % s.gridX + s.gridX) % s.gridX;
       const double wxy = normalisation * sx.weight[a] * sy.weight[b];
-      const std::size_t row = (static_cast<std::size_t>(i) * s.gridY + j) * s.gridZ;
+      const std::size_t row = (static_cast<std::size_t>(j) * s.gridX + i) * s.gridZ;
       for (std::size_t c = 0; c < countZ; ++c) {
         visit(row + wrappedZ[c], wxy * sz.weight[c]);
       }
@@ -67,7 +69,7 @@ void forEachGridPoint(const SpectralEwaldSettings& s, const double* x, Visit vis
   }
 }
 
-/// The points (3 numbers each) in the order of their grid rows (x index, then y index), so that
+/// The points (3 numbers each) in the order of their grid rows (y level, then x index), so that
 /// consecutive spreading and gathering touch neighbouring memory.
 inline std::vector<std::size_t> gridOrder(const SpectralEwaldSettings& s, const std::vector<double>& points)
 {
@@ -79,7 +81,7 @@ inline std::vector<std::size_t> gridOrder(const SpectralEwaldSettings& s, const 
     const double xFolded = points[3 * n] - s.gridX * s.spacingX * std::floor(points[3 * n] / (s.gridX * s.spacingX));
     const long long i = static_cast<long long>(xFolded / s.spacingX);
     const long long j = static_cast<long long>(std::floor((points[3 * n + 1] - s.yOrigin) / s.spacingY));
-    key[n] = i * (s.gridY + 1) + j;
+    key[n] = j * (s.gridX + 1) + i;
   }
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
   return order;
@@ -94,39 +96,105 @@ inline int signedIndex(int i, int n)
   return 2 * i < n ? i : i - n;
 }
 
-/// out = Kernel::multiply(k, in) on the half spectrum; the (k_x, k_z) = 0 line (the zero mode,
-/// added in y afterwards) and the Nyquist planes (below the tolerance) are set to zero.
+/// One FFT length in y: the plans of a zero-padded column of `length` levels, in place.
+struct ColumnTransform {
+  int length;
+  ComplexGrid buffer;
+  fftw_plan forward, backward;
+
+  explicit ColumnTransform(int n)
+      : length(n),
+        buffer(makeComplexGrid(static_cast<std::size_t>(n))),
+        forward(fftw_plan_dft_1d(n, buffer.get(), buffer.get(), FFTW_FORWARD, FFTW_ESTIMATE)),
+        backward(fftw_plan_dft_1d(n, buffer.get(), buffer.get(), FFTW_BACKWARD, FFTW_ESTIMATE))
+  {}
+  ~ColumnTransform()
+  {
+    fftw_destroy_plan(forward);
+    fftw_destroy_plan(backward);
+  }
+  ColumnTransform(const ColumnTransform&) = delete;
+  ColumnTransform& operator=(const ColumnTransform&) = delete;
+};
+
+/// The field's x-z spectrum on the y-levels, out[c][(j, mode)], from the sources' in[c]: for each
+/// mode (k_x, k_z) != 0 below the Nyquist planes, the levels padded with zeros to the mode's
+/// y-period M (yPeriodLevels), FFT'd, multiplied by Kernel::multiply(k) (k_y = 2 pi m / (M h)), and
+/// transformed back onto the levels. The (k_x, k_z) = 0 line (the zero mode, added in y
+/// afterwards) and the Nyquist planes (below the tolerance) are set to zero.
 template <class Kernel>
 void multiplySpectrum(const PeriodicLayer& layer, const SpectralEwaldSettings& s, std::vector<ComplexGrid>& in,
                       ComplexGrid (&out)[3])
 {
   constexpr double enginePi = 3.14159265358979323846;
+  constexpr int C = Kernel::sourceComponents;
   const int halfZ = s.gridZ / 2 + 1;
-  const double periodY = s.gridY * s.spacingY;
-  const double scale = 1.0 / (static_cast<double>(s.gridX) * s.gridY * s.gridZ);
-  std::complex<double> h[Kernel::sourceComponents], u[3];
+  const std::size_t planeModes = static_cast<std::size_t>(s.gridX) * halfZ;
+  std::vector<std::unique_ptr<ColumnTransform>> transforms; // by length, made as needed
+  const auto transformOf = [&](int length) -> ColumnTransform& {
+    for (auto& t : transforms) {
+      if (t->length == length) {
+        return *t;
+      }
+    }
+    transforms.push_back(std::make_unique<ColumnTransform>(length));
+    return *transforms.back();
+  };
+  std::vector<std::complex<double>> modes, field;
+  std::complex<double> h[C], u[3];
   for (int i = 0; i < s.gridX; ++i) {
     const int mi = signedIndex(i, s.gridX);
-    for (int j = 0; j < s.gridY; ++j) {
-      const int mj = signedIndex(j, s.gridY);
-      for (int l = 0; l < halfZ; ++l) {
-        const std::size_t index = (static_cast<std::size_t>(i) * s.gridY + j) * halfZ + l;
-        const bool nyquist = mi == s.gridX || mj == s.gridY || 2 * l == s.gridZ;
-        if (nyquist || (mi == 0 && l == 0)) {
-          for (auto& component : out) {
-            component[index][0] = component[index][1] = 0.0;
+    for (int l = 0; l < halfZ; ++l) {
+      const std::size_t mode = static_cast<std::size_t>(i) * halfZ + l;
+      if (mi == s.gridX || 2 * l == s.gridZ || (mi == 0 && l == 0)) {
+        for (auto& component : out) {
+          for (int j = 0; j < s.gridY; ++j) {
+            component[j * planeModes + mode][0] = component[j * planeModes + mode][1] = 0.0;
           }
-          continue;
         }
-        const double k[3] = {2.0 * enginePi * mi / layer.lengthX, 2.0 * enginePi * mj / periodY,
-                             2.0 * enginePi * l / layer.lengthZ};
-        for (int c = 0; c < Kernel::sourceComponents; ++c) {
-          h[c] = scale * std::complex<double>(in[c][index][0], in[c][index][1]);
+        continue;
+      }
+      const double kx = 2.0 * enginePi * mi / layer.lengthX, kz = 2.0 * enginePi * l / layer.lengthZ;
+      ColumnTransform& transform = transformOf(yPeriodLevels(s, std::hypot(kx, kz)));
+      const int length = transform.length;
+      const double scale = 1.0 / (static_cast<double>(s.gridX) * s.gridZ * length);
+      modes.assign(static_cast<std::size_t>(C) * length, 0.0);
+      fftw_complex* buffer = transform.buffer.get();
+      for (int c = 0; c < C; ++c) { // the C source columns, transformed in y
+        for (int j = 0; j < length; ++j) {
+          const bool level = j < s.gridY;
+          buffer[j][0] = level ? in[c][j * planeModes + mode][0] : 0.0;
+          buffer[j][1] = level ? in[c][j * planeModes + mode][1] : 0.0;
+        }
+        fftw_execute(transform.forward);
+        for (int m = 0; m < length; ++m) {
+          modes[static_cast<std::size_t>(c) * length + m] = scale * std::complex<double>(buffer[m][0], buffer[m][1]);
+        }
+      }
+      field.assign(static_cast<std::size_t>(3) * length, 0.0);
+      for (int m = 0; m < length; ++m) {
+        const int mj = signedIndex(m, length);
+        if (mj == length) {
+          continue; // the y Nyquist mode
+        }
+        const double k[3] = {kx, 2.0 * enginePi * mj / (length * s.spacingY), kz};
+        for (int c = 0; c < C; ++c) {
+          h[c] = modes[static_cast<std::size_t>(c) * length + m];
         }
         Kernel::multiply(k, s.xi, s.eta, h, u);
         for (int c = 0; c < 3; ++c) {
-          out[c][index][0] = u[c].real();
-          out[c][index][1] = u[c].imag();
+          field[static_cast<std::size_t>(c) * length + m] = u[c];
+        }
+      }
+      for (int c = 0; c < 3; ++c) { // back onto the levels
+        for (int m = 0; m < length; ++m) {
+          buffer[m][0] = field[static_cast<std::size_t>(c) * length + m].real();
+          buffer[m][1] = field[static_cast<std::size_t>(c) * length + m].imag();
+        }
+        fftw_execute(transform.backward);
+        for (int j = 0; j < s.gridY; ++j) {
+          out[c][j * planeModes + mode][0] = buffer[j][0];
+          out[c][j * planeModes + mode][1] = buffer[j][1];
         }
       }
     }
@@ -149,12 +217,11 @@ void addZeroMode(const PeriodicLayer& layer, const SpectralEwaldSettings& s, con
   std::vector<std::vector<double>> convolved(Kernel::sourceComponents, std::vector<double>(s.gridY, 0.0));
   for (int c = 0; c < Kernel::sourceComponents; ++c) {
     std::vector<double> rho(s.gridY, 0.0);
-    for (int i = 0; i < s.gridX; ++i) {
-      for (int j = 0; j < s.gridY; ++j) {
-        const double* row = spread[c].get() + (static_cast<std::size_t>(i) * s.gridY + j) * s.gridZ;
-        for (int l = 0; l < s.gridZ; ++l) {
-          rho[j] += row[l];
-        }
+    const std::size_t plane = static_cast<std::size_t>(s.gridX) * s.gridZ;
+    for (int j = 0; j < s.gridY; ++j) {
+      const double* level = spread[c].get() + j * plane;
+      for (std::size_t p = 0; p < plane; ++p) {
+        rho[j] += level[p];
       }
     }
     for (int j = 0; j < s.gridY; ++j) {
@@ -170,12 +237,11 @@ void addZeroMode(const PeriodicLayer& layer, const SpectralEwaldSettings& s, con
       in[c] = convolved[c][j];
     }
     Kernel::combineZeroMode(in, out);
+    const std::size_t plane = static_cast<std::size_t>(s.gridX) * s.gridZ;
     for (int c = 0; c < 3; ++c) {
-      for (int i = 0; i < s.gridX; ++i) {
-        double* row = field[c].get() + (static_cast<std::size_t>(i) * s.gridY + j) * s.gridZ;
-        for (int l = 0; l < s.gridZ; ++l) {
-          row[l] += out[c];
-        }
+      double* level = field[c].get() + j * plane;
+      for (std::size_t p = 0; p < plane; ++p) {
+        level[p] += out[c];
       }
     }
   }
@@ -210,17 +276,19 @@ void addSmoothPart(const PeriodicLayer& layer, const SpectralEwaldSettings& s, c
     });
   }
   // FFTW_ESTIMATE plans do not touch the arrays; an out-of-place r2c keeps its input (the zero
-  // mode needs it).
+  // mode needs it). The 2D transforms in x and z run on every y-level (contiguous planes).
+  const int n[2] = {s.gridX, s.gridZ};
+  const int plane = s.gridX * s.gridZ, planeModes = s.gridX * (s.gridZ / 2 + 1);
   for (int c = 0; c < C; ++c) {
-    fftw_plan forward =
-        fftw_plan_dft_r2c_3d(s.gridX, s.gridY, s.gridZ, spread[c].get(), spectrum[c].get(), FFTW_ESTIMATE);
+    fftw_plan forward = fftw_plan_many_dft_r2c(2, n, s.gridY, spread[c].get(), nullptr, 1, plane, spectrum[c].get(),
+                                               nullptr, 1, planeModes, FFTW_ESTIMATE);
     fftw_execute(forward);
     fftw_destroy_plan(forward);
   }
   multiplySpectrum<Kernel>(layer, s, spectrum, fieldSpectrum);
   for (int c = 0; c < 3; ++c) {
-    fftw_plan backward =
-        fftw_plan_dft_c2r_3d(s.gridX, s.gridY, s.gridZ, fieldSpectrum[c].get(), field[c].get(), FFTW_ESTIMATE);
+    fftw_plan backward = fftw_plan_many_dft_c2r(2, n, s.gridY, fieldSpectrum[c].get(), nullptr, 1, planeModes,
+                                                field[c].get(), nullptr, 1, plane, FFTW_ESTIMATE);
     fftw_execute(backward);
     fftw_destroy_plan(backward);
   }

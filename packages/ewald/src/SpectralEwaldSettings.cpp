@@ -14,16 +14,6 @@ namespace {
 
 constexpr double settingsPi = 3.14159265358979323846;
 
-/// d with (1 + a d) e^{-a d} = tol (fixed point of d = (ln(1/tol) + ln(1 + a d)) / a).
-double yImageDistance(double a, double tolerance)
-{
-  double d = std::log(1.0 / tolerance) / a;
-  for (int iteration = 0; iteration < 20; ++iteration) {
-    d = (std::log(1.0 / tolerance) + std::log(1.0 + a * d)) / a;
-  }
-  return d;
-}
-
 /// xi such that the ball of radius r_c = sqrt(ln(1/tol) + 2) / xi holds `neighbours` sources
 /// of a uniform density over the cell area times the heights' range.
 double xiForNeighbours(const PeriodicLayer& layer, double tolerance, double ySpan, int sourceCount, int neighbours)
@@ -36,6 +26,23 @@ double xiForNeighbours(const PeriodicLayer& layer, double tolerance, double ySpa
 }
 
 } // namespace
+
+double yImagePadding(double a, double tolerance)
+{
+  // The fixed point of d = (ln(1/tol) + ln(1 + a d)) / a.
+  double d = std::log(1.0 / tolerance) / a;
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    d = (std::log(1.0 / tolerance) + std::log(1.0 + a * d)) / a;
+  }
+  return d;
+}
+
+int yPeriodLevels(const SpectralEwaldSettings& s, double a)
+{
+  const double span = (s.gridY - 1) * s.spacingY;
+  return std::max(s.gridY,
+                  fastFftSize(static_cast<int>(std::ceil((span + yImagePadding(a, s.tolerance)) / s.spacingY))));
+}
 
 SpectralEwaldSettings spectralEwaldSettings(const PeriodicLayer& layer, double tolerance, double yMin, double yMax,
                                             int sourceCount, double xi, int neighbours)
@@ -64,12 +71,12 @@ SpectralEwaldSettings spectralEwaldSettings(const PeriodicLayer& layer, double t
   s.supportRadius = 0.5 * s.supportPoints * h;
   s.eta = std::pow(2.0 * s.supportRadius * s.xi / m, 2);
   s.gaussianExponent = 2.0 * s.xi * s.xi / s.eta;
-  // The y-grid: the spread data [yMin - w, yMax + w] plus the distance d to its nearest y-image.
-  const double lowestWavenumber = 2.0 * settingsPi / std::max(layer.lengthX, layer.lengthZ);
+  // The y-levels: the spread data [yMin - w, yMax + w] and a level beyond each end; each mode
+  // pads its own y-period (yPeriodLevels).
   const double span = yMax - yMin + 2.0 * s.supportRadius + 2.0 * h;
-  const double period = span + yImageDistance(lowestWavenumber, tolerance);
-  s.gridY = fastFftSize(static_cast<int>(std::ceil(period / h)));
+  s.gridY = static_cast<int>(std::ceil(span / h)) + 1;
   s.yOrigin = yMin - s.supportRadius - h;
+  s.tolerance = tolerance;
   return s;
 }
 

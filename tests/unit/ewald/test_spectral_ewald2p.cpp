@@ -66,6 +66,29 @@ TEST(SpectralEwald2P, ErrorIsBelowTheTolerance)
   }
 }
 
+// A wide flat layer (periods 12 and 10, heights 0..1, targets up to 3 above): its lowest modes
+// (|k| = 2 pi / 12 = 0.52) need a y-period 30 long, the others far less, and each mode pads its
+// own (yPeriodLevels). The error stays within the tolerance; measured 0.1-0.25 tol. Padding
+// every mode like |k| = 2 pi leaves 7e-5 at tol 1e-6 and 1.7e-4 at 1e-8 (the test fails).
+TEST(SpectralEwald2P, AWideFlatLayerKeepsTheTolerance)
+{
+  const PeriodicLayer wide{12.0, 10.0};
+  const auto sources = randomPoints(wide, 20, 21, 0.0, 1.0);
+  const auto forces = randomForces(20, 22);
+  const auto targets = randomPoints(wide, 12, 23, -1.0, 3.0);
+  const EwaldTruncation truncation = ewaldTruncation(1.0, 1e-15);
+  const auto reference = capsula::ewald::testing::pairSum(
+      sources, forces, targets, [&](const double* x, const double* x0, double G[3][3]) {
+        const double xh[3] = {x[0] - x0[0], x[1] - x0[1], x[2] - x0[2]};
+        periodicStokeslet2P(wide, truncation, xh, G);
+      });
+  for (double tolerance : {1e-4, 1e-6, 1e-8}) {
+    const double error = relativeError(spectralEwald2P(wide, tolerance, sources, forces, targets), reference);
+    std::printf("wide layer, tolerance %.0e: error %.2e\n", tolerance, error);
+    EXPECT_LT(error, tolerance) << "tolerance " << tolerance;
+  }
+}
+
 TEST(SpectralEwald2P, IndependentOfTheSplittingParameter)
 {
   // xi = 1.5, 6, 12 move the work between the local part and the grid (at xi = 1.5, r_c = 3 is

@@ -11,10 +11,15 @@
 // xi. Smooth part: the forces are spread with Gaussians e^{-2 xi^2 r^2 / eta} onto a uniform grid
 // periodic in x and z and padded in y, FFT'd (FFTW), multiplied by
 //   8 pi (delta k^2 - k k) / k^4 (1 + k^2/(4 xi^2)) e^{-(1 - eta) k^2 / (4 xi^2)},
-// transformed back and gathered with the same Gaussians. The modes (k_x, k_z) != 0 see the
-// padded y period as a periodic one: the grid is long enough that the nearest y-image of the
-// spread data lies d beyond it, with (1 + a d) e^{-a d} <= tol, a = 2 pi / max(L_x, L_z) the
-// lowest wavenumber (the ky-integral's kernel decays like that). The mode (k_x, k_z) = 0 is the
+// transformed back and gathered with the same Gaussians. The grid spans the points' heights
+// plus the Gaussians' support in y; the FFT in x and z runs on each of its y-levels, and each
+// mode (k_x, k_z) != 0, a = |(k_x, k_z)|, is then a 1D convolution in y, done by an FFT over the
+// levels padded with zeros to a period of its own: long enough that the nearest y-image of the
+// spread data lies d(a) beyond it, (1 + a d) e^{-a d} = tol (the ky-integral's kernel decays
+// like that). Only the few modes with small a need long periods (d ~ ln(1/tol) / a), so a wide
+// flat layer costs N log N, where one period for all modes (that of the lowest a = 2 pi / L)
+// would grow the grid like L^3 for N ~ L^2 points (the padded FFT of Lindbo & Tornberg's 2P
+// method does the same for the zero mode's neighbourhood). The mode (k_x, k_z) = 0 is the
 // exact 1D problem (ZeroMode2P.hpp): the x-z sums of the spread forces convolved in y, directly
 // on the grid, with the kernel whose transform is 8 pi (1 + k^2/(4 xi^2)) e^{-(1-eta) k^2/(4 xi^2)} / k^2.
 //
@@ -24,7 +29,7 @@
 //   P = ceil(2 L / pi) + 4 grid spacings across a Gaussian, m = 0.95 sqrt(pi P),
 //   eta = (P h xi / m)^2 (kept below 0.9 by a smaller h): cutting and sampling the Gaussians
 //   cost ~e^{-pi P / 2} (Lindbo & Tornberg's estimate);
-//   the y-period: the nearest y-image of the spread data d away, (1 + a d) e^{-a d} = tol;
+//   each mode's y-period: the nearest y-image of the spread data d away, (1 + a d) e^{-a d} = tol;
 // and xi, unless given, such that a target has about `neighbours` sources within r_c when the
 // sources fill the cell area times their height range (at least a tenth of the shorter period).
 // The margins (+6, +4) were measured: the largest error is 0.05-0.1 tol for tol = 1e-3..1e-8
@@ -45,10 +50,19 @@ struct SpectralEwaldSettings {
   double gaussianExponent = 0.0; // 2 xi^2 / eta
   double supportRadius = 0.0;    // w: the Gaussians are cut beyond |x - x_n| = w along each axis
   int supportPoints = 0;         // P
-  int gridX = 0, gridY = 0, gridZ = 0;
+  int gridX = 0, gridZ = 0;
+  int gridY = 0; // the y-levels spanning the heights plus the support (each mode pads its own period)
   double spacingX = 0.0, spacingY = 0.0, spacingZ = 0.0;
-  double yOrigin = 0.0; // height of the grid's first y-plane
+  double yOrigin = 0.0;   // height of the grid's first y-plane
+  double tolerance = 0.0; // sets each mode's y-period (yImagePadding)
 };
+
+/// d with (1 + a d) e^{-a d} = tol: how far beyond the spread data the nearest y-image of a mode
+/// of wavenumber a must lie.
+double yImagePadding(double a, double tolerance);
+
+/// The y-period, in grid levels (a fast FFT size), of the mode of wavenumber a > 0.
+int yPeriodLevels(const SpectralEwaldSettings& settings, double a);
 
 /// The settings for points with heights in [yMin, yMax]; xi <= 0 picks xi by the neighbour rule.
 SpectralEwaldSettings spectralEwaldSettings(const PeriodicLayer& layer, double tolerance, double yMin, double yMax,
