@@ -76,6 +76,10 @@ GENERATORS.update({
         "/usr/bin/python3 utils/bench/periodic_scaling.py --build build",
         ["utils/bench/periodic_scaling.py", "apps/bench_operators/main.cpp"],
         "about 10 minutes on 1 core"),
+    "docs/cell3d-adhesion-results.md": (
+        "bash utils/studies/cell3d-adhesion.sh docs/figures",
+        STUDY + ["utils/studies/cell3d-adhesion.sh", "utils/plotting/cell3d_adhesion.py", "input/cell3d/adhesion"],
+        "about 1.5 hours on 2 cores, then the page's numbers rewritten from the table"),
     "docs/figures/cell3d_pulsatile_table.md": (
         "bash utils/studies/cell3d-pulsatile.sh docs/figures",
         STUDY + ["utils/studies/cell3d-pulsatile.sh", "utils/plotting/cell3d_pulsatile.py", "input/cell3d/pulsatile"],
