@@ -126,7 +126,8 @@ TEST(OperatorPlugins, UnknownNamesListTheRegisteredOnes)
   const OperatorLibraries libraries = librariesWithToyKernel();
   // The deck: the choices come from the registries.
   const std::string kernel = inputErrorMessage([&] { toyDeck(libraries, false, {{"Kernel", "ScaledFreeSpac"}}); });
-  EXPECT_NE(kernel.find("one of: Auto, FreeSpace, Periodic, PeriodicWall, ScaledFreeSpace, Wall"), std::string::npos)
+  EXPECT_NE(kernel.find("one of: Auto, FreeSpace, Periodic, PeriodicChannel, PeriodicWall, ScaledFreeSpace, Wall"),
+            std::string::npos)
       << kernel;
   EXPECT_NE(kernel.find("did you mean \"ScaledFreeSpace\""), std::string::npos) << kernel;
   const std::string summation = inputErrorMessage([&] { toyDeck(libraries, false, {{"Summation", "FMM"}}); });
@@ -136,9 +137,10 @@ TEST(OperatorPlugins, UnknownNamesListTheRegisteredOnes)
   operatorList.set("Kernel", "Hasimoto");
   const std::string unvalidated =
       inputErrorMessage([&] { operators::readKernelChoice(operatorList, libraries.kernels.infos(), false); });
-  EXPECT_NE(unvalidated.find("no Green's function kernel named 'Hasimoto'; registered: FreeSpace, Periodic, "
-                             "PeriodicWall, ScaledFreeSpace, Wall."),
-            std::string::npos)
+  EXPECT_NE(
+      unvalidated.find("no Green's function kernel named 'Hasimoto'; registered: FreeSpace, Periodic, PeriodicChannel, "
+                       "PeriodicWall, ScaledFreeSpace, Wall."),
+      std::string::npos)
       << unvalidated;
 }
 
