@@ -1,6 +1,7 @@
 // bench_operators: the cost of one velocity evaluation of the boundary-integral operators.
 //
-//   mpiexec -n 2 bench_operators [--level=3] [--kernel=Wall|FreeSpace|WallTensors|PeriodicWall] [--lambda=1]
+//   mpiexec -n 2 bench_operators [--level=3] [--kernel=Wall|FreeSpace|WallTensors|PeriodicWall|PeriodicChannel]
+//                                [--lambda=1] [--channel-height=4.4]
 //                                [--quadrature-points=7]
 //                                [--rings=2] [--repeat=3] [--cells=1]
 //                                [--summation=Direct|Treecode] [--tolerance=1e-5]
@@ -12,7 +13,9 @@
 // neighbours and above the wall). --kernel=PeriodicWall puts the grid in a box periodic along
 // x and z whose periods are the grid's (columns and rows times the pitch, so the neighbours'
 // gaps repeat across the boundary), its far field the spectral Ewald sum to --ewald-tolerance
-// (docs/domains.md); lambda 1 only. --summation picks the far-field back-end of the
+// (docs/domains.md); --kernel=PeriodicChannel does the same in the channel 0 < y < H,
+// H = --channel-height (4.4: the grid's volume fraction 0.2 at any N). --summation picks the
+// far-field back-end of the
 // regular sums ('Operator/Summation'; Treecode to --tolerance, docs/fastsum.md; the single
 // layer's precision from the tolerance's table row or, with --single-layer, float or
 // double); for Treecode the velocities are also computed with Direct and their relative
@@ -137,8 +140,9 @@ struct BenchOptions {
   double cellGap = 0.2;
   double wallGap = -1.0; ///< < 0: 1 for one cell (centre 2 above the wall), else 0.2
   std::string singleLayer = "table";
-  double ewaldTolerance = 1e-6;  ///< PeriodicWall: 'Operator/PeriodicWall/Tolerance'
-  double boxX = 0.0, boxZ = 0.0; ///< PeriodicWall: the periods, set from the grid
+  double ewaldTolerance = 1e-6;  ///< PeriodicWall, PeriodicChannel: 'Operator/<kernel>/Tolerance'
+  double boxX = 0.0, boxZ = 0.0; ///< PeriodicWall, PeriodicChannel: the periods, set from the grid
+  double channelHeight = 4.4;    ///< PeriodicChannel: H
 };
 
 // The centres of the unit cells: one 2 above the wall, or a square grid 0.2 above it, the
@@ -272,7 +276,8 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
   double difference = -1.0;
   Timing reference;
   LayerErrors layers;
-  constexpr bool periodic = std::is_same_v<Kernel, periodic::PeriodicWallKernel>;
+  constexpr bool periodic =
+      std::is_same_v<Kernel, periodic::PeriodicWallKernel> || std::is_same_v<Kernel, periodic::PeriodicChannelKernel>;
   if (options.summation == "Direct") {
     if constexpr (!periodic) { // a periodic kernel's regular sums are its Ewald sums, timed above
       directTime = timeIt(*comm, repeat, [&] { sink += directSum(solver.layerPotentials(), loads, direct); });
@@ -343,6 +348,10 @@ int run(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const BenchOptions& 
     if (periodic) {
       std::printf("  box %g x %g, Ewald tolerance %.0e; (velocity cpu ms per cell: %.1f)\n", options.boxX, options.boxZ,
                   options.ewaldTolerance, velocity.cpu / surfaces.numCells());
+      if (std::is_same_v<Kernel, periodic::PeriodicChannelKernel>) {
+        std::printf("  channel height %g, volume fraction %.3f\n", options.channelHeight,
+                    surfaces.numCells() * 4.0 * M_PI / 3.0 / (options.boxX * options.boxZ * options.channelHeight));
+      }
       return 0;
     }
     std::printf("  direct sum (floor)       %8.1f  %8.1f   (%d targets x %d points)\n", directTime.wall, directTime.cpu,
@@ -366,11 +375,12 @@ int main(int argc, char* argv[])
   clp.setDocString("Times one velocity evaluation of the boundary-integral operators "
                    "(mpiexec -n N bench_operators [options]).");
   clp.setOption("level", &options.level, "icosphere level of the cells (3: 2562 nodes each)");
-  clp.setOption(
-      "kernel", &kernel,
-      "Wall, FreeSpace, WallTensors (the wall kernel without the contracted forms), or PeriodicWall (the grid "
-      "in a periodic box)");
-  clp.setOption("ewald-tolerance", &options.ewaldTolerance, "PeriodicWall: tolerance of the spectral Ewald sums");
+  clp.setOption("kernel", &kernel,
+                "Wall, FreeSpace, WallTensors (the wall kernel without the contracted forms), PeriodicWall (the grid "
+                "in a periodic box) or PeriodicChannel (the same in a channel)");
+  clp.setOption("ewald-tolerance", &options.ewaldTolerance,
+                "PeriodicWall, PeriodicChannel: tolerance of the spectral Ewald sums");
+  clp.setOption("channel-height", &options.channelHeight, "PeriodicChannel: the channel's height H");
   clp.setOption("lambda", &options.lambda, "viscosity ratio (1: explicit; otherwise GMRES)");
   clp.setOption("quadrature-points", &options.quadraturePoints, "N_Q");
   clp.setOption("rings", &options.rings, "regular neighbour rings (0: subdivide near elements of the own cell too)");
@@ -406,16 +416,31 @@ int main(int argc, char* argv[])
       periodic::PeriodicWallKernel policy;
       policy.box = periodic::PeriodicBox{options.boxX, options.boxZ};
       policy.tolerance = options.ewaldTolerance;
-      core::require<core::InputError>(options.lambda == 1.0 && options.summation == "Direct",
-                                      "--kernel=PeriodicWall: lambda 1 and --summation=Direct only (its far field is "
-                                      "its Ewald sum).");
+      core::require<core::InputError>(
+          options.summation == "Direct",
+          "--kernel=PeriodicWall: --summation=Direct only (its far field is its Ewald sum).");
       return run<periodic::PeriodicWallKernel>(comm, options, policy);
+    }
+    if (kernel == "PeriodicChannel") {
+      setGridBox(options);
+      periodic::PeriodicChannelKernel policy;
+      policy.box = periodic::PeriodicBox{options.boxX, options.boxZ};
+      policy.tolerance = options.ewaldTolerance;
+      policy.local.height = options.channelHeight;
+      const double top = 2.0 + (options.wallGap >= 0.0 ? options.wallGap : options.cells == 1 ? 1.0 : 0.2);
+      core::require<core::InputError>(options.summation == "Direct" && options.channelHeight > top,
+                                      "--kernel=PeriodicChannel: --summation=Direct only (its far field is its Ewald "
+                                      "sum), and --channel-height above the cells' tops (",
+                                      top, ").");
+      return run<periodic::PeriodicChannelKernel>(comm, options, policy);
     }
     if (kernel == "WallTensors") {
       // The wall kernel straight from greens: full tensors contracted in the loops.
       return run<greens::Wall3D>(comm, options);
     }
-    std::fprintf(stderr, "bench_operators: unknown --kernel=%s (Wall, FreeSpace, WallTensors or PeriodicWall)\n",
+    std::fprintf(stderr,
+                 "bench_operators: unknown --kernel=%s (Wall, FreeSpace, WallTensors, PeriodicWall or "
+                 "PeriodicChannel)\n",
                  kernel.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_operators: %s\n", e.what());

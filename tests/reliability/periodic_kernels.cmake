@@ -14,16 +14,6 @@ periodic_refusal(treecode_with_a_periodic_kernel
   "'Operator/Summation' = Treecode does not support the periodic lower wall kernel \\('Operator/Kernel'\\); use 'Operator/Summation' = Direct"
   cell3d ${_cell3d_demo} --set "Domain/Periodic length x=8" --set "Domain/Periodic length z=8"
   --set "Operator/Summation=Treecode")
-# The periodic wall's stresslet has no fast sum: no double layer.
-periodic_refusal(viscosity_ratio_above_the_periodic_wall
-  "'Operator/Kernel' = PeriodicWall needs every viscosity ratio to be 1 \\('Flow/Viscosity ratio', 'Cells/<cell>/Viscosity ratio'\\); cell 0 has 5"
-  cell3d ${_cell3d_demo} --set "Domain/Periodic length x=8" --set "Domain/Periodic length z=8"
-  --set "Flow/Viscosity ratio=5")
-# Nor has the periodic channel's.
-periodic_refusal(viscosity_ratio_in_the_periodic_channel
-  "'Operator/Kernel' = PeriodicChannel needs every viscosity ratio to be 1 \\('Flow/Viscosity ratio', 'Cells/<cell>/Viscosity ratio'\\); cell 0 has 5\\. The periodic channel's stresslet has no fast sum"
-  cell3d ${_cell3d_demo} --set "Domain/Periodic length x=8" --set "Domain/Periodic length z=8"
-  --set "Wall/Channel height=6" --set "Flow/Profile=Poiseuille" --set "Flow/Viscosity ratio=5")
 # The Ewald sums are doubly periodic: a box periodic along x only has no periodic kernel.
 periodic_refusal(periodic_kernel_named_for_one_period
   "'Operator/Kernel' = PeriodicWall is for the fluid above the wall y = 0, periodic along x and z but the deck \\('Wall/Enabled' = true, 'Domain/Periodic length x' = 8\\) describes"

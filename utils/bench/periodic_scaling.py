@@ -1,20 +1,26 @@
 #!/usr/bin/python3
-"""The cost of one velocity evaluation against the number of cells: the periodic wall's spectral
-Ewald sums against the treecode above the unbounded wall, as a markdown table and a log-log figure.
+"""The cost of one velocity evaluation against the number of cells: the periodic wall's and the
+periodic channel's spectral Ewald sums against the treecode above the unbounded wall, as a
+markdown table and a log-log figure.
 
-  periodic_scaling.py --build BUILD [--cells 1,4,16,64] [--out DIR]
+  periodic_scaling.py --build BUILD [--cells 1,4,16,64] [--lambda-cells 1,4,16] [--out DIR]
 
 Each run is bench_operators on one rank (--repeat=1; the best of one) with N level-2 unit spheres
 0.2 above the wall on a square grid of pitch 2.2 (642 nodes, 320 elements, 2240 quadrature
 points each), the same membrane load:
-  PeriodicWall   --kernel=PeriodicWall: the grid in a box periodic along x and z with the grid's
-                 periods (so the cells' density does not change with N), far field the spectral
-                 Ewald sum at tolerance 1e-6 ('Operator/PeriodicWall/Tolerance' default);
-  Treecode       --kernel=Wall --summation=Treecode --tolerance=1e-5: the same grid above the
-                 unbounded wall, the far field by the treecode (docs/fastsum.md).
-The table gives the wall and cpu milliseconds of one evaluation, per cell, and the growth
-exponent between successive N (log of the cpu ratio over log of the N ratio: 1 is linear). It
-names this generator and the code version (git describe --always --dirty). Writes
+  PeriodicWall       --kernel=PeriodicWall: the grid in a box periodic along x and z with the
+                     grid's periods (so the cells' density does not change with N), far field the
+                     spectral Ewald sum at tolerance 1e-6 ('Operator/PeriodicWall/Tolerance'
+                     default);
+  PeriodicChannel    --kernel=PeriodicChannel: the same box in the channel 0 < y < 4.4 (volume
+                     fraction 0.197 at every N), the channel's Ewald sum at 1e-6;
+  PeriodicChannel λ5 the same at viscosity ratio 5 (the channel's double layer in the GMRES
+                     solve), for the --lambda-cells counts only;
+  Treecode           --kernel=Wall --summation=Treecode --tolerance=1e-5: the same grid above the
+                     unbounded wall, the far field by the treecode (docs/fastsum.md).
+The table gives the cpu milliseconds of one evaluation, per cell, and the growth exponent
+between successive N (log of the cpu ratio over log of the N ratio: 1 is linear). It names this
+generator and the code version (git describe --always --dirty). Writes
 periodic_scaling_table.md and periodic_scaling.png (python3-matplotlib) to --out. Debian's
 /usr/bin/python3.
 """
@@ -27,8 +33,10 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 VELOCITY = re.compile(r"velocity evaluation\s+(\S+)\s+(\S+)")
-BACKENDS = [("PeriodicWall", ["--kernel=PeriodicWall"]),
-            ("Treecode", ["--kernel=Wall", "--summation=Treecode", "--tolerance=1e-5"])]
+BACKENDS = [("PeriodicWall", ["--kernel=PeriodicWall"], "cells"),
+            ("PeriodicChannel", ["--kernel=PeriodicChannel"], "cells"),
+            ("PeriodicChannel λ5", ["--kernel=PeriodicChannel", "--lambda=5"], "lambda_cells"),
+            ("Treecode", ["--kernel=Wall", "--summation=Treecode", "--tolerance=1e-5"], "cells")]
 
 
 def measure(bench, cells, options):
@@ -49,32 +57,38 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--build", required=True, help="the build folder (holds apps/bench_operators)")
     parser.add_argument("--cells", default="1,4,16,64", help="the numbers of cells, comma-separated")
+    parser.add_argument("--lambda-cells", default="1,4,16", help="the numbers of cells of the lambda = 5 runs")
     parser.add_argument("--out", default=os.path.join(ROOT, "docs", "figures"), help="where to write")
     args = parser.parse_args()
     bench = os.path.join(args.build, "apps", "bench_operators", "bench_operators")
-    counts = [int(c) for c in args.cells.split(",")]
+    counts = {"cells": [int(c) for c in args.cells.split(",")],
+              "lambda_cells": [int(c) for c in args.lambda_cells.split(",")]}
+    allCounts = sorted(set(counts["cells"]) | set(counts["lambda_cells"]))
     version = subprocess.run(["git", "describe", "--always", "--dirty"], cwd=ROOT, capture_output=True,
                              text=True, check=True).stdout.strip()
     cpu = subprocess.run(["sh", "-c", "grep -m1 'model name' /proc/cpuinfo | cut -d: -f2"], capture_output=True,
                          text=True).stdout.strip()
-    times = {name: [measure(bench, n, options) for n in counts] for name, options in BACKENDS}
+    times = {name: {n: measure(bench, n, options)[1] for n in counts[which]} for name, options, which in BACKENDS}
     command = "/usr/bin/python3 utils/bench/periodic_scaling.py --build build"
+    header = "| cells | nodes | " + " | ".join(f"{name} cpu ms | per cell | growth" for name, _, _ in BACKENDS) + " |"
     lines = [f"Generated by `{command}` with the code at git {version}; one rank on {cpu} "
-             "(times from one run each: compare the two back-ends within this table, not across machines).", "",
-             "| cells | nodes | PeriodicWall wall ms | cpu ms | cpu ms per cell | growth | "
-             "Treecode wall ms | cpu ms | cpu ms per cell | growth |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
-    for k, n in enumerate(counts):
+             "(times from one run each: compare the back-ends within this table, not across machines).", "",
+             header, "|" + "---|" * (2 + 3 * len(BACKENDS))]
+    for n in allCounts:
         row = [str(n), str(642 * n)]
-        for name, _ in BACKENDS:
-            wall, cpu_ms = times[name][k]
-            growth = "" if k == 0 else f"{exponent(counts[k - 1], times[name][k - 1][1], n, cpu_ms):.2f}"
-            row += [f"{wall:.0f}", f"{cpu_ms:.0f}", f"{cpu_ms / n:.0f}", growth]
+        for name, _, _ in BACKENDS:
+            measured = times[name]
+            if n not in measured:
+                row += ["", "", ""]
+                continue
+            earlier = [m for m in measured if m < n]
+            growth = f"{exponent(max(earlier), measured[max(earlier)], n, measured[n]):.2f}" if earlier else ""
+            row += [f"{measured[n]:.0f}", f"{measured[n] / n:.0f}", growth]
         lines.append("| " + " | ".join(row) + " |")
     nlogn = [f"{1 + math.log(math.log(642 * n) / math.log(642 * m)) / math.log(n / m):.2f}"
-             for m, n in zip(counts, counts[1:])]
-    lines += ["", "growth: ln(cpu_N / cpu_M) / ln(N / M) between successive rows; a cost linear in N gives 1, "
-              "one growing like n ln n in the nodes n = 642 N gives " + ", ".join(nlogn) + "."]
+             for m, n in zip(counts["cells"], counts["cells"][1:])]
+    lines += ["", "growth: ln(cpu_N / cpu_M) / ln(N / M) between successive measured rows; a cost linear in N gives "
+              "1, one growing like n ln n in the nodes n = 642 N gives " + ", ".join(nlogn) + "."]
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "periodic_scaling_table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -83,14 +97,16 @@ def main():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     figure, axes = plt.subplots(figsize=(5.5, 4.0))
-    for (name, _), marker in zip(BACKENDS, ["o", "s"]):
-        axes.loglog(counts, [t[1] for t in times[name]], marker=marker, label=name)
-    reference = times["PeriodicWall"][0][1]
-    axes.loglog(counts, [reference * n for n in counts], "k--", linewidth=0.8, label="linear in N")
+    for (name, _, _), marker in zip(BACKENDS, ["o", "^", "v", "s"]):
+        measured = sorted(times[name].items())
+        axes.loglog([n for n, _ in measured], [t for _, t in measured], marker=marker, label=name)
+    reference = times["PeriodicWall"][counts["cells"][0]]
+    axes.loglog(counts["cells"], [reference * n / counts["cells"][0] for n in counts["cells"]], "k--", linewidth=0.8,
+                label="linear in N")
     axes.set_xlabel("cells N (642 nodes each)")
     axes.set_ylabel("cpu ms per velocity evaluation")
     axes.set_title(f"level-2 cells 0.2 above the wall ({version})", fontsize=9)
-    axes.legend()
+    axes.legend(fontsize=8)
     figure.tight_layout()
     figure.savefig(os.path.join(args.out, "periodic_scaling.png"), dpi=120)
 

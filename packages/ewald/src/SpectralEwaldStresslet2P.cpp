@@ -4,6 +4,7 @@
 
 #include "LocalPartEngine.hpp"
 #include "SmoothPartEngine.hpp"
+#include "SymmetricTensor.hpp"
 
 #include "capsula/ewald/StressletSplit.hpp"
 #include "capsula/ewald/ZeroMode2P.hpp"
@@ -14,16 +15,8 @@ namespace capsula::ewald {
 
 namespace {
 
-// Symmetric tensors are stored as (xx, yy, zz, xy, xz, yz).
-constexpr int symmetricIndex[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
-
-template <class Number>
-void symmetricTimes(const Number* S, const double v[3], Number out[3])
-{
-  for (int i = 0; i < 3; ++i) {
-    out[i] = S[symmetricIndex[i][0]] * v[0] + S[symmetricIndex[i][1]] * v[1] + S[symmetricIndex[i][2]] * v[2];
-  }
-}
+using detail::symmetricIndex;
+using detail::symmetricTimes;
 
 struct StressletKernel {
   static constexpr int sourceComponents = 6;

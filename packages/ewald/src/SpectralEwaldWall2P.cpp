@@ -19,19 +19,6 @@ namespace {
 
 constexpr double laplaceKernelPi = 3.14159265358979323846;
 
-/// The smooth multiplier of phi: 4 pi e^{-(1 - eta) k^2/(4 xi^2)} / k^2.
-double laplaceMultiplier(const double k[3], double xi, double eta)
-{
-  const double k2 = k[0] * k[0] + k[1] * k[1] + k[2] * k[2];
-  return 4.0 * laplaceKernelPi * std::exp(-(1.0 - eta) * k2 / (4.0 * xi * xi)) / k2;
-}
-
-/// xi' = xi / sqrt(1 - eta): the 1D profile's screening once the windows are taken out.
-double windowedXi(double xi, double eta)
-{
-  return xi / std::sqrt(1.0 - eta);
-}
-
 /// u = grad (d . grad phi) for dipole densities d (3 components).
 struct DipoleGradientKernel {
   static constexpr int sourceComponents = 3;
@@ -52,7 +39,7 @@ struct DipoleGradientKernel {
   static void multiply(const double k[3], double xi, double eta, const std::complex<double>* d, std::complex<double>* u)
   {
     const std::complex<double> kd = k[0] * d[0] + k[1] * d[1] + k[2] * d[2];
-    const double m = laplaceMultiplier(k, xi, eta);
+    const double m = laplaceSmoothMultiplier(k, xi, eta);
     for (int i = 0; i < 3; ++i) {
       u[i] = -m * k[i] * kd;
     }
@@ -93,7 +80,7 @@ struct DoubletRestKernel {
   static void multiply(const double k[3], double xi, double eta, const std::complex<double>* dq,
                        std::complex<double>* u)
   {
-    const std::complex<double> im(0.0, laplaceMultiplier(k, xi, eta));
+    const std::complex<double> im(0.0, laplaceSmoothMultiplier(k, xi, eta));
     for (int i = 0; i < 3; ++i) {
       u[i] = im * k[i] * dq[3];
     }

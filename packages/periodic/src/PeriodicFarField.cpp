@@ -1,10 +1,11 @@
 #include "capsula/periodic/PeriodicFarField.hpp"
 
-#include <capsula/core/Error.hpp>
 #include <capsula/ewald/SpectralEwald2P.hpp>
 #include <capsula/ewald/SpectralEwaldChannel2P.hpp>
+#include <capsula/ewald/SpectralEwaldChannelStresslet2P.hpp>
 #include <capsula/ewald/SpectralEwaldStresslet2P.hpp>
 #include <capsula/ewald/SpectralEwaldWall2P.hpp>
+#include <capsula/ewald/SpectralEwaldWallStresslet2P.hpp>
 #include <capsula/operators/DirectSummation.hpp>
 #include <capsula/operators/RegularSums.hpp>
 
@@ -73,9 +74,6 @@ void PeriodicFarField::singleLayer(const operators::SingleLayerSources& sources,
 void PeriodicFarField::doubleLayer(const operators::DoubleLayerSources& sources, const double* targets,
                                    const int* targetCells, const double* subtracted, int n, double* result)
 {
-  core::require<core::InputError>(fluid_ == PeriodicFluid::Unbounded,
-                                  "The periodic wall's and channel's kernels have no double layer (no fast sum of "
-                                  "their stresslets): every 'Cells/<cell>/Viscosity ratio' must be 1.");
   if (n == 0) {
     return;
   }
@@ -91,23 +89,48 @@ void PeriodicFarField::doubleLayer(const operators::DoubleLayerSources& sources,
     }
   }
   const ewald::PeriodicLayer layer{box_.lengthX, box_.lengthZ};
-  const std::vector<double> u =
-      ewald::spectralEwaldStresslet2P(layer, tolerance_, folded_, tensors, foldedTargets(targets, n));
-  if (!targetCells) {
-    for (std::size_t k = 0; k < u.size(); ++k) {
-      result[k] = -u[k];
+  const std::vector<double> folded = foldedTargets(targets, n);
+  std::vector<double> u;
+  switch (fluid_) {
+  case PeriodicFluid::Unbounded:
+    // sum_q T(x_q - x_t) S_q = -sum_q T(x_t - x_q) S_q (T odd).
+    u = ewald::spectralEwaldStresslet2P(layer, tolerance_, folded_, tensors, folded);
+    for (double& component : u) {
+      component = -component;
     }
+    break;
+  case PeriodicFluid::AboveWall:
+    u = ewald::spectralEwaldWallStresslet2P(layer, tolerance_, folded_, tensors, folded);
+    break;
+  case PeriodicFluid::Channel:
+    u = ewald::spectralEwaldChannelStresslet2P(layer, channelHeight_, tolerance_, folded_, tensors, folded);
+    break;
+  }
+  if (!targetCells) {
+    std::copy(u.begin(), u.end(), result);
     return;
   }
-  // - s_t sum_{own cell} T a_q: the direct sums of the subtracted form with zero density.
+  // - s_t sum_{own cell} T a_q with the local kernel: the direct sums of the subtracted form
+  // with zero density (forTargetBlocks writes them to result; the fast sum is added after).
   const std::vector<double> zero(numPoints, 0.0);
   const operators::DoubleLayerSources own{x_,         y_,          z_,          sources.ax, sources.ay,
                                           sources.az, zero.data(), zero.data(), zero.data()};
   operators::forTargetBlocks(targets, targetCells, subtracted, n, result, [&](operators::TargetBlock& block, int cell) {
-    operators::addDoubleLayerSums<operators::FreeSpace3DKernel, true>(block, own, offsets_[cell], offsets_[cell + 1]);
+    const int begin = offsets_[cell], end = offsets_[cell + 1];
+    switch (fluid_) {
+    case PeriodicFluid::Unbounded:
+      operators::addDoubleLayerSums<operators::FreeSpace3DKernel, true>(block, own, begin, end);
+      break;
+    case PeriodicFluid::AboveWall:
+      operators::addDoubleLayerSums<operators::Wall3DKernel, true>(block, own, begin, end);
+      break;
+    case PeriodicFluid::Channel:
+      operators::addDoubleLayerSums<NearestWallKernel, true>(NearestWallKernel{channelHeight_}, block, own, begin, end);
+      break;
+    }
   });
   for (std::size_t k = 0; k < u.size(); ++k) {
-    result[k] -= u[k];
+    result[k] += u[k];
   }
 }
 

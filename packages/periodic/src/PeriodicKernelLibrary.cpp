@@ -36,21 +36,6 @@ PeriodicBox requireDoublyPeriodic(const domain::Domain& domain, const std::strin
   return PeriodicBox{lx, lz};
 }
 
-// The wall and channel kernels have no fast sum of their stresslets (PeriodicFarField.hpp).
-void requireViscosityRatiosOne(const operators::CellSurfaces& surfaces, const std::string& kernel,
-                               const std::string& aperiodic)
-{
-  for (int c = 0; c < surfaces.numCells(); ++c) {
-    core::require<core::InputError>(
-        surfaces.viscosityRatio(c) == 1.0, "'Operator/Kernel' = ", kernel,
-        " needs every viscosity ratio to be 1 ('Flow/Viscosity ratio', 'Cells/<cell>/Viscosity ratio'); cell ", c,
-        " has ", surfaces.viscosityRatio(c), ". The periodic ", kernel == "PeriodicWall" ? "wall's" : "channel's",
-        " stresslet has no fast sum: set the ratios to 1",
-        aperiodic.empty() ? std::string(".")
-                          : ", or drop 'Domain/Periodic length x' and 'z' for the " + aperiodic + " kernel.");
-  }
-}
-
 template <class Kernel>
 Kernel periodicKernel(const domain::Domain& domain, const Teuchos::ParameterList& settings, const std::string& name)
 {
@@ -80,24 +65,23 @@ void registerPeriodicKernels(operators::KernelRegistry& registry)
             new operators::KernelBoundaryIntegralSolver<PeriodicFreeSpaceKernel>(comm, std::move(surfaces),
                                                                                  discretisation, solver, kernel));
       });
-  registry.add("PeriodicWall",
-               operators::KernelInfo{"Fluid above the wall y = 0, periodic in x and z: Blake's Stokeslet summed by "
-                                     "the spectral Ewald method; viscosity ratio 1 only (docs/domains.md).",
-                                     operators::FluidDomain::AboveWall, periodicKernelParameters("PeriodicWall"), true},
-               [](const Comm& comm, CellSurfaces surfaces, const DiscretisationParameters& discretisation,
-                  const SolverParameters& solver, const Teuchos::ParameterList& settings,
-                  const domain::Domain& domain) {
-                 auto kernel = periodicKernel<PeriodicWallKernel>(domain, settings, "PeriodicWall");
-                 requireViscosityRatiosOne(surfaces, "PeriodicWall", "Wall");
-                 return std::unique_ptr<operators::BoundaryIntegralSolver>(
-                     new operators::KernelBoundaryIntegralSolver<PeriodicWallKernel>(comm, std::move(surfaces),
-                                                                                     discretisation, solver, kernel));
-               });
+  registry.add(
+      "PeriodicWall",
+      operators::KernelInfo{"Fluid above the wall y = 0, periodic in x and z: Blake's Stokeslet summed by "
+                            "the spectral Ewald method, its stresslet too (any viscosity ratio; docs/domains.md).",
+                            operators::FluidDomain::AboveWall, periodicKernelParameters("PeriodicWall"), true},
+      [](const Comm& comm, CellSurfaces surfaces, const DiscretisationParameters& discretisation,
+         const SolverParameters& solver, const Teuchos::ParameterList& settings, const domain::Domain& domain) {
+        auto kernel = periodicKernel<PeriodicWallKernel>(domain, settings, "PeriodicWall");
+        return std::unique_ptr<operators::BoundaryIntegralSolver>(
+            new operators::KernelBoundaryIntegralSolver<PeriodicWallKernel>(comm, std::move(surfaces), discretisation,
+                                                                            solver, kernel));
+      });
   registry.add(
       "PeriodicChannel",
       operators::KernelInfo{"Fluid between the walls y = 0 and y = H ('Wall/Channel height'), periodic in x "
                             "and z: the channel's Stokeslet summed by the spectral Ewald method, plane "
-                            "Couette or Poiseuille flow; viscosity ratio 1 only (docs/domains.md).",
+                            "Couette or Poiseuille flow, any viscosity ratio (docs/domains.md).",
                             operators::FluidDomain::Channel, periodicKernelParameters("PeriodicChannel"), true},
       [](const Comm& comm, CellSurfaces surfaces, const DiscretisationParameters& discretisation,
          const SolverParameters& solver, const Teuchos::ParameterList& settings, const domain::Domain& domain) {
@@ -106,7 +90,6 @@ void registerPeriodicKernels(operators::KernelRegistry& registry)
                                         "'Operator/Kernel' = PeriodicChannel needs a channel: set 'Wall/"
                                         "Channel height' > 0.");
         kernel.local.height = domain.channelHeight();
-        requireViscosityRatiosOne(surfaces, "PeriodicChannel", "");
         return std::unique_ptr<operators::BoundaryIntegralSolver>(
             new operators::KernelBoundaryIntegralSolver<PeriodicChannelKernel>(comm, std::move(surfaces),
                                                                                discretisation, solver, kernel));

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace capsula::ewald::testing {
@@ -20,6 +21,18 @@ inline std::vector<double> randomPoints(const PeriodicLayer& box, int count, uns
     points.push_back(box.lengthX * unit(generator));
     points.push_back(yLow + (yHigh - yLow) * unit(generator));
     points.push_back(box.lengthZ * unit(generator));
+  }
+  return points;
+}
+
+/// Points in bands of heights [low, high]: count per band, uniform in x and z, band b from seed + b.
+inline std::vector<double> pointsInBands(const PeriodicLayer& box, const std::vector<std::pair<double, double>>& bands,
+                                         int count, unsigned seed)
+{
+  std::vector<double> points;
+  for (const auto& [low, high] : bands) {
+    const auto band = randomPoints(box, count, seed++, low, high);
+    points.insert(points.end(), band.begin(), band.end());
   }
   return points;
 }
@@ -62,6 +75,31 @@ std::vector<double> pairSum(const std::vector<double>& sources, const std::vecto
       for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j) {
           u[t + i] += G[i][j] * forces[n + j];
+        }
+      }
+    }
+  }
+  return u;
+}
+
+/// The double layer u_t,j = sum_n T_ijk(x_n, x_t) S_n,ik, with stress(x_n, x_t, T) writing the
+/// stress T[i][j][k] at x_n of a force along j at the pole x_t (tensors: 9 numbers per source,
+/// S_ik at 9 n + 3 i + k): the reference the fast double layers are tested against.
+template <class Stress>
+std::vector<double> doubleLayerSum(const std::vector<double>& sources, const std::vector<double>& tensors,
+                                   const std::vector<double>& targets, const Stress& stress)
+{
+  std::vector<double> u(targets.size(), 0.0);
+  for (std::size_t t = 0; t < targets.size(); t += 3) {
+    for (std::size_t n = 0; n < sources.size(); n += 3) {
+      double T[3][3][3];
+      stress(&sources[n], &targets[t], T);
+      const double* S = &tensors[3 * n];
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+          for (int k = 0; k < 3; ++k) {
+            u[t + j] += T[i][j][k] * S[3 * i + k];
+          }
         }
       }
     }

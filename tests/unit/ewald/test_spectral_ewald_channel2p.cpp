@@ -28,15 +28,10 @@ using capsula::ewald::testing::relativeError;
 const PeriodicLayer channelBox{2.0, 1.6};
 constexpr double channelHeight = 1.2;
 
-/// Points in bands of heights: count per band, uniform in x and z.
+/// Points in bands of heights in the channel's box (EwaldTesting.hpp).
 std::vector<double> pointsInBands(const std::vector<std::pair<double, double>>& bands, int count, unsigned seed)
 {
-  std::vector<double> points;
-  for (const auto& [low, high] : bands) {
-    const auto band = randomPoints(channelBox, count, seed++, low, high);
-    points.insert(points.end(), band.begin(), band.end());
-  }
-  return points;
+  return capsula::ewald::testing::pointsInBands(channelBox, bands, count, seed);
 }
 
 /// Sources in three bands, on both sides of the split y = H/2 = 0.6 and near both walls; the

@@ -40,6 +40,23 @@ inline double screenedLaplaceThirdCoefficient(double r, double xi)
   return -15.0 * erfcTerm / (r2 * r2) - gauss * (15.0 / (r2 * r2) + 10.0 * xi2 / r2 + 4.0 * xi2 * xi2);
 }
 
+/// The smooth part's multiplier 4 pi e^{-(1 - eta) k^2/(4 xi^2)} / k^2 on a spectral Ewald grid
+/// whose Gaussian windows took eta of the screening (SpectralEwald2P.hpp); each derivative
+/// d_a multiplies it by i k_a.
+inline double laplaceSmoothMultiplier(const double k[3], double xi, double eta)
+{
+  constexpr double multiplierPi = 3.14159265358979323846;
+  const double k2 = k[0] * k[0] + k[1] * k[1] + k[2] * k[2];
+  return 4.0 * multiplierPi * std::exp(-(1.0 - eta) * k2 / (4.0 * xi * xi)) / k2;
+}
+
+/// xi' = xi / sqrt(1 - eta): the screening of the zero mode's 1D profile once the windows are
+/// taken out.
+inline double windowedXi(double xi, double eta)
+{
+  return xi / std::sqrt(1.0 - eta);
+}
+
 /// The local part d_i d_j d_k phi^R at xh != 0.
 inline void screenedLaplaceThirdDerivatives3D(const double xh[3], double xi, double third[3][3][3])
 {

@@ -5,15 +5,18 @@
 //  - single layer: u_t = sum_q G(x_t, x_q) f_q over every quadrature point of every cell,
 //    G the periodic Stokeslet (SpectralEwald2P), the periodic wall's (SpectralEwaldWall2P)
 //    or the periodic channel's (SpectralEwaldChannel2P);
-//  - double layer (periodic fluid only): u_t,j = sum_q T_ijk(x_q - x_t) v_q,i a_q,k
-//    = -sum_q T_jik(x_t - x_q) (v_q a_q)_ik, T being odd and symmetric, one stresslet sum
-//    (SpectralEwaldStresslet2P) with the source tensors S_q = v_q a_q^T; the singularity
-//    subtraction on a target's own cell (FarFieldSummation.hpp) is then
+//  - double layer: u_t,j = sum_q T_ijk(x_q, x_t) v_q,i a_q,k, T the stress at x_q of a force at
+//    the target: in the periodic fluid -sum_q T_jik(x_t - x_q) (v_q a_q)_ik (T odd and
+//    symmetric), one stresslet sum (SpectralEwaldStresslet2P) with the source tensors
+//    S_q = v_q a_q^T; above the wall and in the channel the fast double layers of their
+//    stresslets (SpectralEwaldWallStresslet2P, SpectralEwaldChannelStresslet2P) with the same
+//    tensors. The singularity subtraction on a target's own cell (FarFieldSummation.hpp) is then
 //      - s_t sum_{q in own cell} T(x_q, x_t) a_q,
-//    summed directly per cell with the LOCAL kernel (free space) in the cell's own,
-//    unfolded coordinates: the periodic T minus the local one is a Stokes flow without a
-//    singularity inside the cell, whose integral of T n over the closed surface is zero, so
-//    the difference is the regular rule's error on a smooth integrand.
+//    summed directly per cell with the LOCAL kernel (free space, Blake's, the nearer wall's
+//    Blake) in the cell's own, unfolded coordinates: the periodic T minus the local one is
+//    the stress of a Stokes flow without a singularity inside the cell, whose integral of
+//    T n over the closed surface is zero, so the difference is the regular rule's error on a
+//    smooth integrand.
 // Every rank sums all sources for its own targets, as the direct sums and the treecode do;
 // positions are folded into the box first (the sums are periodic).
 #include <capsula/operators/FarFieldSummation.hpp>
@@ -26,9 +29,9 @@ namespace capsula::periodic {
 
 /// The walls of the periodic fluid whose Green's function the sums use.
 enum class PeriodicFluid {
-  Unbounded, ///< no wall: single and double layer
-  AboveWall, ///< the wall y = 0: single layer only
-  Channel    ///< the walls y = 0 and y = H: single layer only
+  Unbounded, ///< no wall
+  AboveWall, ///< the wall y = 0
+  Channel    ///< the walls y = 0 and y = H
 };
 
 class PeriodicFarField final : public operators::FarFieldSummation {
@@ -39,7 +42,6 @@ public:
   std::string name() const override { return "Spectral Ewald"; }
   void setSources(const double* x, const double* y, const double* z, const std::vector<int>& cellPointOffsets) override;
   void singleLayer(const operators::SingleLayerSources& sources, const double* targets, int n, double* result) override;
-  /// Throws core::InputError for the periodic wall and channel (no fast sum of their stresslets).
   void doubleLayer(const operators::DoubleLayerSources& sources, const double* targets, const int* targetCells,
                    const double* subtracted, int n, double* result) override;
 

@@ -8,9 +8,8 @@
 // each with its sublist 'Operator/<name>' (Tolerance of the spectral Ewald sums). Their
 // factories take the periods from the deck's domain ('Domain/Periodic length x', 'z') and
 // refuse what they cannot serve (core::InputError naming the keys): a domain periodic in
-// one direction only (the Ewald sums are doubly periodic), and for PeriodicWall and
-// PeriodicChannel a viscosity ratio other than 1 (their stresslets have has only a reference sum, O(N M) with hundreds of
-// Fourier modes per pair, too slow for a double layer applied at every GMRES iteration).
+// one direction only (the Ewald sums are doubly periodic). Every kernel sums its stresslet
+// too, so any viscosity ratio runs (PeriodicFarField.hpp).
 // 'Operator/Summation' = Treecode is refused by the operators ("does not support the
 // kernel"); Direct (the default) leaves the far field to the kernel's Ewald sums.
 #include <capsula/operators/KernelRegistry.hpp>

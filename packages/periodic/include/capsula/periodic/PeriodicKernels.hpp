@@ -114,20 +114,18 @@ struct PeriodicFreeSpaceKernel : PeriodicKernel<operators::FreeSpace3DKernel> {
 };
 
 /// The Stokeslet above the no-slip plane y = 0, periodic in x and z ('Operator/Kernel' =
-/// PeriodicWall). Its double layer has no fast sum: the factory refuses a viscosity ratio
-/// other than 1 (PeriodicKernelLibrary.hpp).
+/// PeriodicWall).
 struct PeriodicWallKernel : PeriodicKernel<operators::Wall3DKernel> {
   static constexpr const char* name = "periodic lower wall";
-  /// The spectral Ewald sum of the wall's Stokeslet (PeriodicFarField.hpp).
+  /// The spectral Ewald sums of the wall's Stokeslet and stresslet (PeriodicFarField.hpp).
   std::unique_ptr<operators::FarFieldSummation> farFieldSummation() const;
 };
 
 /// The Stokeslet of the channel 0 < y < H between no-slip planes, periodic in x and z
-/// ('Operator/Kernel' = PeriodicChannel); `local.height` is H. Its double layer has no fast
-/// sum: the factory refuses a viscosity ratio other than 1 (PeriodicKernelLibrary.hpp).
+/// ('Operator/Kernel' = PeriodicChannel); `local.height` is H.
 struct PeriodicChannelKernel : PeriodicKernel<NearestWallKernel> {
   static constexpr const char* name = "periodic channel";
-  /// The spectral Ewald sum of the channel's Stokeslet (PeriodicFarField.hpp).
+  /// The spectral Ewald sums of the channel's Stokeslet and stresslet (PeriodicFarField.hpp).
   std::unique_ptr<operators::FarFieldSummation> farFieldSummation() const;
 };
 
