@@ -84,6 +84,19 @@ stability_check(sphere_near_wall bounds within ${_stability}/sphere_near_wall/me
   volume_change=-0.003:0.003 min_angle_deg=25:60 wall_gap_per_h=0.05:1 min_tension=-1:1e-9 max_edge_ratio=1:3)
 stability_check(sphere_near_wall trend expect ${_stability}/sphere_near_wall/metrics.csv 0
   time=1:1e-12 D12=0.4024:0.01 y_c=1.0495:0.002)
+# 1b. The same sphere 0.05 a below the upper wall of a plane Couette channel (H = 6, periodic
+#    box 6 x 6, the kernel PeriodicChannel): the shear relative to the upper wall is the lower
+#    wall's, so the case is case 1 reflected, plus the far wall and the periodic images. The
+#    same bounds, wall_gap_per_h now measured to the upper wall (it read 6.4, the height above
+#    y = 0, before the gap took the nearer wall). Trend at t = 1: D12 = 0.3996 (case 1:
+#    0.4024) and y_c = 4.95086 (drawn 0.0009 towards the wall; case 1 falls 0.0005), with
+#    the bands of case 1.
+stability_run(sphere_near_upper_wall cell3d ${_near} --set "Cells/Cell 0/Center={0,4.95,0}"
+  --set "Domain/Periodic length x=6" --set "Domain/Periodic length z=6" --set "Wall/Channel height=6")
+stability_check(sphere_near_upper_wall bounds within ${_stability}/sphere_near_upper_wall/metrics.csv
+  volume_change=-0.003:0.003 min_angle_deg=25:60 wall_gap_per_h=0.05:1 min_tension=-1:1e-9 max_edge_ratio=1:3)
+stability_check(sphere_near_upper_wall trend expect ${_stability}/sphere_near_upper_wall/metrics.csv 0
+  time=1:1e-12 D12=0.3996:0.01 y_c=4.95086:0.002)
 # The same case with fixed RK4 steps of 0.25, twice the 0.12 the controller takes where the
 # shape changes fastest: the step from t = 0.75 folds the membrane, and the run must stop
 # with that diagnostic, naming the step, instead of writing NaN (with fixed steps a state

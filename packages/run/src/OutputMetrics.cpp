@@ -62,7 +62,7 @@ std::vector<CellSample> OutputMetrics::record(double t, const scene::Scene& scen
     s.gmresIterations = fields.gmresIterations;
     s.shearRate = scene.description().shearRate.factor(t);
     s.profileAtCentroid = scene.description().flowProfile.velocity(s.shape.centroid[1]);
-    s.stability = measureStability(cell, scene.membrane(c));
+    s.stability = measureStability(cell, scene.membrane(c), scene.description().domain);
     if (scene.hasBonds()) {
       s.adhesion = scene.bonds().summary(c, cell, cell.positionData());
     }

@@ -19,7 +19,8 @@ double localElementSize(const mesh::SurfaceMesh& cell, int node)
   return size;
 }
 
-CellStability measureStability(const mesh::SurfaceMesh& cell, const elasticity::MembraneMechanics& membrane)
+CellStability measureStability(const mesh::SurfaceMesh& cell, const elasticity::MembraneMechanics& membrane,
+                               const domain::Domain& domain)
 {
   CellStability s;
   const mesh::MeshQuality quality = mesh::meshQuality(cell);
@@ -28,14 +29,23 @@ CellStability measureStability(const mesh::SurfaceMesh& cell, const elasticity::
   s.maxDistortion = quality.maxDistortion;
   s.mostCompressiveTension = membrane.mostCompressiveTension().tension;
   s.minPrincipalStiffness = membrane.leastPrincipalStiffness().stiffness / membrane.law().shearModulus();
-  int lowest = 0;
+  // The gap of a node: its distance to the nearer wall, or its height without walls.
+  const auto gapOf = [&](int node) {
+    const mesh::Vec3& x = cell.position(node);
+    const double point[3] = {x[0], x[1], x[2]};
+    return domain.hasWalls() ? domain.distanceToNearestWall(point) : x[1];
+  };
+  int closest = 0;
+  double gap = gapOf(0);
   for (int i = 1; i < cell.numNodes(); ++i) {
-    if (cell.position(i)[1] < cell.position(lowest)[1]) {
-      lowest = i;
+    const double g = gapOf(i);
+    if (g < gap) {
+      gap = g;
+      closest = i;
     }
   }
-  const double size = localElementSize(cell, lowest);
-  s.wallGapPerElementSize = size > 0.0 ? cell.position(lowest)[1] / size : 0.0;
+  const double size = localElementSize(cell, closest);
+  s.wallGapPerElementSize = size > 0.0 ? gap / size : 0.0;
   return s;
 }
 

@@ -7,6 +7,8 @@
 #include <capsula/mesh/Shapes.hpp>
 #include <capsula/scene/CellStability.hpp>
 
+#include <capsula/domain/Domain.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -48,7 +50,7 @@ struct Cell {
 TEST(CellStability, MeshQualityIsTheMeshPackages)
 {
   const Cell cell(2.0, 1.0);
-  const scene::CellStability s = scene::measureStability(cell.surface, *cell.membrane);
+  const scene::CellStability s = scene::measureStability(cell.surface, *cell.membrane, domain::Domain::aboveWall());
   const mesh::MeshQuality q = mesh::meshQuality(cell.surface);
   EXPECT_EQ(s.minAngleDegrees, q.minAngle);
   EXPECT_EQ(s.maxEdgeRatio, q.maxEdgeRatio);
@@ -66,16 +68,21 @@ TEST(CellStability, TensionSignSaysStretchedOrCompressed)
 {
   // At rest every tension vanishes up to round-off of the O(1) kinematics.
   const Cell rest(2.0, 1.0);
-  EXPECT_NEAR(scene::measureStability(rest.surface, *rest.membrane).mostCompressiveTension, 0.0, 1e-12);
+  EXPECT_NEAR(scene::measureStability(rest.surface, *rest.membrane, domain::Domain::aboveWall()).mostCompressiveTension,
+              0.0, 1e-12);
   // Prestressed (the reference 5% smaller): tension everywhere, the smallest positive. The
   // bound 0.05 pins the sign and the order only: a 5% stretch of a G = 1 membrane carries
   // tensions of order 0.1-0.3 (the neo-Hookean one of docs/stability.md: 0.254).
   const Cell stretched(2.0, 1.0 / 1.05);
-  EXPECT_GT(scene::measureStability(stretched.surface, *stretched.membrane).mostCompressiveTension, 0.05);
+  EXPECT_GT(scene::measureStability(stretched.surface, *stretched.membrane, domain::Domain::aboveWall())
+                .mostCompressiveTension,
+            0.05);
   // Compressed (the reference 5% larger): the smallest principal tension is negative, of
   // the same order.
   const Cell compressed(2.0, 1.05);
-  EXPECT_LT(scene::measureStability(compressed.surface, *compressed.membrane).mostCompressiveTension, -0.05);
+  EXPECT_LT(scene::measureStability(compressed.surface, *compressed.membrane, domain::Domain::aboveWall())
+                .mostCompressiveTension,
+            -0.05);
 }
 
 TEST(CellStability, WallGapIsTheLowestNodeOverItsElementSize)
@@ -100,11 +107,31 @@ TEST(CellStability, WallGapIsTheLowestNodeOverItsElementSize)
     }
   }
   EXPECT_DOUBLE_EQ(scene::localElementSize(cell.surface, lowest), size);
-  const scene::CellStability s = scene::measureStability(cell.surface, *cell.membrane);
+  const scene::CellStability s = scene::measureStability(cell.surface, *cell.membrane, domain::Domain::aboveWall());
   // 1e-12: positions built as 1.05 + (-1) carry round-off of ~1e-16 relative.
   EXPECT_NEAR(s.wallGapPerElementSize, 0.05 / size, 1e-12);
   EXPECT_GT(size, 0.5); // level 1: edges ~0.6 a, so the gap is ~0.08 of an element
   EXPECT_LT(size, 0.75);
+}
+
+// Fixed bug: in a channel the gap was the lowest node's height above y = 0 also for a cell
+// next to the upper wall (metrics read 6.4 element sizes for a cell 0.05 below it). The same
+// cell 0.05 below the upper wall of the channel H = 3 has, by the mesh's symmetry about its
+// equator, the gap of the cell 0.05 above the lower wall; without walls it is the lowest
+// node's height.
+TEST(CellStability, WallGapInAChannelIsToTheNearerWall)
+{
+  const Cell low(1.05, 1.0), high(3.0 - 1.05, 1.0);
+  const double lowerGap =
+      scene::measureStability(low.surface, *low.membrane, domain::Domain::channel(3.0)).wallGapPerElementSize;
+  const double upperGap =
+      scene::measureStability(high.surface, *high.membrane, domain::Domain::channel(3.0)).wallGapPerElementSize;
+  // 1e-12: the two meshes' positions differ by the round-off of 1.95 - 1 against 1.05 - 1.
+  EXPECT_NEAR(upperGap, lowerGap, 1e-12);
+  EXPECT_LT(upperGap, 0.1);
+  const double unbounded =
+      scene::measureStability(high.surface, *high.membrane, domain::Domain::unbounded()).wallGapPerElementSize;
+  EXPECT_GT(unbounded, 1.0); // the lowest node 0.95 above y = 0: more than an element
 }
 
 } // namespace

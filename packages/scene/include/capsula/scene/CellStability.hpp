@@ -3,6 +3,7 @@
 // its mesh has degraded, whether its membrane is in compression (the precursor of
 // buckling), and how well the gap to the wall is resolved. Observers compute them at
 // output times, never inside the right-hand side; they cost one pass over the elements.
+#include <capsula/domain/Domain.hpp>
 #include <capsula/elasticity/MembraneMechanics.hpp>
 #include <capsula/mesh/SurfaceMesh.hpp>
 
@@ -19,12 +20,12 @@ struct CellStability {
   /// without prestress, Lac et al. 2004); without a bending modulus nothing stops the
   /// wrinkles that follow at the grid scale.
   double mostCompressiveTension = 0.0;
-  /// The height of the lowest node above the plane y = 0 (the wall, where there is one)
-  /// divided by the local element size: the longest vertex-to-vertex edge of the elements
-  /// around that node. Below ~1 the near-singular quadrature of the wall image has to
-  /// resolve a gap thinner than an element; <= 0 means the cell crossed the plane. Without
-  /// a wall it is still measured from y = 0 (the plane where the shear flow is at rest)
-  /// and says nothing about contact.
+  /// The smallest distance of a node to the nearer wall of the domain (either wall of a
+  /// channel) divided by the local element size: the longest vertex-to-vertex edge of the
+  /// elements around that node. Below ~1 the near-singular quadrature of the wall image has
+  /// to resolve a gap thinner than an element; <= 0 means the cell crossed the wall. Without
+  /// a wall it is the lowest node's height above y = 0 (the plane where the shear flow is at
+  /// rest) and says nothing about contact.
   double wallGapPerElementSize = 0.0;
   /// The largest element distortion: how far a midside node has slid along its edge from
   /// the middle, max |alpha - 1/2| (eq 3.17; 0 on the icosphere, 1/2 when an edge
@@ -38,8 +39,10 @@ struct CellStability {
   double minPrincipalStiffness = 0.0;
 };
 
-/// The diagnostics of `cell` (at its current positions) with `membrane` evaluated there.
-CellStability measureStability(const mesh::SurfaceMesh& cell, const elasticity::MembraneMechanics& membrane);
+/// The diagnostics of `cell` (at its current positions) with `membrane` evaluated there, the
+/// wall gap in `domain`.
+CellStability measureStability(const mesh::SurfaceMesh& cell, const elasticity::MembraneMechanics& membrane,
+                               const domain::Domain& domain);
 
 /// The longest vertex-to-vertex edge over the elements that contain `node`.
 double localElementSize(const mesh::SurfaceMesh& cell, int node);
