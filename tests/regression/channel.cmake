@@ -96,3 +96,28 @@ add_test(NAME regression_channel_drop_h12_one_and_two_ranks_agree
           x_c=0:1e-8 y_c=0:1e-8 u_slip=0:1e-8 u_migr=0:1e-8 D12=0:1e-8 volume=0:1e-8)
 set_tests_properties(regression_channel_drop_h12_one_and_two_ranks_agree PROPERTIES
   FIXTURES_REQUIRED "channel_drop_h12;channel_drop_h12_one_rank" LABELS "mpi;regression")
+# Ligands on the upper wall ('Adhesion/Ligand wall' = Upper) of the periodic Poiseuille channel
+# (H = 6, box 6 x 6): the adhesion deck's capsule 0.03 below that wall, RK4 steps of 0.01 to
+# t = 0.2. Bonds form to y = 6 and pull the membrane up (bond_force_y > 0), the capsule is
+# held at the wall (y_c rises by 0.0012, as the lower wall's run falls by 0.0010), and the gaps
+# are measured to the upper wall (min_gap 0.0257, the lower wall's run 0.0258). Goldens
+# (measured): `bonds` exactly (the draws are per (seed, receptor, step)), the others to 1e-8.
+# The receptors are material points of a mesh that is not the mirror image of the lower run's,
+# so the two runs agree in kind, not number for number (31 bonds against 40); the exact mirror
+# is BondKinetics.BondsToTheUpperWallAreTheMirrorOfBondsToTheLowerWall.
+add_test(NAME regression_channel_adhesion_to_the_upper_wall
+  COMMAND cell3d ${PROJECT_SOURCE_DIR}/input/cell3d/adhesion/sphere-ligand-wall.xml
+          --set "Time integration/Method=RK4" --set "Time integration/Initial step=0.01"
+          --set "Output/Interval=0.1" --set "Time integration/End time=0.2"
+          --set "Domain/Periodic length x=6" --set "Domain/Periodic length z=6" --set "Wall/Channel height=6"
+          --set "Flow/Profile=Poiseuille" --set "Output/Wall shear stress/Enabled=false"
+          --set "Adhesion/Ligand wall=Upper" --set "Cells/Cell 0/Center={0.0, 4.97, 0.0}"
+          --output ${_channel_out}/adhesion_upper)
+set_tests_properties(regression_channel_adhesion_to_the_upper_wall PROPERTIES FIXTURES_SETUP channel_adhesion_upper
+  LABELS regression)
+add_test(NAME regression_channel_adhesion_to_the_upper_wall_holds
+  COMMAND check_metrics expect ${_channel_out}/adhesion_upper/metrics.csv 0
+          time=0.2:1e-12 bonds=31:0 bond_force_y=4.106208418075759:1e-8 y_c=4.971198201369437:1e-8
+          min_gap=0.0256896981411405:1e-8)
+set_tests_properties(regression_channel_adhesion_to_the_upper_wall_holds PROPERTIES
+  FIXTURES_REQUIRED channel_adhesion_upper LABELS regression)

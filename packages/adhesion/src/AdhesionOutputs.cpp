@@ -24,9 +24,9 @@ AdhesionSummary summariseAdhesion(const BondPopulation& bonds, const mesh::Surfa
   const double reach = bonds.settings().reactionDistance;
   s.minimumGap = std::numeric_limits<double>::infinity();
   for (int k = 0; k < mesh.numNodes(); ++k) {
-    const double y = positions[3 * k + 1];
-    s.minimumGap = std::min(s.minimumGap, y);
-    if (y <= reach) {
+    const double gap = bonds.settings().ligandWall.gap(positions[3 * k + 1]);
+    s.minimumGap = std::min(s.minimumGap, gap);
+    if (gap <= reach) {
       s.contactArea += areas[static_cast<std::size_t>(k)];
     }
   }

@@ -17,6 +17,8 @@ const char* const slipName = "Slip (Bell)";
 const char* const catchSlipName = "Catch-slip (Dembo)";
 const char* const stochasticName = "Stochastic";
 const char* const meanFieldName = "Mean field";
+const char* const lowerWallName = "Lower";
+const char* const upperWallName = "Upper";
 
 void declareDensitiesAndPatch(Teuchos::ParameterList& list)
 {
@@ -32,9 +34,10 @@ void declareDensitiesAndPatch(Teuchos::ParameterList& list)
                     "taken as dense enough that bonds do not deplete them).",
                     core::atLeast(0.0));
   core::declareRealArray(list, "Ligand patch", {}, 0,
-                         "The ligand-coated part of the wall y = 0: {x_min, x_max, z_min, z_max} in cell "
-                         "radii, or empty {} for the whole wall. It must lie on the simulated wall and "
-                         "have x_min < x_max, z_min < z_max.");
+                         "The ligand-coated part of the ligand wall ('Ligand wall'): {x_min, x_max, z_min, "
+                         "z_max} in cell radii, or empty {} for the whole wall. It must lie on the simulated "
+                         "wall and have x_min < x_max, z_min < z_max; in a periodic box it lies within one "
+                         "box, [0, L_x] x [0, L_z], and repeats with it.");
 }
 
 void declareBondMechanics(Teuchos::ParameterList& list)
@@ -122,6 +125,17 @@ WallRectangle readPatch(const Teuchos::ParameterList& list, const std::string& p
 
 } // namespace
 
+bool WallRectangle::contains(double x, double z) const
+{
+  if (periodX > 0.0) {
+    x -= periodX * std::floor(x / periodX);
+  }
+  if (periodZ > 0.0) {
+    z -= periodZ * std::floor(z / periodZ);
+  }
+  return x >= xMin && x <= xMax && z >= zMin && z <= zMax;
+}
+
 bool WallRectangle::bounded() const
 {
   return std::isfinite(xMin) || std::isfinite(xMax) || std::isfinite(zMin) || std::isfinite(zMax);
@@ -133,6 +147,11 @@ void declareAdhesionParameters(Teuchos::ParameterList& adhesion)
                     "Receptor-ligand bonds between the membrane and the wall y = 0 (Hammer's Adhesive "
                     "Dynamics). Lengths are in cell radii a, forces in G a, times in 1/k, rates in units "
                     "of the shear rate k (the scales of the capillary number).");
+  core::declareChoice(adhesion, "Ligand wall", lowerWallName, {lowerWallName, upperWallName},
+                      "The wall that carries the ligands: 'Lower', the wall y = 0, or 'Upper', the upper wall "
+                      "y = H of a channel ('Wall/Channel height' > 0) in Poiseuille flow (both walls at rest). "
+                      "Bonds form to the point of that wall nearest to the receptor; gaps and the reach are "
+                      "measured to it.");
   declareDensitiesAndPatch(adhesion);
   declareBondMechanics(adhesion);
   declareRates(adhesion);
@@ -163,6 +182,9 @@ AdhesionSettings readAdhesionParameters(const Teuchos::ParameterList& adhesion, 
 {
   AdhesionSettings s;
   s.enabled = adhesion.get<bool>("Enabled");
+  s.ligandWallChoice = adhesion.isParameter("Ligand wall") && adhesion.get<std::string>("Ligand wall") == upperWallName
+                           ? LigandWallChoice::Upper
+                           : LigandWallChoice::Lower;
   s.receptorDensity = adhesion.get<double>("Receptor density");
   s.ligandDensity = adhesion.get<double>("Ligand density");
   s.springConstant = adhesion.get<double>("Spring constant");
@@ -206,6 +228,17 @@ AdhesionSettings readAdhesionParameters(const Teuchos::ParameterList& adhesion, 
             core::message("= ", s.reactionDistance, " with adhesion enabled: give a reach > 0."));
   }
   return s;
+}
+
+WallPlane ligandWallPlane(LigandWallChoice choice, double channelHeight)
+{
+  if (choice == LigandWallChoice::Lower) {
+    return WallPlane{0.0, 1};
+  }
+  core::require<core::InputError>(channelHeight > 0.0,
+                                  "'Adhesion/Ligand wall' = Upper, but the domain has no upper wall: set "
+                                  "'Wall/Channel height' > 0 for a channel, or put the ligands on the 'Lower' wall.");
+  return WallPlane{channelHeight, -1};
 }
 
 std::string to_string(BondModel model)

@@ -15,11 +15,6 @@ namespace core = capsula::core;
 
 namespace {
 
-mesh::Vec3 footOnWall(const mesh::Vec3& x)
-{
-  return mesh::Vec3(x[0], 0.0, x[2]);
-}
-
 // One key word for (cell, receptor): the cell in the high 32 bits, the receptor in the low.
 std::uint64_t streamOf(std::uint64_t cell, std::uint64_t receptor)
 {
@@ -48,10 +43,11 @@ void BondPopulation::stochasticStep(BondState& state, const mesh::Vec3& x, doubl
   const std::uint64_t key = streamOf(stream_, receptor);
   // A free receptor (from the start of the step, or from its bond's breakage at time s)
   // binds a fresh bond to the point below it: the chain free <-> bound with that bond's rates.
-  const double kOn = onRate(settings_, x[1], x[0], x[2]);
+  const double gap = settings_.ligandWall.gap(x[1]);
+  const double kOn = onRate(settings_, gap, x[0], x[2]);
   const auto binds = [&](double interval) {
     return kOn > 0.0 && counterUniform(settings_.seed, key, step, static_cast<std::uint64_t>(DrawPurpose::Formation)) <
-                            bindingProbability(kOn, offRate(settings_, std::abs(x[1])), interval);
+                            bindingProbability(kOn, offRate(settings_, std::abs(gap)), interval);
   };
   if (state.occupancy > 0.0) {
     const double kOff = offRate(settings_, (x - state.anchor).norm());
@@ -68,7 +64,7 @@ void BondPopulation::stochasticStep(BondState& state, const mesh::Vec3& x, doubl
     return;
   }
   state.occupancy = 1.0;
-  state.anchor = footOnWall(x);
+  state.anchor = settings_.ligandWall.foot(x);
   ++events.formed;
 }
 
@@ -76,8 +72,9 @@ void BondPopulation::meanFieldStep(BondState& state, const mesh::Vec3& x, double
 {
   const double p = state.occupancy;
   // Without bonds yet, the bonds this step forms have the length of a bond to the foot.
-  const double kOff = offRate(settings_, p > 0.0 ? (x - state.anchor).norm() : std::abs(x[1]));
-  const double kOn = onRate(settings_, x[1], x[0], x[2]);
+  const double gap = settings_.ligandWall.gap(x[1]);
+  const double kOff = offRate(settings_, p > 0.0 ? (x - state.anchor).norm() : std::abs(gap));
+  const double kOn = onRate(settings_, gap, x[0], x[2]);
   if (kOn <= 0.0 && p <= 0.0) {
     return;
   }
@@ -94,7 +91,7 @@ void BondPopulation::meanFieldStep(BondState& state, const mesh::Vec3& x, double
     state = BondState{};
     return;
   }
-  state.anchor = (survived * state.anchor + formed * footOnWall(x)) / next;
+  state.anchor = (survived * state.anchor + formed * settings_.ligandWall.foot(x)) / next;
   state.occupancy = std::clamp(next, 0.0, 1.0);
 }
 

@@ -64,6 +64,43 @@ void requireConsistentBending(const CellDescription& cell)
                                   "moments: keep one of them.");
 }
 
+// The ligands in the scene's domain: the plane of 'Adhesion/Ligand wall', and a bounded
+// 'Ligand patch' repeated with a periodic box (it must then lie within one box).
+void placeLigands(SceneDescription& scene)
+{
+  adhesion::AdhesionSettings& bonds = scene.adhesion;
+  if (!bonds.enabled) {
+    return;
+  }
+  bonds.ligandWall = adhesion::ligandWallPlane(bonds.ligandWallChoice, scene.domain.channelHeight());
+  // The anchors are fixed points: the ligand wall must be at rest, which the upper wall of
+  // plane Couette flow is not.
+  core::require<core::InputError>(
+      bonds.ligandWallChoice == adhesion::LigandWallChoice::Lower ||
+          scene.flowProfile.kind() == domain::FlowProfileKind::Poiseuille,
+      "'Adhesion/Ligand wall' = Upper with 'Flow/Profile' = ", domain::flowProfileName(scene.flowProfile.kind()),
+      ": in plane Couette flow the upper wall slides at k H, and the bonds' anchors are fixed points. Put the "
+      "ligands on the upper wall in Poiseuille flow ('Flow/Profile' = Poiseuille), where both walls are at rest.");
+  adhesion::WallRectangle& patch = bonds.ligandPatch;
+  const struct {
+    double period, low, high;
+    const char* key;
+    double* periodOfPatch;
+  } axes[] = {{scene.domain.period(domain::flowAxis), patch.xMin, patch.xMax, "x", &patch.periodX},
+              {scene.domain.period(domain::vorticityAxis), patch.zMin, patch.zMax, "z", &patch.periodZ}};
+  for (const auto& axis : axes) {
+    if (axis.period <= 0.0) {
+      continue;
+    }
+    *axis.periodOfPatch = axis.period;
+    const bool unbounded = !std::isfinite(axis.low) && !std::isfinite(axis.high);
+    core::require<core::InputError>(
+        unbounded || (axis.low >= 0.0 && axis.high <= axis.period), "'Adhesion/Ligand patch' spans ", axis.key, " in [",
+        axis.low, ", ", axis.high, "], which is not within the periodic box [0, ", axis.period,
+        "] of 'Domain/Periodic length ", axis.key, "': the patch repeats with the box, so give it within one box.");
+  }
+}
+
 // What bonds need of the rest of the scene (the adhesion keys alone are checked by
 // readAdhesionParameters).
 void requireUsableAdhesion(const SceneDescription& scene)
@@ -220,6 +257,7 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck, const elastic
   }
   if (deck.isSublist("Adhesion")) {
     scene.adhesion = adhesion::readAdhesionParameters(deck.sublist("Adhesion"), "Adhesion");
+    placeLigands(scene);
     requireUsableAdhesion(scene);
   }
   if (deck.isSublist("Tether")) {

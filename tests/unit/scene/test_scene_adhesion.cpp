@@ -189,3 +189,65 @@ TEST(SceneAdhesion, RefusesInputsThatCannotWork)
 }
 
 } // namespace
+
+namespace ligand_wall_tests {
+
+using scene::testing::smallDeck;
+
+// The deck of a level-1 sphere 0.03 below the upper wall of the periodic Poiseuille channel
+// H = 4 (box 6 x 6) with adhesion on, the ligands where `wall` says.
+Teuchos::RCP<Teuchos::ParameterList> channelAdhesionDeck(const std::string& wall, double height = 4.0)
+{
+  return smallDeck(1, 1.6, true, [&](Teuchos::ParameterList& d) {
+    d.sublist("Wall").set("Channel height", height);
+    d.sublist("Domain").set("Periodic length x", 6.0);
+    d.sublist("Domain").set("Periodic length z", 6.0);
+    d.sublist("Cells").sublist("Cell 0").set("Center", realArray({1.0, height - 1.03, 1.0}));
+    d.sublist("Flow").set("Profile", "Poiseuille");
+    d.sublist("Adhesion").set("Enabled", true);
+    d.sublist("Adhesion").set("Ligand wall", wall);
+  });
+}
+
+TEST(SceneAdhesion, TheUpperLigandWallIsTheChannelsUpperWall)
+{
+  const scene::SceneDescription upper = scene::describeScene(*channelAdhesionDeck("Upper"));
+  EXPECT_EQ(upper.adhesion.ligandWall.height, 4.0);
+  EXPECT_EQ(upper.adhesion.ligandWall.fluidSide, -1);
+  // In the periodic box the ligand patch repeats with the box.
+  EXPECT_EQ(upper.adhesion.ligandPatch.periodX, 6.0);
+  EXPECT_EQ(upper.adhesion.ligandPatch.periodZ, 6.0);
+  const scene::SceneDescription lower = scene::describeScene(*channelAdhesionDeck("Lower"));
+  EXPECT_EQ(lower.adhesion.ligandWall.height, 0.0);
+  EXPECT_EQ(lower.adhesion.ligandWall.fluidSide, 1);
+}
+
+TEST(SceneAdhesion, RefusesAnUpperLigandWallWithoutAChannelOrSlidingAndAPatchOutsideTheBox)
+{
+  EXPECT_NE(sceneRefusal([](auto& d) {
+              d.sublist("Adhesion").set("Enabled", true);
+              d.sublist("Adhesion").set("Ligand wall", "Upper");
+            }).find("'Adhesion/Ligand wall' = Upper, but the domain has no upper wall"),
+            std::string::npos);
+  try {
+    auto deck = channelAdhesionDeck("Upper");
+    deck->sublist("Flow").set("Profile", "Shear");
+    scene::describeScene(*deck);
+    FAIL() << "ligands on the sliding upper wall of plane Couette flow were accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'Adhesion/Ligand wall' = Upper with 'Flow/Profile' = Shear"),
+              std::string::npos)
+        << e.what();
+  }
+  try {
+    auto deck = channelAdhesionDeck("Upper");
+    deck->sublist("Adhesion").set("Ligand patch", realArray({4.0, 7.0, 0.0, 1.0}));
+    scene::describeScene(*deck);
+    FAIL() << "a ligand patch reaching out of the periodic box was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'Adhesion/Ligand patch' spans x in [4, 7]"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'Domain/Periodic length x'"), std::string::npos) << e.what();
+  }
+}
+
+} // namespace ligand_wall_tests

@@ -15,8 +15,8 @@ namespace capsula::adhesion {
 struct AdhesionSummary {
   double bonds = 0.0;                        ///< number of bonds (mean field: expected)
   mesh::Vec3 bondForce = mesh::Vec3::Zero(); ///< total bond force on the membrane, G a
-  double contactArea = 0.0;                  ///< membrane area within the reaction distance of the wall, a^2
-  double minimumGap = 0.0;                   ///< the lowest node's height above the wall, a
+  double contactArea = 0.0;                  ///< membrane area within the reaction distance of the ligand wall, a^2
+  double minimumGap = 0.0;                   ///< the smallest gap of a node to the ligand wall, a
 };
 
 /// The summary of cell `mesh` at node positions `positions` (3 per node). The contact area

@@ -1,12 +1,14 @@
 #pragma once
 // The deck's "Adhesion" sublist: receptor-ligand bonds between a cell's membrane and a
-// ligand-coated wall y = 0, after Hammer's Adhesive Dynamics (Hammer & Apte, Biophys J 63:35,
+// ligand-coated wall (the lower wall y = 0, or a channel's upper wall y = H), after Hammer's Adhesive Dynamics (Hammer & Apte, Biophys J 63:35,
 // 1992; Chang, Tees & Hammer, PNAS 97:11262, 2000) with deformable cells (Jadhav, Eggleton &
 // Konstantopoulos, Biophys J 88:96, 2005).
 //
 // Units are those of the capillary number Ca = mu k a / G: lengths in cell radii a, forces
 // in G a, energies in G a^2, times in 1/k (k the shear rate), so rates are in units of k;
 // a density per area is per a^2, a spring constant is in G (force per length).
+#include "capsula/adhesion/WallPlane.hpp"
+
 #include <Teuchos_ParameterList.hpp>
 
 #include <cstdint>
@@ -27,25 +29,37 @@ enum class BondKinetics {
   MeanField   ///< the expected bond occupancy per receptor, deterministic
 };
 
-/// A rectangle x in [xMin, xMax], z in [zMin, zMax] of the wall y = 0 (infinite bounds:
-/// the whole plane).
+/// A rectangle x in [xMin, xMax], z in [zMin, zMax] of the ligand wall (infinite bounds:
+/// the whole plane). In a periodic box (periodX, periodZ > 0) a point is first moved by the
+/// lattice into [0, L_x) x [0, L_z), where a bounded rectangle lies: the ligands repeat with
+/// the box.
 struct WallRectangle {
   double xMin = -std::numeric_limits<double>::infinity();
   double xMax = std::numeric_limits<double>::infinity();
   double zMin = -std::numeric_limits<double>::infinity();
   double zMax = std::numeric_limits<double>::infinity();
-  bool contains(double x, double z) const { return x >= xMin && x <= xMax && z >= zMin && z <= zMax; }
+  double periodX = 0.0; ///< L_x of the periodic box (0: x not periodic)
+  double periodZ = 0.0; ///< L_z of the periodic box (0: z not periodic)
+  bool contains(double x, double z) const;
   bool bounded() const;
+};
+
+/// Which wall carries the ligands.
+enum class LigandWallChoice {
+  Lower, ///< the wall y = 0
+  Upper  ///< a channel's upper wall y = H
 };
 
 /// The adhesion model, read from a validated "Adhesion" sublist.
 struct AdhesionSettings {
   bool enabled = false;
-  double receptorDensity = 50.0;         ///< receptors per a^2 of reference membrane
-  double ligandDensity = 100.0;          ///< ligands per a^2 of wall
-  WallRectangle ligandPatch;             ///< where the wall carries ligands
-  double springConstant = 10.0;          ///< sigma / G
-  double equilibriumLength = 0.02;       ///< lambda / a
+  double receptorDensity = 50.0;                               ///< receptors per a^2 of reference membrane
+  double ligandDensity = 100.0;                                ///< ligands per a^2 of wall
+  WallRectangle ligandPatch;                                   ///< where the wall carries ligands
+  LigandWallChoice ligandWallChoice = LigandWallChoice::Lower; ///< 'Ligand wall'
+  WallPlane ligandWall;                                        ///< that wall's plane (the scene sets H for Upper)
+  double springConstant = 10.0;                                ///< sigma / G
+  double equilibriumLength = 0.02;                             ///< lambda / a
   double reactionDistance = 0.05;        ///< r_0 / a: a receptor binds only within r_0 of the wall
   double patchRadius = 0.0;              ///< rho / a: the membrane patch a bond pulls on (0: a point)
   double onRate = 0.1;                   ///< k_on0 / (k a^2): the forward rate per unit ligand density
@@ -58,7 +72,7 @@ struct AdhesionSettings {
   std::uint64_t seed = 1;
 };
 
-/// Declares Enabled, Receptor density, Ligand density, Ligand patch, Spring constant,
+/// Declares Enabled, Ligand wall, Receptor density, Ligand density, Ligand patch, Spring constant,
 /// Equilibrium length, Reaction distance, Patch radius, On-rate, Off-rate, Reactive compliance, Transition
 /// spring constant, Thermal energy, Bond model, Kinetics and Seed.
 void declareAdhesionParameters(Teuchos::ParameterList& adhesion);
@@ -69,6 +83,11 @@ void declareAdhesionParameters(Teuchos::ParameterList& adhesion);
 /// energy with adhesion enabled, or a ligand patch that is empty or reaches off `wall`.
 AdhesionSettings readAdhesionParameters(const Teuchos::ParameterList& adhesion, const std::string& path = "Adhesion",
                                         const WallRectangle& wall = {});
+
+/// The plane of the ligand wall in a domain whose upper wall, if any, is at `channelHeight`
+/// (0: none). Throws core::InputError naming 'Adhesion/Ligand wall' for Upper without a
+/// channel.
+WallPlane ligandWallPlane(LigandWallChoice choice, double channelHeight);
 
 /// "Slip (Bell)" / "Catch-slip (Dembo)", "Stochastic" / "Mean field": the deck's names.
 std::string to_string(BondModel model);

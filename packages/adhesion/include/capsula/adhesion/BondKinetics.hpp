@@ -20,8 +20,9 @@ namespace capsula::adhesion {
 /// k_off of a bond of length `length` (units of the shear rate).
 double offRate(const AdhesionSettings& s, double length);
 
-/// k_on of a free receptor at `height` above the wall whose foot (x, z) is on the ligand
-/// patch (0 if it is higher than the reaction distance, below the wall, or off the patch).
+/// k_on of a free receptor at the gap `height` from the ligand wall whose foot (x, z) is on
+/// the ligand patch (0 if it is farther than the reaction distance, through the wall, or off
+/// the patch).
 double onRate(const AdhesionSettings& s, double height, double x, double z);
 
 /// 1 - exp(-rate dt): the probability that a Poisson event of the given rate happens within

@@ -1,6 +1,8 @@
 #pragma once
-// The bonds of one cell's receptors to the ligands of the wall y = 0, advanced one time step
-// at a time by Monte Carlo (Hammer & Apte 1992) or by their mean field.
+// The bonds of one cell's receptors to the ligands of the ligand wall (AdhesionSettings::
+// ligandWall: the wall y = 0, or a channel's upper wall), advanced one time step at a time by
+// Monte Carlo (Hammer & Apte 1992) or by their mean field. "Below" a receptor means the
+// point of that wall nearest to it, its gap the distance to it.
 //
 // Each receptor carries a state: its occupancy (stochastic: 0 free or 1 bonded; mean field:
 // the probability p of being bonded) and the anchor, the ligand position on the wall where

@@ -38,6 +38,7 @@
 // A gap <= 0 (a point through the wall) is evaluated at 1e-6 delta: a huge, finite push back.
 #include "capsula/adhesion/ContactParameters.hpp"
 #include "capsula/adhesion/LoadStiffness.hpp"
+#include "capsula/adhesion/WallPlane.hpp"
 
 #include <capsula/mesh/SurfaceMesh.hpp>
 #include <capsula/mesh/Vec3.hpp>
@@ -47,15 +48,8 @@
 
 namespace capsula::adhesion {
 
-/// A no-slip plane y = height that repels membranes on its fluid side (`fluidSide` +1: the
-/// fluid lies above it, the lower wall; -1: below it, a channel's upper wall).
-struct ContactWall {
-  double height = 0.0;
-  int fluidSide = 1;
-
-  /// The gap of a point at height y, positive in the fluid.
-  double gap(double y) const { return fluidSide * (y - height); }
-};
+/// A no-slip plane that repels membranes on its fluid side (WallPlane.hpp).
+using ContactWall = WallPlane;
 
 /// p(gap) in units of G / a.
 double repulsionPressure(const ContactSettings& contact, double gap);
