@@ -14,8 +14,12 @@ endfunction()
 #   TEUCHOS  RCP, parameter lists, communicators, timers (every package: capsula::core)
 #   EIGEN    Vec3 and small dense matrices (capsula::mesh and what depends on it)
 #   TPETRA   distributed vectors and operators, with Kokkos under them
-# Each library compiles its own (its flags differ: -fno-math-errno in operators); the
-# test executables share the one of capsula_test_support (tests/support).
+# A library that names `PRECOMPILE SHARED` reuses the one built for every library with its
+# compile options (all the sets, built once per distinct COMPILE_OPTIONS: a precompiled
+# header is only valid under the flags and macros it was made with); one with other macros
+# (capsula::mesh, CGAL's) or flags that change the arithmetic (capsula::contour) names its
+# own sets and compiles its own. The test executables share the one of capsula_test_support
+# (tests/support).
 option(CAPSULA_PRECOMPILED_HEADERS "Precompile the Trilinos, Eigen and GoogleTest headers" ON)
 # Unity builds: a library's sources are compiled in batches of up to 8 per translation
 # unit, so the templates they share (Teuchos, Eigen, Tpetra) are instantiated once per
@@ -41,10 +45,27 @@ function(capsula_precompile_headers target)
   target_precompile_headers(${target} PRIVATE ${headers})
 endfunction()
 
-# capsula_add_library(<name> SOURCES ... [DEPENDS ...] [PRECOMPILE <set>...])
-# Creates capsula_<name> with alias capsula::<name>.
+# capsula_shared_precompiled_headers(<out-var> [<compile option>...]): the target whose
+# precompiled headers (all the sets) a library with these compile options reuses, made on
+# first use; its one source compiles nothing.
+function(capsula_shared_precompiled_headers out_var)
+  string(MAKE_C_IDENTIFIER "capsula_shared_pch${ARGN}" target)
+  if(NOT TARGET ${target})
+    add_library(${target} OBJECT ${PROJECT_SOURCE_DIR}/cmake/SharedPrecompiledHeaders.cpp)
+    target_link_libraries(${target} PRIVATE capsula::deps::trilinos Eigen3::Eigen)
+    target_compile_features(${target} PRIVATE cxx_std_17)
+    target_compile_options(${target} PRIVATE ${ARGN})
+    capsula_set_warnings(${target})
+    capsula_precompile_headers(${target} TEUCHOS EIGEN TPETRA)
+  endif()
+  set(${out_var} ${target} PARENT_SCOPE)
+endfunction()
+
+# capsula_add_library(<name> SOURCES ... [DEPENDS ...] [COMPILE_OPTIONS <option>...]
+#                     [PRECOMPILE SHARED | PRECOMPILE <set>...])
+# Creates capsula_<name> with alias capsula::<name>; COMPILE_OPTIONS are private to it.
 function(capsula_add_library name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;PRECOMPILE" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;PRECOMPILE;COMPILE_OPTIONS" ${ARGN})
   if(NOT ARG_SOURCES)
     message(FATAL_ERROR "capsula_add_library(${name}): list the sources explicitly")
   endif()
@@ -55,7 +76,13 @@ function(capsula_add_library name)
   target_link_libraries(capsula_${name} PUBLIC ${ARG_DEPENDS})
   target_compile_features(capsula_${name} PUBLIC cxx_std_17)
   capsula_set_warnings(capsula_${name})
-  if(ARG_PRECOMPILE)
+  target_compile_options(capsula_${name} PRIVATE ${ARG_COMPILE_OPTIONS})
+  if(ARG_PRECOMPILE STREQUAL "SHARED")
+    if(CAPSULA_PRECOMPILED_HEADERS)
+      capsula_shared_precompiled_headers(shared ${ARG_COMPILE_OPTIONS})
+      target_precompile_headers(capsula_${name} REUSE_FROM ${shared})
+    endif()
+  elseif(ARG_PRECOMPILE)
     capsula_precompile_headers(capsula_${name} ${ARG_PRECOMPILE})
   endif()
   if(CAPSULA_UNITY_BUILD)
