@@ -132,8 +132,9 @@ const io::SnapshotBlock* findBlock(const io::Snapshot& snapshot, const std::stri
   return nullptr;
 }
 
-// The largest |a - b| over two arrays of the same length; HUGE_VAL if the lengths differ or a
-// difference is not a number.
+// The largest |a - b| over two arrays of the same length, leaving out the entries k with
+// k % stride == skip when stride > 1 (one coordinate of points); HUGE_VAL if the lengths
+// differ or a difference is not a number.
 double largestDifference(const std::vector<double>& a, const std::vector<double>& b, std::size_t stride,
                          std::size_t skip)
 {
