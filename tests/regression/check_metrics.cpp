@@ -11,6 +11,8 @@
 //   check_metrics shifted FILE_A FILE_B COLUMN=OFFSET:TOLERANCE...
 //       At every time both tables hold, |COLUMN_a - COLUMN_b - OFFSET| <= TOLERANCE: the same
 //       run moved by OFFSET (tests/regression/periodic.cmake). Prints the largest deviation.
+//       COLUMN may be NAME_A/NAME_B, a column of each table (in shifted and mirrored): one
+//       wall's map against the other wall's, wall_stress_min/wall_stress_min_upper.
 //   check_metrics mirrored FILE_A FILE_B COLUMN=SUM:TOLERANCE...
 //       At every time both tables hold, |COLUMN_a + COLUMN_b - SUM| <= TOLERANCE: the run
 //       reflected about a plane (tests/regression/channel.cmake). Prints the largest deviation.
@@ -157,7 +159,10 @@ int combined(int argc, char** argv, double sign)
     const std::string name = spec.substr(0, equals);
     const double offset = std::atof(spec.substr(equals + 1, colon - equals - 1).c_str());
     const double tolerance = std::atof(spec.substr(colon + 1).c_str());
-    const std::size_t ca = columnIndex(a, name, argv[2]), cb = columnIndex(b, name, argv[3]);
+    const auto slash = name.find('/');
+    const std::string nameA = name.substr(0, slash);
+    const std::string nameB = slash == std::string::npos ? name : name.substr(slash + 1);
+    const std::size_t ca = columnIndex(a, nameA, argv[2]), cb = columnIndex(b, nameB, argv[3]);
     double worst = 0.0, worstTime = 0.0;
     int common = 0;
     for (const auto& ra : a.rows) {

@@ -10,6 +10,12 @@
 //       [0, LX) x R x [0, LZ) ('Output/Fold into box'), and at least one snapshot holds a
 //       cell with nodes on both sides of a boundary or outside the box (else the test
 //       proves nothing about folding whole cells).
+//   check_snapshots wall-maps FILE_A BLOCK_A FILE_B BLOCK_B TOLERANCE
+//       The same number of snapshots at the same times; in each, the wall grid BLOCK_A of
+//       FILE_A and BLOCK_B of FILE_B have the same shape, the same nodes along the wall (x, z)
+//       and the same node fields in order (names may differ: dudy on the lower wall is dudn
+//       on the upper), each value within TOLERANCE (a wall's map against the other wall's
+//       in the mirrored run, tests/regression/channel.cmake). Prints the largest difference.
 //   check_snapshots checkpoint-time FILE T
 //       The checkpoint FILE (io/Checkpoint.hpp) holds the state at time T exactly (a run
 //       that failed kept its last good checkpoint).
@@ -19,6 +25,8 @@
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/io/SnapshotFile.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -114,6 +122,70 @@ int folded(const std::string& file, double lx, double lz)
   return ok && reachesOut ? 0 : 1;
 }
 
+const io::SnapshotBlock* findBlock(const io::Snapshot& snapshot, const std::string& name)
+{
+  for (const auto& block : snapshot.blocks) {
+    if (block.name == name) {
+      return &block;
+    }
+  }
+  return nullptr;
+}
+
+// The largest |a - b| over two arrays of the same length, leaving out the entries k with
+// k % stride == skip when stride > 1 (one coordinate of points); HUGE_VAL if the lengths
+// differ or a difference is not a number.
+double largestDifference(const std::vector<double>& a, const std::vector<double>& b, std::size_t stride,
+                         std::size_t skip)
+{
+  if (a.size() != b.size()) {
+    return HUGE_VAL;
+  }
+  double worst = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (stride > 1 && k % stride == skip) {
+      continue;
+    }
+    const double d = std::abs(a[k] - b[k]);
+    worst = d <= worst ? worst : (std::isnan(d) ? HUGE_VAL : d);
+  }
+  return worst;
+}
+
+int wallMaps(const std::string& fileA, const std::string& blockA, const std::string& fileB, const std::string& blockB,
+             double tolerance)
+{
+  const std::size_t count = io::readSnapshotLayouts(fileA).size();
+  const std::size_t countB = io::readSnapshotLayouts(fileB).size();
+  if (count == 0 || count != countB) {
+    std::cout << "FAIL  " << count << " snapshots in " << fileA << ", " << countB << " in " << fileB << "\n";
+    return 1;
+  }
+  bool ok = true;
+  for (std::size_t k = 0; k < count; ++k) {
+    const io::Snapshot a = io::readSnapshot(fileA, k), b = io::readSnapshot(fileB, k);
+    const io::SnapshotBlock *x = findBlock(a, blockA), *y = findBlock(b, blockB);
+    if (!x || !y || a.time != b.time || x->gridShape != y->gridShape || x->nodeFields.size() != y->nodeFields.size()) {
+      std::cout << "FAIL  snapshot " << k << ": no blocks '" << blockA << "' and '" << blockB
+                << "' of the same shape at the same time\n";
+      ok = false;
+      continue;
+    }
+    // Along the wall only: the walls' heights differ (skip y, every third coordinate).
+    const double nodes = largestDifference(x->positions, y->positions, 3, 1);
+    double fields = 0.0;
+    for (std::size_t f = 0; f < x->nodeFields.size(); ++f) {
+      fields = std::max(fields, largestDifference(x->nodeFields[f].values, y->nodeFields[f].values, 1, 0));
+    }
+    const bool pass = nodes <= tolerance && fields <= tolerance;
+    ok = ok && pass;
+    std::cout << (pass ? "ok    " : "FAIL  ") << "snapshot " << k << " (t = " << a.time
+              << "): " << x->positions.size() / 3 << " nodes, largest difference " << fields << " in the fields, "
+              << nodes << " in x and z (allowed " << tolerance << ")\n";
+  }
+  return ok ? 0 : 1;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -132,6 +204,9 @@ int main(int argc, char** argv)
     if (mode == "folded" && argc == 5) {
       return folded(argv[2], std::atof(argv[3]), std::atof(argv[4]));
     }
+    if (mode == "wall-maps" && argc == 7) {
+      return wallMaps(argv[2], argv[3], argv[4], argv[5], std::atof(argv[6]));
+    }
     if (mode == "checkpoint-time" && argc == 4) {
       const double time = io::readCheckpoint(argv[2]).time;
       const double expected = std::atof(argv[3]);
@@ -139,7 +214,8 @@ int main(int argc, char** argv)
                 << "\n";
       return time == expected ? 0 : 1;
     }
-    std::cerr << "usage: check_snapshots same FILE_A FILE_B | count FILE N | checkpoint-time FILE T\n";
+    std::cerr << "usage: check_snapshots same FILE_A FILE_B | count FILE N | folded FILE LX LZ\n"
+                 "       | wall-maps FILE_A BLOCK_A FILE_B BLOCK_B TOLERANCE | checkpoint-time FILE T\n";
     return 2;
   } catch (const capsula::core::Error& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -133,7 +133,17 @@ void appendPerCell(std::vector<std::string>& columns, const std::vector<std::str
   }
 }
 
-std::vector<std::string> columnsWithoutAdhesion(bool wallShearStress, int numCells, bool isolatedRange)
+// The upper wall's map in a channel (WallShearStressMap.hpp), after the lower wall's columns,
+// which keep their names.
+const std::vector<std::string>& upperWallMetricNames()
+{
+  static const std::vector<std::string> names{"wall_stress_min_upper", "wall_stress_max_upper",
+                                              "wall_area_upstream_upper", "wall_area_downstream_upper"};
+  return names;
+}
+
+std::vector<std::string> columnsWithoutAdhesion(bool wallShearStress, int numCells, bool isolatedRange,
+                                                bool upperWallShearStress)
 {
   if (numCells <= 1) {
     const auto& names = cellMetricNames();
@@ -149,6 +159,9 @@ std::vector<std::string> columnsWithoutAdhesion(bool wallShearStress, int numCel
     }
     if (wallShearStress && isolatedRange) {
       columns.insert(columns.end(), {"wall_area_below_isolated", "wall_area_above_isolated"});
+    }
+    if (wallShearStress && upperWallShearStress) {
+      columns.insert(columns.end(), upperWallMetricNames().begin(), upperWallMetricNames().end());
     }
     columns.insert(columns.end(), stabilityMetricNames().begin(), stabilityMetricNames().end());
     return columns;
@@ -167,6 +180,9 @@ std::vector<std::string> columnsWithoutAdhesion(bool wallShearStress, int numCel
     if (isolatedRange) {
       columns.insert(columns.end(), {"wall_area_below_isolated", "wall_area_above_isolated"});
     }
+    if (upperWallShearStress) {
+      columns.insert(columns.end(), upperWallMetricNames().begin(), upperWallMetricNames().end());
+    }
   }
   for (const auto& name : stabilityMetricNames()) {
     for (int c = 0; c < numCells; ++c) {
@@ -184,9 +200,10 @@ std::vector<std::string> columnsWithoutAdhesion(bool wallShearStress, int numCel
 } // namespace
 
 std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange, bool adhesion,
-                                        bool tether)
+                                        bool tether, bool upperWallShearStress)
 {
-  std::vector<std::string> columns = columnsWithoutAdhesion(wallShearStress, numCells, isolatedRange);
+  std::vector<std::string> columns =
+      columnsWithoutAdhesion(wallShearStress, numCells, isolatedRange, upperWallShearStress);
   if (adhesion) {
     appendPerCell(columns, adhesionMetricNames(), numCells);
   }

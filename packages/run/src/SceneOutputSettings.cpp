@@ -14,8 +14,10 @@ void declareWallShearStressParameters(Teuchos::ParameterList& wall)
   core::declareBool(wall, "Enabled", false,
                     "Compute the principal shear stress on a grid on the wall around the cells at "
                     "every output (thesis eqs 3.59-3.63) and the areas above Threshold upstream and "
-                    "downstream of the cell (Figs 5.17-5.22). Needs 'Wall/Enabled'. Costs one "
-                    "boundary-integral evaluation per grid node per output.");
+                    "downstream of the cell (Figs 5.17-5.22). Needs 'Wall/Enabled'. In a channel "
+                    "('Wall/Channel height') the upper wall gets a map of its own (metrics columns "
+                    "*_upper, snapshot block upper_wall). Costs four boundary-integral evaluations "
+                    "per grid node and wall per output.");
   core::declareReal(wall, "Upstream extent", 6.0,
                     "Length of wall covered upstream of (behind) the centroid of the cells, in cell "
                     "radii.",

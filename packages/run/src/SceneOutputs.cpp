@@ -69,6 +69,9 @@ std::vector<std::string> SceneOutputs::terms() const
     std::ostringstream line;
     line << "output: wall shear stress on a grid of spacing " << wall.spacing << " (" << wall.upstream << " upstream, "
          << wall.downstream << " downstream, half width " << wall.halfWidth << "), threshold " << wall.threshold;
+    if (description_.domain.hasUpperWall()) {
+      line << ", on the lower and the upper wall";
+    }
     terms.push_back(line.str());
   }
   if (!settings_.flowProbes.empty()) {
@@ -89,8 +92,9 @@ std::vector<std::string> SceneOutputs::terms() const
 void SceneOutputs::open(std::optional<double> resumeAfter)
 {
   const auto& wall = settings_.wallShearStress;
-  std::vector<std::string> columns = metricsColumns(wall.enabled, description_.numCells(), wall.isolatedRange,
-                                                    description_.adhesion.enabled, description_.tether.enabled);
+  std::vector<std::string> columns =
+      metricsColumns(wall.enabled, description_.numCells(), wall.isolatedRange, description_.adhesion.enabled,
+                     description_.tether.enabled, description_.domain.hasUpperWall());
   if (suspension_) {
     const std::vector<std::string> more = suspension_->columns();
     columns.insert(columns.end(), more.begin(), more.end());
@@ -111,40 +115,51 @@ timeint::ObserverVerdict SceneOutputs::atOutput(const timeint::IntegrationState&
   return steady_ ? timeint::ObserverVerdict::Stop : timeint::ObserverVerdict::Continue;
 }
 
-// Wall shear stress on a grid that follows the cells (collective).
-std::optional<SceneOutputs::WallSample> SceneOutputs::sampleWallStress(const timeint::IntegrationState& state,
-                                                                       const scene::SceneFields& fields,
-                                                                       const std::vector<CellSample>& samples)
+// Wall shear stress on a grid that follows the cells, one per wall of the domain, lower
+// first (collective).
+std::vector<SceneOutputs::WallSample> SceneOutputs::sampleWallStress(const timeint::IntegrationState& state,
+                                                                     const scene::SceneFields& fields,
+                                                                     const std::vector<CellSample>& samples)
 {
+  std::vector<WallSample> maps;
+  lastWallAreas_.clear();
   const auto& wallOutput = settings_.wallShearStress;
   if (!wallOutput.enabled) {
-    return std::nullopt;
+    return maps;
   }
   Vec3 centre = Vec3::Zero();
   for (const auto& s : samples) {
     centre += s.shape.centroid / static_cast<double>(samples.size());
   }
-  WallGrid grid = WallGrid::around(centre[0], centre[2], wallOutput.upstream, wallOutput.downstream,
-                                   wallOutput.halfWidth, wallOutput.spacing);
-  // Stencil step: 1/20 of the gap under the lowest node (the stencil reaches 4 steps up,
-  // a fifth of the gap), never more than a fifth of the grid spacing.
-  double gap = HUGE_VAL;
-  for (std::size_t k = 1; k < state.y.size(); k += 3) {
-    gap = std::min(gap, state.y[k]);
-  }
-  const double step = std::min(gap / 20.0, wallOutput.spacing / 5.0);
   scene::Scene& scene = live_.scene();
-  operators::WallShearStress stress =
-      wallShearStressOnGrid(scene.solver(), grid, step, operators::LoadDensity(fields.loadDensity.data()),
-                            fields.solverVelocities.data(), scene.flowAt(state.time));
-  // The threshold is relative to the undisturbed wall stress of the instant, |k(t)|.
-  const double ambient = std::abs(description_.shearRate.factor(state.time));
-  lastWallAreas_ = elevatedStressAreas(grid, stress.magnitude, centre[0], wallOutput.threshold * ambient);
-  if (wallOutput.isolatedRange) {
-    lastOutsideIsolated_ =
-        areasOutsideRange(grid, stress.magnitude, wallOutput.isolatedMinimum, wallOutput.isolatedMaximum);
+  const operators::FlowConditions flow = scene.flowAt(state.time);
+  for (const domain::Wall& wall : description_.domain.walls()) {
+    WallGrid grid = WallGrid::around(wall, centre[0], centre[2], wallOutput.upstream, wallOutput.downstream,
+                                     wallOutput.halfWidth, wallOutput.spacing);
+    // Stencil step: 1/20 of the gap between the wall and the nearest node (the stencil
+    // reaches 4 steps into the fluid, a fifth of the gap), never more than a fifth of the
+    // grid spacing.
+    double gap = HUGE_VAL;
+    for (std::size_t k = 1; k < state.y.size(); k += 3) {
+      gap = std::min(gap, wall.distance(state.y[k]));
+    }
+    const double step = std::min(gap / 20.0, wallOutput.spacing / 5.0);
+    operators::WallShearStress stress =
+        wallShearStressOnGrid(scene.solver(), grid, step, operators::LoadDensity(fields.loadDensity.data()),
+                              fields.solverVelocities.data(), flow);
+    // The threshold is relative to the undisturbed stress on this wall at the instant,
+    // |k(t) f'(wall)| = |k(t)| on either wall of every profile (domain/FlowProfile.hpp).
+    const double ambient =
+        std::abs(description_.shearRate.factor(state.time)) * std::abs(description_.flowProfile.wallShearRate(wall));
+    lastWallAreas_.push_back(elevatedStressAreas(grid, stress.magnitude, centre[0], wallOutput.threshold * ambient));
+    // The isolated cell's range is the lower wall's (wall_stress_min, wall_stress_max).
+    if (wallOutput.isolatedRange && maps.empty()) {
+      lastOutsideIsolated_ =
+          areasOutsideRange(grid, stress.magnitude, wallOutput.isolatedMinimum, wallOutput.isolatedMaximum);
+    }
+    maps.push_back(WallSample{std::move(grid), std::move(stress)});
   }
-  return WallSample{std::move(grid), std::move(stress)};
+  return maps;
 }
 
 // Updates the extremes and the last samples; returns why the mesh is past the quality
@@ -184,7 +199,7 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
   const scene::SceneFields fields = scene.evaluate(t, state.y);
   const std::vector<CellSample> samples = metrics_.record(t, scene, fields);
   const std::vector<PairSample> pairs = pairSamples(scene, fields.positions, samples);
-  const std::optional<WallSample> wall = sampleWallStress(state, fields, samples);
+  const std::vector<WallSample> walls = sampleWallStress(state, fields, samples);
   std::vector<double> probeVelocities;
   if (!settings_.flowProbes.empty()) {
     std::vector<double> points;
@@ -212,11 +227,12 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
   ++outputsWritten_;
 
   Teuchos::TimeMonitor filesGuard(*core::timer("Output files"));
+  // In the order of metricsColumns: the lower wall, its isolated-range areas, the upper wall.
   std::vector<double> wallValues;
-  if (lastWallAreas_ && wall) {
-    wallValues = {lastWallAreas_->minimum, lastWallAreas_->maximum, lastWallAreas_->upstream,
-                  lastWallAreas_->downstream};
-    if (lastOutsideIsolated_) {
+  for (std::size_t w = 0; w < lastWallAreas_.size(); ++w) {
+    const ElevatedStressAreas& areas = lastWallAreas_[w];
+    wallValues.insert(wallValues.end(), {areas.minimum, areas.maximum, areas.upstream, areas.downstream});
+    if (w == 0 && lastOutsideIsolated_) {
       wallValues.insert(wallValues.end(), {lastOutsideIsolated_->below, lastOutsideIsolated_->above});
     }
   }
@@ -246,8 +262,8 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
   if (snapshotDue && degraded.empty()) {
     files_.writeSnapshot(kSnapshotBase, [&] {
       io::Snapshot snapshot = sceneSnapshot(scene, fields, t, state.statistics.acceptedSteps, settings_.foldIntoBox);
-      if (wall) {
-        snapshot.blocks.push_back(wallSnapshotBlock(wall->grid, wall->stress));
+      for (const WallSample& wall : walls) {
+        snapshot.blocks.push_back(wallSnapshotBlock(wall.grid, wall.stress));
       }
       return snapshot;
     });
@@ -351,11 +367,14 @@ void SceneOutputs::addResults(io::JsonValue& summary) const
     summary["pairs"].append(pair);
   }
   summary["minimum gap"] = description_.minimumGap;
-  if (lastWallAreas_) {
-    summary["wall shear stress"]["minimum"] = lastWallAreas_->minimum;
-    summary["wall shear stress"]["maximum"] = lastWallAreas_->maximum;
-    summary["wall shear stress"]["elevated area upstream"] = lastWallAreas_->upstream;
-    summary["wall shear stress"]["elevated area downstream"] = lastWallAreas_->downstream;
+  // The lower wall's map under "wall shear stress", a channel's upper wall's under
+  // "upper wall shear stress".
+  for (std::size_t w = 0; w < lastWallAreas_.size(); ++w) {
+    io::JsonValue& entry = summary[w == 0 ? "wall shear stress" : "upper wall shear stress"];
+    entry["minimum"] = lastWallAreas_[w].minimum;
+    entry["maximum"] = lastWallAreas_[w].maximum;
+    entry["elevated area upstream"] = lastWallAreas_[w].upstream;
+    entry["elevated area downstream"] = lastWallAreas_[w].downstream;
   }
   if (suspension_) {
     suspension_->addResults(summary);

@@ -154,8 +154,11 @@ io::Snapshot sceneSnapshot(const scene::Scene& scene, const scene::SceneFields& 
 
 io::SnapshotBlock wallSnapshotBlock(const WallGrid& grid, const operators::WallShearStress& stress)
 {
+  // The lower wall keeps the names it always had (n = e_y there, so du/dn is du/dy); the
+  // upper wall's grid is a block of its own, its derivatives named for the normal n = -e_y.
+  const bool lower = grid.wall.fluidSide > 0;
   io::SnapshotBlock block;
-  block.name = "wall";
+  block.name = lower ? "wall" : "upper_wall";
   block.topology = io::Topology::StructuredGrid;
   block.dimension = 3;
   // Row-major with the x index fastest: shape (nz, nx), as WallGrid::index numbers them.
@@ -164,8 +167,8 @@ io::SnapshotBlock wallSnapshotBlock(const WallGrid& grid, const operators::WallS
     block.positions.insert(block.positions.end(), {p[0], p[1], p[2]});
   }
   block.nodeFields.push_back({"shear_stress", 1, stress.magnitude});
-  block.nodeFields.push_back({"dudy", 1, stress.dudy});
-  block.nodeFields.push_back({"dwdy", 1, stress.dwdy});
+  block.nodeFields.push_back({lower ? "dudy" : "dudn", 1, stress.dudy});
+  block.nodeFields.push_back({lower ? "dwdy" : "dwdn", 1, stress.dwdy});
   return block;
 }
 

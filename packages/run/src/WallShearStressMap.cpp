@@ -21,7 +21,8 @@ std::vector<mesh::Vec3> WallGrid::nodes() const
   return points;
 }
 
-WallGrid WallGrid::around(double cx, double cz, double upstream, double downstream, double halfWidth, double spacing)
+WallGrid WallGrid::around(const domain::Wall& wall, double cx, double cz, double upstream, double downstream,
+                          double halfWidth, double spacing)
 {
   core::require<core::InputError>(spacing > 0.0 && upstream >= 0.0 && downstream >= 0.0 && halfWidth >= 0.0,
                                   "wall grid: the spacing must be > 0 and the extents >= 0.");
@@ -29,6 +30,7 @@ WallGrid WallGrid::around(double cx, double cz, double upstream, double downstre
   const int down = static_cast<int>(std::ceil(downstream / spacing - 1e-9));
   const int side = static_cast<int>(std::ceil(halfWidth / spacing - 1e-9));
   WallGrid grid;
+  grid.wall = wall;
   grid.spacing = spacing;
   grid.xMin = cx - up * spacing;
   grid.zMin = cz - side * spacing;
@@ -44,13 +46,15 @@ operators::WallShearStress wallShearStressOnGrid(operators::BoundaryIntegralSolv
   core::require<core::InputError>(step > 0.0 && std::isfinite(step), "wall shear stress: the stencil step is ", step,
                                   "; it must be > 0.");
   constexpr int levels = 4;
-  constexpr double weights[levels] = {48.0, -36.0, 16.0, -3.0}; // / (12 h), u(0) = 0
+  constexpr double wallWeight = -25.0;                          // on u_w
+  constexpr double weights[levels] = {48.0, -36.0, 16.0, -3.0}; // / (12 h)
+  const domain::Wall& wall = grid.wall;
   const std::vector<mesh::Vec3> nodes = grid.nodes();
   std::vector<double> points;
   points.reserve(3 * levels * nodes.size());
   for (const auto& p : nodes) {
     for (int level = 1; level <= levels; ++level) {
-      points.insert(points.end(), {p[0], level * step, p[2]});
+      points.insert(points.end(), {p[0], wall.height + wall.fluidSide * (level * step), p[2]});
     }
   }
   const std::vector<double> u = solver.flowVelocity(points, load, nodeVelocities, flow);
@@ -59,7 +63,11 @@ operators::WallShearStress wallShearStressOnGrid(operators::BoundaryIntegralSolv
   stress.dwdy.resize(nodes.size());
   stress.magnitude.resize(nodes.size());
   for (std::size_t p = 0; p < nodes.size(); ++p) {
-    double dudy = 0.0, dwdy = 0.0;
+    // The disturbance vanishes on every wall (the kernels' no-slip condition), so the wall
+    // moves with the undisturbed flow there: exactly 0 on the lower wall, where the term
+    // leaves the sum unchanged.
+    const mesh::Vec3 wallVelocity = flow.background.at(nodes[p]);
+    double dudy = wallWeight * wallVelocity[0], dwdy = wallWeight * wallVelocity[2];
     for (int level = 0; level < levels; ++level) {
       const std::size_t k = 3 * (levels * p + static_cast<std::size_t>(level));
       dudy += weights[level] * u[k];

@@ -25,10 +25,14 @@ namespace capsula::run {
 std::vector<std::string> metricsColumns(bool wallShearStress);
 /// The metrics.csv columns of `numCells` cells (the one-cell layout for numCells = 1); with
 /// `isolatedRange` (and the wall stress) also wall_area_below_isolated,
-/// wall_area_above_isolated ('Output/Wall shear stress/Isolated range'); with `adhesion` the
-/// adhesion columns (suffixed _c with several cells); with `tether` the tether's.
+/// wall_area_above_isolated ('Output/Wall shear stress/Isolated range'); with
+/// `upperWallShearStress` (and the wall stress: a channel) the upper wall's map after the
+/// lower wall's, wall_stress_min_upper, wall_stress_max_upper, wall_area_upstream_upper,
+/// wall_area_downstream_upper (the unsuffixed wall columns are the lower wall's); with
+/// `adhesion` the adhesion columns (suffixed _c with several cells); with `tether` the
+/// tether's.
 std::vector<std::string> metricsColumns(bool wallShearStress, int numCells, bool isolatedRange = false,
-                                        bool adhesion = false, bool tether = false);
+                                        bool adhesion = false, bool tether = false, bool upperWallShearStress = false);
 
 /// One row in the order of metricsColumns: time, accepted steps, last step size, the cells'
 /// samples, their pairs, and `wallValues` (the wall stress columns in force, possibly none);

@@ -1,7 +1,8 @@
 #pragma once
 // The outputs of a scene run at every output time (an observer of the time loop): the
 // fields of the scene at the state, the metrics of every cell and pair (OutputMetrics,
-// PairMetrics), the wall shear stress on a grid that follows the cells, the fluid velocity
+// PairMetrics), the wall shear stress on a grid that follows the cells (on each wall of a
+// channel: WallShearStressMap.hpp), the fluid velocity
 // at the flow probes; then one row of metrics.csv (MetricsTable.hpp) and probes.csv, a
 // snapshot every 'Output/Snapshot stride' outputs and the checkpoint. Observers measure at
 // output times only, never inside the right-hand side.
@@ -88,8 +89,8 @@ public:
 
 private:
   struct WallSample;
-  std::optional<WallSample> sampleWallStress(const timeint::IntegrationState& state, const scene::SceneFields& fields,
-                                             const std::vector<CellSample>& samples);
+  std::vector<WallSample> sampleWallStress(const timeint::IntegrationState& state, const scene::SceneFields& fields,
+                                           const std::vector<CellSample>& samples);
   std::string recordSamples(double t, const std::vector<CellSample>& samples);
 
   RunScene& live_;
@@ -113,7 +114,7 @@ private:
   double mostCompressiveTension_ = HUGE_VAL;
   double leastPrincipalStiffness_ = HUGE_VAL;
   double smallestWallGap_ = HUGE_VAL;
-  std::optional<ElevatedStressAreas> lastWallAreas_;
+  std::vector<ElevatedStressAreas> lastWallAreas_; ///< per wall of the domain, lower first
   std::optional<OutsideRangeAreas> lastOutsideIsolated_;
 };
 

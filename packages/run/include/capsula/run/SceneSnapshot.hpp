@@ -4,8 +4,10 @@
 //   node fields  velocity (3), tension_major, tension_minor (eq 3.30), stretch_major,
 //                stretch_minor
 //   cell fields  load <Delta f>_m (3), shear_stress |<Delta f>_m| (eq 3.57)
-// and, when the wall shear stress is computed, a block "wall" (2DSMesh) with the fields
-// shear_stress (eq 3.63), dudy and dwdy; with adhesion, for every cell with bonds a block
+// and, when the wall shear stress is computed, a block "wall" (2DSMesh, on y = 0) with the
+// fields shear_stress (eq 3.63), dudy and dwdy, and in a channel a block "upper_wall"
+// (2DSMesh, on y = H) with shear_stress, dudn and dwdn, n = -e_y its normal into the fluid
+// (WallShearStressMap.hpp: the fluid's traction on that wall); with adhesion, for every cell with bonds a block
 // "bonds0", "bonds1", ... (Polyline, two nodes per bond: the receptor and its ligand on the
 // wall) with the cell fields force (on the membrane, 3), occupancy and receptor (its index).
 // The block, and so the mesh version, changes with the number of bonds. With a tether, a
