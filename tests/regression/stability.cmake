@@ -87,10 +87,10 @@ stability_check(sphere_near_wall trend expect ${_stability}/sphere_near_wall/met
 # 1b. The same sphere 0.05 a below the upper wall of a plane Couette channel (H = 6, periodic
 #    box 6 x 6, the kernel PeriodicChannel): the shear relative to the upper wall is the lower
 #    wall's, so the case is case 1 reflected, plus the far wall and the periodic images. The
-#    same bounds, wall_gap_per_h now measured to the upper wall (it read 6.4, the height above
-#    y = 0, before the gap took the nearer wall). Trend at t = 1: D12 = 0.3996 (case 1:
-#    0.4024) and y_c = 4.95086 (drawn 0.0009 towards the wall; case 1 falls 0.0005), with
-#    the bands of case 1.
+#    same bounds, wall_gap_per_h measured to the upper wall (fixed bug: it read 6.4, the
+#    height above y = 0, before the gap took the nearer wall). Trend at t = 1: D12 = 0.3996
+#    (case 1: 0.4024) and y_c = 4.95086 (drawn 0.0009 towards the wall; case 1 falls
+#    0.0005), with the bands of case 1.
 stability_run(sphere_near_upper_wall cell3d ${_near} --set "Cells/Cell 0/Center={0,4.95,0}"
   --set "Domain/Periodic length x=6" --set "Domain/Periodic length z=6" --set "Wall/Channel height=6")
 stability_check(sphere_near_upper_wall bounds within ${_stability}/sphere_near_upper_wall/metrics.csv
