@@ -60,14 +60,15 @@ set_tests_properties(regression_channel_couette_centre_stays PROPERTIES FIXTURES
 # hold that law; lambda = 1 (no double layer) gives (1 / 5) a^2 / H, 32% lower, and a wrong
 # sign of the double layer O(1). u_migr stays 0 on the centre-plane (measured 1e-10).
 # H = 12 runs on 2 ranks.
-set(_channel_drop ${PROJECT_SOURCE_DIR}/input/cell3d/demo.xml --set "Cells/Cell 0/Mesh level=2"
+# The deck is input/cell3d/channel/poiseuille-lambda5.xml (H = 12, box 12 x 12, level 2),
+# its capsule moved to the centre-plane and run for one step of 1e-4.
+set(_channel_drop ${PROJECT_SOURCE_DIR}/input/cell3d/channel/poiseuille-lambda5.xml
     --set "Output/Wall shear stress/Enabled=false" --set "Time integration/Method=RK4"
     --set "Time integration/Initial step=0.0001" --set "Time integration/End time=0.0001"
-    --set "Output/Interval=0.0001" --set "Flow/Profile=Poiseuille" --set "Flow/Viscosity ratio=5")
+    --set "Output/Interval=0.0001")
 capsula_add_mpi_command_test(regression_channel_drop_h12
-  COMMAND $<TARGET_FILE:cell3d> ${_channel_drop} --set "Domain/Periodic length x=12"
-          --set "Domain/Periodic length z=12" --set "Wall/Channel height=12"
-          --set "Cells/Cell 0/Center={1.5, 6, 0}" --output ${_channel_out}/drop_h12
+  COMMAND $<TARGET_FILE:cell3d> ${_channel_drop} --set "Cells/Cell 0/Center={1.5, 6, 0}"
+          --output ${_channel_out}/drop_h12
   LABELS regression TIMEOUT 600)
 set_tests_properties(regression_channel_drop_h12 PROPERTIES FIXTURES_SETUP channel_drop_h12)
 add_test(NAME regression_channel_drop_h24
@@ -86,8 +87,7 @@ set_tests_properties(regression_channel_drop_h24_slip_is_the_drops_faxen_law PRO
   FIXTURES_REQUIRED channel_drop_h24 LABELS regression)
 # The same drop at H = 12 on 1 rank: 1 and 2 ranks agree (measured 3.7e-15, u_migr).
 add_test(NAME regression_channel_drop_h12_one_rank
-  COMMAND cell3d ${_channel_drop} --set "Domain/Periodic length x=12" --set "Domain/Periodic length z=12"
-          --set "Wall/Channel height=12" --set "Cells/Cell 0/Center={1.5, 6, 0}"
+  COMMAND cell3d ${_channel_drop} --set "Cells/Cell 0/Center={1.5, 6, 0}"
           --output ${_channel_out}/drop_h12_one_rank)
 set_tests_properties(regression_channel_drop_h12_one_rank PROPERTIES FIXTURES_SETUP channel_drop_h12_one_rank
   LABELS regression)

@@ -22,6 +22,7 @@ def g(x):
 #   validation/    free shear against Lac et al. (2004) and Lac & Barthes-Biesel (2005); a nearly
 #                  rigid capsule against Goldman, Cox & Brenner (1967)
 #   adhesion/      a level-1 capsule released 0.03 a above a ligand-coated wall, stochastic bonds
+#   channel/       the demo's capsule at viscosity ratio 5 in a periodic Poiseuille channel
 #   tether/        a capsule tethered at its lowest point 0.05 a above the wall (the 3D
 #                  counterpart of the thesis's Chapter 4 a/b = 1, lambda = 1, Ca = 0.1 case)
 # The thesis used mesh level 3 (1280 elements), N_Q = 7 and RKF45; its eps = 1e-10 is replaced
@@ -251,6 +252,20 @@ def cell3d():
                (adhesion + "Thermal energy", "4e-3"), (adhesion + "Kinetics", "Stochastic"),
                (adhesion + "Seed", "1")])
 
+
+    # The periodic channel (docs/domains.md): the demo's capsule at viscosity ratio 5 in plane
+    # Poiseuille flow between walls 12 apart, in a box periodic along x and z (L = 12), started
+    # at y = 4 towards the centre-plane; the wall stress map on both walls. The regression
+    # tests run it on the centre-plane for one step (Faxen's law of a drop).
+    yield cell3d_deck(
+        f"{root}/channel/poiseuille-lambda5.xml",
+        "A Skalak capsule (C = 2.5, Ca = 0.3) at viscosity ratio 5 in plane Poiseuille flow between two\n"
+        "     walls, 0 < y < 12, periodic along x and z (L = 12; kernel PeriodicChannel): started at\n"
+        "     y = 4, it deforms and migrates towards the centre-plane; wall stress maps on both walls.",
+        ca="0.3", height="4.0", level="2", end="2.0", tolerance="1e-5", stride="2", lam="5.0",
+        directory="out/cell3d-channel", spacing="0.5",
+        extra=[("Flow/Profile", "Poiseuille"), ("Wall/Channel height", "12.0"),
+               ("Domain/Periodic length x", "12.0"), ("Domain/Periodic length z", "12.0")])
 
     # Tether (docs/cell3d.md, "Tether"; docs/cell3d-tether-results.md): a sphere released with
     # its lowest point 0.05 a above the wall, tethered there from t = 0 by a spring of rest
