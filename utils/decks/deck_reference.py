@@ -18,7 +18,7 @@ sys.path.insert(0, os.path.join(ROOT, "utils", "docs"))
 import generated_pages  # noqa: E402 (the header of a generated page: command and code version)
 
 COMMAND = "/usr/bin/python3 utils/decks/deck_reference.py build"
-APPS = ["cell3d", "twocell3d", "tether2d", "cellshape", "curvature_report"]
+APPS = ["cell3d", "twocell3d", "suspension3d", "tether2d", "cellshape", "curvature_report"]
 
 
 def find_app(build, name):

@@ -9,6 +9,19 @@
 
 namespace capsula::run {
 
+void runSceneOfCommandLine(const Teuchos::ParameterList& deck, const core::RunContext& context,
+                           const std::string& application, const SceneLibraries& libraries)
+{
+  SceneRunOptions options;
+  options.application = application;
+  options.deckSource = context.deckName;
+  options.outputDirectory = context.options.outputDirectory;
+  options.restartDirectory = context.options.restartDirectory;
+  options.log = context.out;
+  runScene(deck, context.comm, options, kernelsForDeck(libraries.operators, deck), libraries.membraneLaws,
+           libraries.timeMethods);
+}
+
 int runSceneApplication(int argc, char** argv, const core::AppDescription& app, int cellsWhenNoneGiven)
 {
   return runSceneApplication(argc, argv, app, standardSceneLibraries(), cellsWhenNoneGiven);
@@ -25,14 +38,7 @@ int runSceneApplication(int argc, char** argv, const core::AppDescription& app, 
 {
   const std::string name = app.name;
   const auto run = [name, &libraries](core::RunContext& context) {
-    SceneRunOptions options;
-    options.application = name;
-    options.deckSource = context.deckName;
-    options.outputDirectory = context.options.outputDirectory;
-    options.restartDirectory = context.options.restartDirectory;
-    options.log = context.out;
-    runScene(*context.deck, context.comm, options, kernelsForDeck(libraries.operators, *context.deck),
-             libraries.membraneLaws, libraries.timeMethods);
+    runSceneOfCommandLine(*context.deck, context, name, libraries);
   };
   return core::runApplication(
       argc, argv, app,

@@ -58,6 +58,17 @@ SceneOutputs::SceneOutputs(RunScene& live, const scene::SceneDescription& descri
 {
   if (settings.suspension.enabled) {
     suspension_.emplace(settings.suspension, description.domain);
+    std::vector<std::string> types;
+    for (const scene::CellDescription& cell : description.cells) {
+      types.push_back(cell.type);
+    }
+    const std::string& counted = settings.suspension.hematocritType;
+    core::require<core::InputError>(counted.empty() || std::find(types.begin(), types.end(), counted) != types.end(),
+                                    "'Output/Suspension/Hematocrit type' = '", counted,
+                                    "', but no cell has that 'Type'.");
+    if (std::any_of(types.begin(), types.end(), [](const std::string& type) { return !type.empty(); })) {
+      cellTypes_.emplace(types, description.domain, settings.suspension.bins, settings.suspension.averageFrom);
+    }
   }
 }
 
@@ -98,6 +109,12 @@ void SceneOutputs::open(std::optional<double> resumeAfter)
   if (suspension_) {
     const std::vector<std::string> more = suspension_->columns();
     columns.insert(columns.end(), more.begin(), more.end());
+  }
+  if (cellTypes_) {
+    const std::vector<std::string> more = cellTypes_->columns();
+    columns.insert(columns.end(), more.begin(), more.end());
+  }
+  if (suspension_) {
     files_.openSnapshots(kSuspensionBase, resumeAfter);
   }
   files_.openTable("metrics.csv", columns, resumeAfter);
@@ -241,17 +258,37 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
   std::optional<SuspensionSample> suspensionSample;
   if (suspension_) {
     std::vector<const mesh::SurfaceMesh*> cells;
+    const std::string& counted = settings_.suspension.hematocritType;
     for (int c = 0; c < scene.numCells(); ++c) {
-      cells.push_back(&scene.cell(c));
+      if (counted.empty() || description_.cells[static_cast<std::size_t>(c)].type == counted) {
+        cells.push_back(&scene.cell(c));
+      }
     }
     suspensionSample = suspension_->measure(t, cells);
     const std::vector<double> more = suspension_->row(*suspensionSample);
     row.insert(row.end(), more.begin(), more.end());
   }
+  std::optional<CellTypeOutput::Sample> typeSample;
+  if (cellTypes_) {
+    std::vector<mesh::Vec3> centroids, velocities;
+    for (const CellSample& s : samples) {
+      centroids.push_back(s.shape.centroid);
+      velocities.push_back(s.instantVelocity);
+    }
+    typeSample = cellTypes_->measure(t, centroids, velocities);
+    const std::vector<double> more = cellTypes_->row(*typeSample);
+    row.insert(row.end(), more.begin(), more.end());
+  }
   files_.appendRow("metrics.csv", row);
   if (suspensionSample) {
     files_.writeSnapshot(kSuspensionBase, [&] {
-      return io::Snapshot{t, state.statistics.acceptedSteps, {suspension_->profileBlock(*suspensionSample)}};
+      io::Snapshot snapshot{t, state.statistics.acceptedSteps, {suspension_->profileBlock(*suspensionSample)}};
+      if (typeSample) {
+        for (io::SnapshotBlock& block : cellTypes_->blocks(*typeSample)) {
+          snapshot.blocks.push_back(std::move(block));
+        }
+      }
+      return snapshot;
     });
   }
   if (!settings_.flowProbes.empty()) {
@@ -283,6 +320,9 @@ void SceneOutputs::save(io::Checkpoint& checkpoint) const
   if (suspension_) {
     suspension_->save(checkpoint);
   }
+  if (cellTypes_) {
+    cellTypes_->save(checkpoint);
+  }
   checkpoint.integers["scene.outputs"] = outputsWritten_;
 }
 
@@ -291,6 +331,9 @@ void SceneOutputs::load(const io::Checkpoint& checkpoint, const std::string& sou
   metrics_.load(checkpoint, source);
   if (suspension_) {
     suspension_->load(checkpoint, source);
+  }
+  if (cellTypes_) {
+    cellTypes_->load(checkpoint, source);
   }
   const auto outputs = checkpoint.integers.find("scene.outputs");
   outputsWritten_ = outputs == checkpoint.integers.end() ? 0 : outputs->second;
@@ -378,6 +421,9 @@ void SceneOutputs::addResults(io::JsonValue& summary) const
   }
   if (suspension_) {
     suspension_->addResults(summary);
+  }
+  if (cellTypes_) {
+    cellTypes_->addResults(summary);
   }
   if (lastOutsideIsolated_) {
     summary["wall shear stress"]["area below the isolated cell's minimum"] = lastOutsideIsolated_->below;

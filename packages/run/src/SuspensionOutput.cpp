@@ -30,6 +30,11 @@ void declareSuspensionOutputParameters(Teuchos::ParameterList& suspension)
                     "the domain is not periodic along x (periodic: the period, and this must be 0).",
                     core::atLeast(0.0));
   core::declareReal(suspension, "Box length z", 0.0, "As 'Box length x', along z.", core::atLeast(0.0));
+  core::declareString(suspension, "Hematocrit type", "",
+                      "The cell 'Type' whose cells the hematocrit profile and the cell-free layer count "
+                      "(the red cells, for the red-cell-free layer of the margination literature); empty: "
+                      "every cell. suspension3d reads empty as the type that fills 'Suspension/Hematocrit' (every "
+                      "cell when each type has a 'Count').");
   core::declareInt(suspension, "Columns", 32,
                    "Columns per period along x and along z over which the cell-free layer is "
                    "averaged in a channel periodic along x and z (CellFreeLayer.hpp).",
@@ -65,6 +70,7 @@ SuspensionOutputSettings readSuspensionOutputSettings(const Teuchos::ParameterLi
   out.boxLengthX = suspension.get<double>("Box length x");
   out.boxLengthZ = suspension.get<double>("Box length z");
   out.columns = suspension.get<int>("Columns");
+  out.hematocritType = suspension.get<std::string>("Hematocrit type");
   if (!out.enabled) {
     return out;
   }

@@ -231,6 +231,11 @@ SceneDescription describeScene(const Teuchos::ParameterList& deck, const elastic
     CellDescription cell;
     cell.path = "Cells/" + name;
     cell.surface = list;
+    cell.type = list.isParameter("Type") ? list.get<std::string>("Type") : std::string();
+    core::require<core::InputError>(cell.type.empty() || isCellTypeName(cell.type), "'", cell.path, "/Type' = '",
+                                    cell.type,
+                                    "': a type is a word (a letter, then letters, digits or underscores), "
+                                    "since the outputs name columns after it.");
     cell.membraneForces = list.get<std::string>("Membrane forces");
     cell.shearModulus = list.get<double>("Shear modulus");
     readMembraneLaw(list, laws, cell);

@@ -12,6 +12,7 @@
 #include <capsula/mesh/RedistributionParameters.hpp>
 #include <capsula/operators/ShearRate.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <string>
 #include <vector>
@@ -57,6 +58,15 @@ std::string cellSublistName(int index)
   return "Cell " + std::to_string(index);
 }
 
+bool isCellTypeName(const std::string& name)
+{
+  if (name.empty() || !std::isalpha(static_cast<unsigned char>(name[0]))) {
+    return false;
+  }
+  return std::all_of(name.begin(), name.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
 std::array<double, 3> defaultCellCenter(int index, int count)
 {
   return {2.5 * index - 1.25 * (count - 1), 1.6, 0.0};
@@ -66,6 +76,10 @@ void declareCellParameters(Teuchos::ParameterList& cell, const std::array<double
                            const elasticity::MembraneLawRegistry& laws)
 {
   mesh::declareCellSurfaceParameters(cell, center);
+  core::declareString(cell, "Type", "",
+                      "The cell's type, a word (red_cell, platelet): the suspension outputs give each type "
+                      "its own columns and distributions (docs/suspension3d.md). suspension3d sets it to "
+                      "the name of the cell's 'Suspension/Cell types' sublist; empty: no type.");
   core::declareChoice(cell, "Membrane forces", "Virtual work", {"Virtual work", "Contour integral"},
                       "How the membrane's load on the fluids is computed. 'Virtual work': nodal "
                       "forces dE/dx of the strain energy and a continuous load interpolated over "

@@ -8,7 +8,17 @@
 #include <capsula/run/OperatorLibraries.hpp>
 #include <capsula/run/SceneLibraries.hpp>
 
+#include <Teuchos_ParameterList.hpp>
+
+#include <string>
+
 namespace capsula::run {
+
+/// Runs the validated scene deck `deck` (runScene) for the program `application` with
+/// `libraries`, writing where the command line of `context` says (--output, --restart) and
+/// logging to its output.
+void runSceneOfCommandLine(const Teuchos::ParameterList& deck, const core::RunContext& context,
+                           const std::string& application, const SceneLibraries& libraries);
 
 /// The exit status of the whole program (0 on success, see core::runApplication).
 /// `cellsWhenNoneGiven`: the cells of a deck that has none, as --print-defaults shows them.

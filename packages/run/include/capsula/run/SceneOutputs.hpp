@@ -24,6 +24,7 @@
 // 'Output/Suspension/Enabled' the suspension's running average (SuspensionOutput.hpp).
 #include <capsula/io/CheckpointSection.hpp>
 #include <capsula/io/Json.hpp>
+#include <capsula/run/CellTypeOutput.hpp>
 #include <capsula/run/OutputMetrics.hpp>
 #include <capsula/run/PairMetrics.hpp>
 #include <capsula/run/RunOutputs.hpp>
@@ -100,6 +101,7 @@ private:
   double steadyTolerance_;
   OutputMetrics metrics_;
   std::optional<SuspensionOutput> suspension_; ///< 'Output/Suspension/Enabled'
+  std::optional<CellTypeOutput> cellTypes_;    ///< the same, in a scene whose cells have a 'Type'
   std::function<void()> writeCheckpoint_;
   std::int64_t outputsWritten_ = 0;
   bool steady_ = false;

@@ -15,6 +15,10 @@
 // mean (CellFreeLayer.hpp, 'Output/Suspension/Columns' per period); in any other domain with
 // the lower wall, the thinnest layer, the smallest distance from the wall to a cell surface.
 //
+// With 'Output/Suspension/Hematocrit type' (suspension3d reads it empty as the type that fills
+// 'Suspension/Hematocrit', the red cells), the profile and the layer count only the cells of
+// that 'Type', as the margination literature's red-cell-free layer does; otherwise every cell.
+//
 // The time average is the arithmetic mean of the profiles at the outputs in the window; its
 // running sum and count are checkpointed ("suspension."), so a restart continues it bit for
 // bit.
@@ -41,7 +45,8 @@ struct SuspensionOutputSettings {
   double height = 0.0;     ///< the profile's top without a channel
   double boxLengthX = 0.0; ///< the box's length along x without periodicity along x
   double boxLengthZ = 0.0;
-  int columns = 32; ///< columns per period of the cell-free layer in a periodic channel
+  int columns = 32;           ///< columns per period of the cell-free layer in a periodic channel
+  std::string hematocritType; ///< the cells' 'Type' the profile and the layer count; empty: all
 };
 
 /// Declares the "Output/Suspension" sublist.

@@ -24,6 +24,7 @@ namespace capsula::scene {
 
 struct CellDescription {
   std::string path;                             ///< "Cells/Cell 0", for messages
+  std::string type;                             ///< 'Type': the suspension's cell type, or empty
   Teuchos::ParameterList surface;               ///< the cell's sublist (mesh::buildCellSurface reads it)
   std::string membraneLaw;                      ///< 'Membrane law': a registered name ("NeoHookean", "Skalak")
   Teuchos::ParameterList membraneLawParameters; ///< the law's own keys (Skalak: 'Area dilation C')

@@ -60,4 +60,8 @@ void declareMeshEvolutionParameters(Teuchos::ParameterList& valid);
 /// "Cell 0", "Cell 1", ...
 std::string cellSublistName(int index);
 
+/// Whether `name` can be a cell's 'Type': a word (a letter, then letters, digits or
+/// underscores), since the outputs name columns after it.
+bool isCellTypeName(const std::string& name);
+
 } // namespace capsula::scene

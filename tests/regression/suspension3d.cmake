@@ -1,0 +1,58 @@
+# suspension3d, scaled down from the demo deck (input/suspension3d/demo.xml): four level-1 red
+# cells at viscosity ratio 5 (hematocrit 0.04 of the box 8 x 6 x 8.4, 0.0401 reached) and one
+# platelet at viscosity ratio 1 (shear modulus 2, so that RK4 steps of 0.0025 are stable) in
+# the periodic Poiseuille channel, two steps to t = 0.005: the placement, the double layer
+# with cells of two viscosity ratios, the suspension's columns, on 1 and 2 ranks and across a
+# restart.
+#
+# Goldens (measured at the last row): the placement fixes the first red cell's x_c and the
+# platelet's height to round-off (a change of the random sequence or of the body shapes moves
+# them by O(1)); the per-type means and the cell-free layers to 1e-8. A red cell at viscosity
+# ratio 1 moves u_mean_red_cell by 1e-3 in these two steps, a wrong per-type sum by O(1).
+set(_suspension_out ${CMAKE_CURRENT_BINARY_DIR}/suspension3d)
+set(_suspension_run ${PROJECT_SOURCE_DIR}/input/suspension3d/demo.xml --set "Suspension/Hematocrit=0.04"
+    --set "Suspension/Cell types/platelet/Count=1" --set "Suspension/Cell types/platelet/Shear modulus=2"
+    --set "Suspension/Cell types/red_cell/Viscosity ratio=5" --set "Time integration/Method=RK4"
+    --set "Time integration/Initial step=0.0025" --set "Output/Interval=0.0025")
+add_test(NAME regression_suspension3d_one_rank
+  COMMAND suspension3d ${_suspension_run} --set "Time integration/End time=0.005"
+          --output ${_suspension_out}/one_rank)
+set_tests_properties(regression_suspension3d_one_rank PROPERTIES FIXTURES_SETUP suspension3d_one_rank
+  LABELS regression)
+add_test(NAME regression_suspension3d_goldens
+  COMMAND check_metrics expect ${_suspension_out}/one_rank/metrics.csv -
+          time=0.005:1e-12 x_c_0=0.17500297912208557:1e-8 y_mean_platelet=4.834166675440185:1e-8
+          u_mean_red_cell=1.2510140472851803:1e-8 y_mean_red_cell=2.4731969875164994:1e-8
+          u_mean_platelet=0.9160420080146358:1e-8 cell_free_layer_lower=2.7515553774603623:1e-8
+          cell_free_layer_upper=2.9302709763718173:1e-8)
+set_tests_properties(regression_suspension3d_goldens PROPERTIES FIXTURES_REQUIRED suspension3d_one_rank
+  LABELS regression)
+# 1 vs 2 ranks: the same cells (placed on every rank from the same seed) and the same motion,
+# to the 1e-8 margin of the other 1 vs 2 rank comparisons (regression_periodic_crossing).
+capsula_add_mpi_command_test(regression_suspension3d_two_ranks
+  COMMAND $<TARGET_FILE:suspension3d> ${_suspension_run} --set "Time integration/End time=0.005"
+          --output ${_suspension_out}/two_ranks
+  LABELS regression TIMEOUT 600)
+set_tests_properties(regression_suspension3d_two_ranks PROPERTIES FIXTURES_SETUP suspension3d_two_ranks)
+add_test(NAME regression_suspension3d_one_and_two_ranks_agree
+  COMMAND check_metrics shifted ${_suspension_out}/one_rank/metrics.csv ${_suspension_out}/two_ranks/metrics.csv
+          x_c_0=0:1e-8 x_c_4=0:1e-8 y_c_0=0:1e-8 y_c_4=0:1e-8 D12_0=0:1e-8 u_mean_red_cell=0:1e-8
+          u_mean_platelet=0:1e-8 cell_free_layer_lower=0:1e-8 cell_free_layer_upper=0:1e-8)
+set_tests_properties(regression_suspension3d_one_and_two_ranks_agree PROPERTIES
+  FIXTURES_REQUIRED "suspension3d_one_rank;suspension3d_two_ranks" LABELS "mpi;regression")
+# A restart places the same cells again and continues bit for bit: one step, then the second
+# from the checkpoint, against the uninterrupted run, every number of metrics.csv equal.
+add_test(NAME regression_suspension3d_restart_source
+  COMMAND bash -c "rm -rf ${_suspension_out}/restarted && \"$0\" \"$@\"" $<TARGET_FILE:suspension3d>
+          ${_suspension_run} --set "Time integration/End time=0.0025" --output ${_suspension_out}/restarted)
+set_tests_properties(regression_suspension3d_restart_source PROPERTIES FIXTURES_SETUP suspension3d_restart_source
+  LABELS regression)
+add_test(NAME regression_suspension3d_restart_continues
+  COMMAND suspension3d ${_suspension_run} --set "Time integration/End time=0.005"
+          --output ${_suspension_out}/restarted --restart ${_suspension_out}/restarted)
+set_tests_properties(regression_suspension3d_restart_continues PROPERTIES
+  FIXTURES_REQUIRED suspension3d_restart_source FIXTURES_SETUP suspension3d_restarted LABELS regression)
+add_test(NAME regression_suspension3d_restart_is_bit_for_bit
+  COMMAND check_metrics same ${_suspension_out}/one_rank/metrics.csv ${_suspension_out}/restarted/metrics.csv 0)
+set_tests_properties(regression_suspension3d_restart_is_bit_for_bit PROPERTIES
+  FIXTURES_REQUIRED "suspension3d_one_rank;suspension3d_restarted" LABELS regression)
