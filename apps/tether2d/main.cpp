@@ -4,15 +4,15 @@
 // equilibrium or the end time, recording contour length, cell length, tether force,
 // leading-edge velocity, area and D12 (docs/tether2d.md).
 #include <capsula/core/Application.hpp>
-#include <capsula/run/Tether2DDeck.hpp>
-#include <capsula/run/TetherRun2D.hpp>
+#include <capsula/scene2d/Tether2DDeck.hpp>
+#include <capsula/scene2d/TetherRun2D.hpp>
 
 #include <ostream>
 
 namespace {
 
 namespace core = capsula::core;
-namespace run = capsula::run;
+namespace scene2d = capsula::scene2d;
 
 void runTether(core::RunContext& ctx)
 {
@@ -22,10 +22,10 @@ void runTether(core::RunContext& ctx)
   } else if (ctx.options.restartDirectory) {
     directory = *ctx.options.restartDirectory;
   }
-  run::TetherRun2D simulation(ctx.comm, *ctx.deck, ctx.out, ctx.deckName);
+  scene2d::TetherRun2D simulation(ctx.comm, *ctx.deck, ctx.out, ctx.deckName);
   *ctx.out << "tether2d: " << simulation.model().numberOfNodes() << " points, " << simulation.model().kernelName()
            << " Green's function, " << ctx.comm->getSize() << " rank(s)\n";
-  const run::TetherRunResult2D result = simulation.run(directory, ctx.options.restartDirectory);
+  const scene2d::TetherRunResult2D result = simulation.run(directory, ctx.options.restartDirectory);
   *ctx.out << "Finished at tau = " << result.finalTime << (result.steady ? " (equilibrium)" : "") << " after "
            << result.steps << " steps\n"
            << "  max tether force F/E     = " << result.maxTetherForce << " at tau = " << result.timeOfMaxTetherForce
@@ -53,5 +53,5 @@ int main(int argc, char** argv)
        "tether2d input/tether2d/demo.xml --restart out/demo", "tether2d --print-defaults > my_tether.xml"},
       true};
   return core::runApplication(
-      argc, argv, app, [](const Teuchos::ParameterList&) { return run::validTether2DParameters(); }, runTether);
+      argc, argv, app, [](const Teuchos::ParameterList&) { return scene2d::validTether2DParameters(); }, runTether);
 }

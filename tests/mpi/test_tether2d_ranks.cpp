@@ -4,9 +4,9 @@
 
 #include <capsula/contour/InitialShapes.hpp>
 #include <capsula/core/Deck.hpp>
-#include <capsula/operators/InterfaceVelocity2D.hpp>
-#include <capsula/run/Tether2DDeck.hpp>
-#include <capsula/run/TetherRun2D.hpp>
+#include <capsula/scene2d/InterfaceVelocity2D.hpp>
+#include <capsula/scene2d/Tether2DDeck.hpp>
+#include <capsula/scene2d/TetherRun2D.hpp>
 
 #include <Teuchos_DefaultSerialComm.hpp>
 #include <Tpetra_Core.hpp>
@@ -36,7 +36,7 @@ contour::Contour tetheredEllipse()
 
 Teuchos::ParameterList deck(double lambda)
 {
-  const auto valid = run::validTether2DParameters();
+  const auto valid = scene2d::validTether2DParameters();
   Teuchos::ParameterList d("tether2d");
   for (const std::string a :
        {"Cell/Number of points=33", "Flow/Capillary number=0.1", "Tether/Minimum preparation time=0.125",
@@ -60,13 +60,13 @@ TEST(Tether2DRanks, NodeVelocitiesDoNotDependOnTheRankCount)
   };
   bool ok = true;
   for (const double lambda : {1.0, 5.0}) {
-    operators::FlowConditions2D flow;
+    scene2d::FlowConditions2D flow;
     flow.capillaryNumber = 0.1;
     flow.viscosityRatio = lambda;
     operators::SolverParameters solver;
     solver.tolerance = 1e-12;
-    auto parallel = operators::makeInterfaceVelocity2D(true, comm, c.numberOfNodes(), {}, solver);
-    auto alone = operators::makeInterfaceVelocity2D(true, serial(), c.numberOfNodes(), {}, solver);
+    auto parallel = scene2d::makeInterfaceVelocity2D(true, comm, c.numberOfNodes(), {}, solver);
+    auto alone = scene2d::makeInterfaceVelocity2D(true, serial(), c.numberOfNodes(), {}, solver);
     ok = ok && parallel->distribution().numOwnedNodes() == (comm->getRank() == 0 ? 21 : 20);
     const auto u2 = parallel->nodeVelocities(c, load, flow, {0}).velocities;
     const auto u1 = alone->nodeVelocities(c, load, flow, {0}).velocities;
@@ -88,8 +88,8 @@ TEST(Tether2DRanks, TetheredRunDoesNotDependOnTheRankCount)
   const auto comm = Tpetra::getDefaultComm();
   bool ok = true;
   for (const double lambda : {1.0, 3.0}) {
-    run::TetherRun2D parallel(comm, deck(lambda), nullptr);
-    run::TetherRun2D alone(serial(), deck(lambda), nullptr);
+    scene2d::TetherRun2D parallel(comm, deck(lambda), nullptr);
+    scene2d::TetherRun2D alone(serial(), deck(lambda), nullptr);
     const auto a = parallel.run("", std::nullopt);
     const auto b = alone.run("", std::nullopt);
     // lambda = 1: identical velocities, hence identical steps. lambda = 3: round-off in
@@ -116,8 +116,8 @@ TEST(Tether2DRanks, StiffTetheredRunDoesNotDependOnTheRankCount)
     if (method == "Auto") {
       d.sublist("Flow").set("Capillary number", 0.002);
     }
-    run::TetherRun2D parallel(comm, d, nullptr);
-    run::TetherRun2D alone(serial(), d, nullptr);
+    scene2d::TetherRun2D parallel(comm, d, nullptr);
+    scene2d::TetherRun2D alone(serial(), d, nullptr);
     const auto a = parallel.run("", std::nullopt);
     const auto b = alone.run("", std::nullopt);
     ok = ok && a.tethered && b.tethered && a.steps == b.steps;

@@ -26,19 +26,19 @@ contour::ContourOptions optionsFor(contour::Closure closure, contour::TetherEnds
 
 } // namespace
 
-std::unique_ptr<elasticity::ElasticMembrane2D> CapsuleModel2D::makeMembrane(const contour::Contour& reference) const
+std::unique_ptr<ElasticMembrane2D> CapsuleModel2D::makeMembrane(const contour::Contour& reference) const
 {
   // The deck's tension law, with bending only when the deck asks for it.
   if (cell_.bendingModulus > 0.0) {
-    return std::make_unique<elasticity::ElasticMembrane2D>(
-        reference, cell_.membraneLaw, elasticity::BendingLaw2D{cell_.bendingModulus, cell_.bendingReference});
+    return std::make_unique<ElasticMembrane2D>(reference, cell_.membraneLaw,
+                                               BendingLaw2D{cell_.bendingModulus, cell_.bendingReference});
   }
-  return std::make_unique<elasticity::ElasticMembrane2D>(reference, cell_.membraneLaw);
+  return std::make_unique<ElasticMembrane2D>(reference, cell_.membraneLaw);
 }
 
 CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const CellSettings2D& cell,
-                               const FlowSettings2D& flow, const operators::ContourDiscretisation2D& discretisation,
-                               const operators::SolverParameters& solver, operators::KernelRegistry2D kernels)
+                               const FlowSettings2D& flow, const ContourDiscretisation2D& discretisation,
+                               const operators::SolverParameters& solver, KernelRegistry2D kernels)
     : cell_(cell),
       flow_(flow),
       discretisation_(discretisation),
@@ -67,9 +67,9 @@ CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& com
   }
 }
 
-std::unique_ptr<operators::InterfaceVelocity2D>
+std::unique_ptr<InterfaceVelocity2D>
 CapsuleModel2D::makeInterfaceVelocity(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes,
-                                      const operators::ContourDiscretisation2D& discretisation,
+                                      const ContourDiscretisation2D& discretisation,
                                       const operators::SolverParameters& solver) const
 {
   return kernels_.create(flow_.kernel.name, comm, numNodes, discretisation, solver, flow_.kernel.parameters);
@@ -93,7 +93,7 @@ std::vector<std::string> CapsuleModel2D::terms() const
   if (cell_.bendingModulus > 0.0) {
     std::ostringstream line;
     line << "membrane bending, k_b/(E L^2) = " << cell_.bendingModulus << ", reference curvature "
-         << (cell_.bendingReference == elasticity::BendingReference2D::Flat ? "0 (flat)" : "of the initial shape");
+         << (cell_.bendingReference == BendingReference2D::Flat ? "0 (flat)" : "of the initial shape");
     terms.push_back(line.str());
   }
   if (discretisation_.nearSingularDistance > 0.0) {
@@ -189,26 +189,26 @@ contour::Contour CapsuleModel2D::contour(const std::vector<double>& state) const
       optionsFor(tethered() ? contour::Closure::Tethered : contour::Closure::Periodic, cell_.tetherEnds));
 }
 
-elasticity::MembraneState2D CapsuleModel2D::membrane(const contour::Contour& contour) const
+MembraneState2D CapsuleModel2D::membrane(const contour::Contour& contour) const
 {
   return membrane_->evaluate(contour);
 }
 
-operators::FlowConditions2D CapsuleModel2D::flowAt(double t) const
+FlowConditions2D CapsuleModel2D::flowAt(double t) const
 {
-  operators::FlowConditions2D conditions = flow_.conditions;
-  conditions.background = operators::LinearFlow2D::simpleShear(flow_.shearRate.factor(t));
+  FlowConditions2D conditions = flow_.conditions;
+  conditions.background = LinearFlow2D::simpleShear(flow_.shearRate.factor(t));
   return conditions;
 }
 
-operators::VelocitySolution2D CapsuleModel2D::velocities(double t, const contour::Contour& contour,
-                                                         const elasticity::MembraneState2D& membrane)
+VelocitySolution2D CapsuleModel2D::velocities(double t, const contour::Contour& contour,
+                                              const MembraneState2D& membrane)
 {
-  const operators::ContourLoad2D load = [&membrane](const contour::ContourPoint& point, int segment, double s) {
+  const ContourLoad2D load = [&membrane](const contour::ContourPoint& point, int segment, double s) {
     return membrane.loadAt(point, segment, s);
   };
   const std::vector<int> fixed = tethered() ? std::vector<int>{0} : std::vector<int>{};
-  operators::VelocitySolution2D solution =
+  VelocitySolution2D solution =
       velocity_->nodeVelocities(contour, load, flowAt(t), fixed, warmStart_ ? &*warmStart_ : nullptr);
   lastIterations_ = solution.iterations;
   return solution;
@@ -217,7 +217,7 @@ operators::VelocitySolution2D CapsuleModel2D::velocities(double t, const contour
 void CapsuleModel2D::rightHandSide(double t, const std::vector<double>& state, std::vector<double>& derivative)
 {
   // The cost of one evaluation, broken down (the app prints the timers at the end;
-  // the single layer's own parts are timed in operators/LayerPotentials2D.hpp).
+  // the single layer's own parts are timed in scene2d/LayerPotentials2D.hpp).
   static const Teuchos::RCP<Teuchos::Time> total = core::timer("2D right-hand side");
   static const Teuchos::RCP<Teuchos::Time> splines = core::timer("2D right-hand side: contour splines");
   static const Teuchos::RCP<Teuchos::Time> loads = core::timer("2D right-hand side: membrane load");
@@ -228,7 +228,7 @@ void CapsuleModel2D::rightHandSide(double t, const std::vector<double>& state, s
     Teuchos::TimeMonitor guard(*splines);
     current.emplace(contour(state));
   }
-  std::optional<elasticity::MembraneState2D> load;
+  std::optional<MembraneState2D> load;
   {
     Teuchos::TimeMonitor guard(*loads);
     load.emplace(membrane(*current));

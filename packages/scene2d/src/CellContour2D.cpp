@@ -10,7 +10,7 @@
 
 namespace capsula::scene2d {
 
-void declareCellParameters2D(Teuchos::ParameterList& cell, const elasticity::MembraneLawRegistry2D& laws)
+void declareCellParameters2D(Teuchos::ParameterList& cell, const MembraneLawRegistry2D& laws)
 {
   namespace core = capsula::core;
   const CellSettings2D defaults;
@@ -44,7 +44,7 @@ void declareCellParameters2D(Teuchos::ParameterList& cell, const elasticity::Mem
   core::declareReal(cell, "Bending modulus", defaults.bendingModulus,
                     "Bending stiffness k_b / (E L^2) of the membrane: the moment k_b (kappa - kappa_ref) with the "
                     "energy (k_b/2) int (kappa - kappa_ref)^2 dl adds its load to the tension's "
-                    "(elasticity/BendingLoad2D.hpp). It resists the grid-scale wrinkles of a compressed "
+                    "(scene2d/BendingLoad2D.hpp). It resists the grid-scale wrinkles of a compressed "
                     "membrane; 0 (the thesis's) builds no bending term. Use it with Tether spline ends = "
                     "NotAKnot: Natural ends force kappa = 0 at the tether, which the bending load turns into a "
                     "spurious tether force (refused).",
@@ -56,12 +56,12 @@ void declareCellParameters2D(Teuchos::ParameterList& cell, const elasticity::Mem
                       "initial cell is free of bending moment when unstressed. Only read when Bending "
                       "modulus > 0 (refused without it, as a key without effect).");
   // Last, so that a law's key that would replace one of the cell's is refused.
-  elasticity::declareMembraneLawParameters(cell, laws.infos(), elasticity::HookeanLaw2D::registeredName,
+  elasticity::declareMembraneLawParameters(cell, laws.infos(), HookeanLaw2D::registeredName,
                                            "The membrane's tension against its stretch omega = dl / dl0, in units "
                                            "of the elastic modulus E of the capillary number.");
 }
 
-CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell, const elasticity::MembraneLawRegistry2D& laws)
+CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell, const MembraneLawRegistry2D& laws)
 {
   CellSettings2D s;
   s.aspectRatio = cell.get<double>("Aspect ratio");
@@ -83,9 +83,8 @@ CellSettings2D readCellSettings2D(const Teuchos::ParameterList& cell, const elas
                                   "'Cell/Bending reference' = '", cell.get<std::string>("Bending reference"),
                                   "' has no effect without bending: set 'Cell/Bending modulus' > 0 or the reference to "
                                   "'Flat'.");
-  s.bendingReference = cell.get<std::string>("Bending reference") == "Flat"
-                           ? elasticity::BendingReference2D::Flat
-                           : elasticity::BendingReference2D::InitialShape;
+  s.bendingReference = cell.get<std::string>("Bending reference") == "Flat" ? BendingReference2D::Flat
+                                                                            : BendingReference2D::InitialShape;
   return s;
 }
 

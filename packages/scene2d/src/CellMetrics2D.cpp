@@ -1,7 +1,8 @@
 #include "capsula/scene2d/CellMetrics2D.hpp"
 
+#include "capsula/scene2d/ContourQuadrature2D.hpp"
+
 #include <capsula/contour/ContourMetrics.hpp>
-#include <capsula/operators/ContourQuadrature2D.hpp>
 
 #include <cmath>
 
@@ -47,7 +48,7 @@ ContourExtremum2D contourMaximum(const contour::Contour& contour, int axis)
 }
 
 CellMetrics2D cellMetrics2D(const CapsuleModel2D& model, const contour::Contour& contour,
-                            const elasticity::MembraneState2D& membrane, const std::vector<double>& velocities)
+                            const MembraneState2D& membrane, const std::vector<double>& velocities)
 {
   CellMetrics2D m;
   m.contourLengthRatio = contour.length() / model.referenceLength();
@@ -57,7 +58,7 @@ CellMetrics2D cellMetrics2D(const CapsuleModel2D& model, const contour::Contour&
   m.tetherForceY = force.y();
   m.tetherForce = force.norm();
   const ContourExtremum2D front = contourMaximum(contour, 0);
-  const operators::ContourField2D velocity(contour, velocities.data());
+  const ContourField2D velocity(contour, velocities.data());
   m.leadingEdgeVelocity =
       model.flow().conditions.viscosityRatio * velocity.at(front.segment, front.t).x() / flowSemiAxis(model.cell());
   m.area = contour::enclosedArea(contour);

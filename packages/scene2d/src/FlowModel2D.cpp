@@ -28,13 +28,12 @@ void declareWallParameters2D(Teuchos::ParameterList& wall)
 }
 
 FlowSettings2D readFlowSettings2D(const Teuchos::ParameterList& flow, const Teuchos::ParameterList& wall,
-                                  const Teuchos::ParameterList& operatorList,
-                                  const operators::KernelRegistry2D& kernels)
+                                  const Teuchos::ParameterList& operatorList, const KernelRegistry2D& kernels)
 {
   FlowSettings2D s;
   s.conditions.capillaryNumber = flow.get<double>("Capillary number");
   s.conditions.viscosityRatio = flow.get<double>("Viscosity ratio");
-  s.conditions.background = operators::LinearFlow2D::simpleShear(1.0);
+  s.conditions.background = LinearFlow2D::simpleShear(1.0);
   if (flow.isSublist("Shear rate")) {
     s.shearRate = operators::readShearRate(flow.sublist("Shear rate"), "Flow/Shear rate");
   }

@@ -1,19 +1,19 @@
 #include "capsula/scene2d/ModelParameters2D.hpp"
 
 #include "capsula/scene2d/CellContour2D.hpp"
+#include "capsula/scene2d/ContourDiscretisation2D.hpp"
 #include "capsula/scene2d/FlowModel2D.hpp"
 #include "capsula/scene2d/StiffSolverParameters2D.hpp"
 #include "capsula/scene2d/TetherProcedure2D.hpp"
 
 #include <capsula/core/ParameterDeclaration.hpp>
-#include <capsula/operators/ContourDiscretisation2D.hpp>
 #include <capsula/operators/KernelChoice.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 
 namespace capsula::scene2d {
 
-void declareModelParameters2D(Teuchos::ParameterList& valid, const operators::KernelRegistry2D& kernels,
-                              const elasticity::MembraneLawRegistry2D& laws)
+void declareModelParameters2D(Teuchos::ParameterList& valid, const KernelRegistry2D& kernels,
+                              const MembraneLawRegistry2D& laws)
 {
   using core::declareSublist;
   declareFlowParameters2D(declareSublist(valid, "Flow", "The shear flow (thesis eq A.13)."));
@@ -23,7 +23,7 @@ void declareModelParameters2D(Teuchos::ParameterList& valid, const operators::Ke
       kernels.infos());
   declareCellParameters2D(declareSublist(valid, "Cell", "The initial cell contour (thesis Fig. 4.1)."), laws);
   declareTetherParameters2D(declareSublist(valid, "Tether", "The tether procedure (thesis Section 4.1)."));
-  operators::declareContourDiscretisation2D(
+  declareContourDiscretisation2D(
       declareSublist(valid, "Discretisation", "Quadrature of the contour integrals (thesis App. A.6)."));
   auto& solver = declareSublist(valid, "Solver", "The Krylov solve of the viscosity-ratio equation (thesis App. A.7).");
   operators::declareSolverParameters(solver);

@@ -1,8 +1,9 @@
 #include "capsula/scene2d/TetherRegrid2D.hpp"
 
+#include "capsula/scene2d/MaterialArcLength2D.hpp"
+
 #include <capsula/contour/ContourLocation.hpp>
 #include <capsula/core/Error.hpp>
-#include <capsula/elasticity/MaterialArcLength2D.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -84,8 +85,7 @@ TetherRegrid2D regridTowardsLowestPoint(const contour::Contour& reference, const
                                   "regridTowardsLowestPoint: the reference and the free cell must be periodic contours "
                                   "through the same markers");
   const int n = current.numberOfNodes();
-  const elasticity::MaterialArcLength2D material(reference.knotArcLengths(), current.knotArcLengths(),
-                                                 contour::Closure::Periodic);
+  const MaterialArcLength2D material(reference.knotArcLengths(), current.knotArcLengths(), contour::Closure::Periodic);
   TetherRegrid2D result;
   const contour::ContourLocation lowest = contour::lowestPoint(current);
   result.tetherArcLength = current.arcLengthAt(lowest.segment, lowest.t);

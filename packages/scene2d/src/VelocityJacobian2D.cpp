@@ -1,8 +1,9 @@
 #include "capsula/scene2d/VelocityJacobian2D.hpp"
 
+#include "capsula/scene2d/ContourDiscretisation2D.hpp"
+#include "capsula/scene2d/PointSingleLayer2D.hpp"
+
 #include <capsula/core/Error.hpp>
-#include <capsula/operators/ContourDiscretisation2D.hpp>
-#include <capsula/operators/PointSingleLayer2D.hpp>
 
 #include <Eigen/SparseCore>
 
@@ -45,7 +46,7 @@ VelocityJacobian2D::VelocityJacobian2D(CapsuleModel2D& model, const Teuchos::RCP
       model_(model),
       settings_(settings)
 {
-  operators::ContourDiscretisation2D discretisation = model.discretisation();
+  ContourDiscretisation2D discretisation = model.discretisation();
   if (settings_.gaussLegendrePoints > 0) {
     discretisation.gaussLegendrePoints = settings_.gaussLegendrePoints;
   }
@@ -147,7 +148,7 @@ Eigen::MatrixXf VelocityJacobian2D::approximateJacobian(const contour::Contour& 
   Eigen::MatrixXf A;
   if (settings_.preconditioner == StiffPreconditioner2D::PointSingleLayer) {
     // M K column by column: K's columns hold ~2 kColumnSpacing entries each.
-    const Eigen::MatrixXf M = operators::pointSingleLayer2D(frozen, model_.flow().wall).cast<float>();
+    const Eigen::MatrixXf M = pointSingleLayer2D(frozen, model_.flow().wall).cast<float>();
     A.setZero(2 * n, 2 * n);
     const auto c = static_cast<float>(coefficient_);
     for (Eigen::Index column = 0; column < K.outerSize(); ++column) {
@@ -188,7 +189,7 @@ void VelocityJacobian2D::applyFrozen(const double* x, double* y)
   // Fourth-order central differences of the load at the frozen contour's points:
   // K v = [8 (f(e) - f(-e)) - (f(2e) - f(-2e))] / 12e, f(s) = Delta f(x_n + s v).
   const double e = kDirectionalStep * shortestSegment_ / largest;
-  std::vector<elasticity::MembraneState2D> states;
+  std::vector<MembraneState2D> states;
   states.reserve(4);
   probe_.resize(n);
   for (const double multiple : {1.0, -1.0, 2.0, -2.0}) {
@@ -198,7 +199,7 @@ void VelocityJacobian2D::applyFrozen(const double* x, double* y)
     states.push_back(model_.membrane(model_.contour(probe_)));
   }
   const double scale = 1.0 / (12.0 * e);
-  const operators::ContourLoad2D derivative = [&](const contour::ContourPoint&, int segment, double t) {
+  const ContourLoad2D derivative = [&](const contour::ContourPoint&, int segment, double t) {
     return Eigen::Vector2d(scale * (8.0 * (states[0].loadAt(segment, t) - states[1].loadAt(segment, t)) -
                                     (states[2].loadAt(segment, t) - states[3].loadAt(segment, t))));
   };

@@ -8,7 +8,7 @@
 
 #include <capsula/core/Error.hpp>
 #include <capsula/io/MetricsCsv.hpp>
-#include <capsula/run/TetherRun2D.hpp>
+#include <capsula/scene2d/TetherRun2D.hpp>
 
 #include <Teuchos_DefaultSerialComm.hpp>
 #include <gtest/gtest.h>
@@ -190,15 +190,15 @@ TEST_F(PulsatileRunTest, TabulatedRunRestartsBitForBitAndOnlyWithItsWaveform)
 }
 
 // tether2d: a free cell without the wall (no tether), 32 points, Ca 0.1, lambda 1 (tau = t).
-capsula::run::TetherRunResult2D runFreeCell2D(const std::vector<std::string>& extra, const std::string& directory)
+capsula::scene2d::TetherRunResult2D runFreeCell2D(const std::vector<std::string>& extra, const std::string& directory)
 {
   std::vector<std::string> settings{"Wall/Enabled=false",         "Tether/Enabled=false",
                                     "Cell/Lowest point height=1", "Cell/Number of points=32",
                                     "Flow/Capillary number=0.1",  "Time integration/Maximum step=0.1",
                                     "Output/Checkpoint every=0"};
   settings.insert(settings.end(), extra.begin(), extra.end());
-  capsula::run::TetherRun2D run(Teuchos::rcp(new Teuchos::SerialComm<int>),
-                                capsula::run::testing::tether2dDeck(settings), nullptr);
+  capsula::scene2d::TetherRun2D run(Teuchos::rcp(new Teuchos::SerialComm<int>),
+                                    capsula::scene2d::testing::tether2dDeck(settings), nullptr);
   return run.run(directory, std::nullopt);
 }
 

@@ -49,7 +49,7 @@ CapsuleModel2D bendingModelOf(const Teuchos::ParameterList& deck)
 {
   return CapsuleModel2D(bendingComm(), readCellSettings2D(deck.sublist("Cell")),
                         readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall")),
-                        operators::readContourDiscretisation2D(deck.sublist("Discretisation")),
+                        scene2d::readContourDiscretisation2D(deck.sublist("Discretisation")),
                         operators::readSolverParameters(deck.sublist("Solver")));
 }
 
@@ -68,17 +68,17 @@ class RelaxationWithoutFlow {
 public:
   explicit RelaxationWithoutFlow(CapsuleModel2D& model)
       : model_(model),
-        velocity_(operators::makeInterfaceVelocity2D(model.flow().wall, bendingComm(), model.numberOfNodes(),
-                                                     model.discretisation(), operators::SolverParameters{}))
+        velocity_(scene2d::makeInterfaceVelocity2D(model.flow().wall, bendingComm(), model.numberOfNodes(),
+                                                   model.discretisation(), operators::SolverParameters{}))
   {
     conditions_ = model.flow().conditions;
-    conditions_.background = operators::LinearFlow2D{};
+    conditions_.background = scene2d::LinearFlow2D{};
   }
   std::vector<double> operator()(const std::vector<double>& y)
   {
     const contour::Contour c = model_.contour(y);
-    const elasticity::MembraneState2D membrane = model_.membrane(c);
-    const operators::ContourLoad2D load = [&membrane](const contour::ContourPoint& p, int k, double t) {
+    const scene2d::MembraneState2D membrane = model_.membrane(c);
+    const scene2d::ContourLoad2D load = [&membrane](const contour::ContourPoint& p, int k, double t) {
       return membrane.loadAt(p, k, t);
     };
     return velocity_->nodeVelocities(c, load, conditions_, {}).velocities;
@@ -86,8 +86,8 @@ public:
 
 private:
   CapsuleModel2D& model_;
-  std::unique_ptr<operators::InterfaceVelocity2D> velocity_;
-  operators::FlowConditions2D conditions_;
+  std::unique_ptr<scene2d::InterfaceVelocity2D> velocity_;
+  scene2d::FlowConditions2D conditions_;
 };
 
 /// max r - min r about the centroid of the nodes.
@@ -173,7 +173,7 @@ TEST(CapsuleModel2DBending, CircleStaysAtRestAndAPerturbedCircleRelaxesTowardsOn
   model.regridFree(perturbed);
   std::copy(perturbed.data(), perturbed.data() + perturbed.size(), y.begin());
   const auto energy = [&](const std::vector<double>& state) {
-    const elasticity::MembraneState2D m = model.membrane(model.contour(state));
+    const scene2d::MembraneState2D m = model.membrane(model.contour(state));
     return std::pair<double, double>(m.elasticEnergy() + m.bendingEnergy(), m.bendingEnergy());
   };
   const double spread0 = radialSpread(y);

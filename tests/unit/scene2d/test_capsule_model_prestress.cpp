@@ -16,7 +16,7 @@
 
 using namespace capsula;
 using namespace capsula::scene2d;
-using scene2d::testing::modelDeck2D;
+using capsula::scene2d::testing::modelDeck2D;
 
 namespace {
 
@@ -24,7 +24,7 @@ CapsuleModel2D modelOf(const Teuchos::ParameterList& deck)
 {
   return CapsuleModel2D(Teuchos::rcp(new Teuchos::SerialComm<int>), readCellSettings2D(deck.sublist("Cell")),
                         readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall")),
-                        operators::readContourDiscretisation2D(deck.sublist("Discretisation")),
+                        scene2d::readContourDiscretisation2D(deck.sublist("Discretisation")),
                         operators::readSolverParameters(deck.sublist("Solver")));
 }
 
@@ -39,7 +39,7 @@ TEST(CapsuleModel2DPrestress, InitialContourIsTheDeckShapeUnderUniformTension)
   // The same initial state as without prestress (bit for bit: the state is the deck's ellipse).
   EXPECT_EQ(model.initialState(), plain.initialState());
   const contour::Contour initial = model.contour(model.initialState());
-  const elasticity::MembraneState2D membrane = model.membrane(initial);
+  const scene2d::MembraneState2D membrane = model.membrane(initial);
   // Tension E (omega - 1) with E = 1 (loads in E/L) and omega = 1 + alpha at every node: the
   // reference is a similar contour, so to round-off (1e-12 leaves room for the spline solves).
   EXPECT_LT((membrane.tension().array() - alpha).abs().maxCoeff(), 1e-12);

@@ -6,7 +6,7 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/testing/InputErrorMessage.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
-#include <capsula/operators/KernelRegistry2D.hpp>
+#include <capsula/scene2d/KernelRegistry2D.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/scene2d/CapsuleModel2D.hpp>
 #include <capsula/scene2d/CellContour2D.hpp>
@@ -24,18 +24,18 @@ namespace {
 
 using capsula::testing::inputErrorMessage;
 
-CapsuleModel2D modelOf(const Teuchos::ParameterList& deck, const operators::KernelRegistry2D& kernels)
+CapsuleModel2D modelOf(const Teuchos::ParameterList& deck, const scene2d::KernelRegistry2D& kernels)
 {
   return CapsuleModel2D(
       Teuchos::rcp(new Teuchos::SerialComm<int>), readCellSettings2D(deck.sublist("Cell")),
       readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall"), deck.sublist("Operator"), kernels),
-      operators::readContourDiscretisation2D(deck.sublist("Discretisation")),
+      scene2d::readContourDiscretisation2D(deck.sublist("Discretisation")),
       operators::readSolverParameters(deck.sublist("Solver")), kernels);
 }
 
 TEST(KernelChoice2D, AutoFollowsTheWall)
 {
-  const auto kernels = operators::builtInKernels2D();
+  const auto kernels = scene2d::builtInKernels2D();
   EXPECT_EQ(modelOf(testing::modelDeck2D({"Cell/Number of points=32"}), kernels).kernelName(), "plane wall 2D");
   EXPECT_EQ(modelOf(testing::modelDeck2D({"Cell/Number of points=32", "Wall/Enabled=false"}), kernels).kernelName(),
             "free-space 2D");
@@ -67,13 +67,13 @@ TEST(KernelChoice2D, RegisteredKernelGetsItsSublist)
   auto received = std::make_shared<std::string>();
   auto keys = Teuchos::rcp(new Teuchos::ParameterList("Labelled"));
   core::declareString(*keys, "Label", "none", "Recorded by the factory.");
-  auto kernels = operators::builtInKernels2D();
+  auto kernels = scene2d::builtInKernels2D();
   kernels.add("Labelled", operators::KernelInfo{"Free space, labelled.", operators::FluidDomain::Unbounded, keys},
               [received](const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes,
-                         const operators::ContourDiscretisation2D& discretisation,
+                         const scene2d::ContourDiscretisation2D& discretisation,
                          const operators::SolverParameters& solver, const Teuchos::ParameterList& settings) {
                 *received = settings.get<std::string>("Label");
-                return operators::makeInterfaceVelocity2D(false, comm, numNodes, discretisation, solver);
+                return scene2d::makeInterfaceVelocity2D(false, comm, numNodes, discretisation, solver);
               });
   Teuchos::ParameterList valid("tether2d");
   declareModelParameters2D(valid, kernels);

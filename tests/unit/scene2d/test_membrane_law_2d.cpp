@@ -7,9 +7,9 @@
 #include <capsula/contour/Contour.hpp>
 #include <capsula/core/Error.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
-#include <capsula/elasticity/ElasticMembrane2D.hpp>
-#include <capsula/elasticity/MembraneLawRegistry2D.hpp>
-#include <capsula/operators/KernelRegistry2D.hpp>
+#include <capsula/scene2d/ElasticMembrane2D.hpp>
+#include <capsula/scene2d/MembraneLawRegistry2D.hpp>
+#include <capsula/scene2d/KernelRegistry2D.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/scene2d/CapsuleModel2D.hpp>
 #include <capsula/scene2d/CellContour2D.hpp>
@@ -30,7 +30,7 @@ using capsula::testing::inputErrorMessage;
 
 /// gamma = E ((omega - 1) + k (omega - 1)^3), w = E ((omega - 1)^2 / 2 + k (omega - 1)^4 / 4):
 /// a membrane that stiffens in stretch, k its 'Cubic stiffness'.
-class StiffeningLaw2D final : public elasticity::MembraneLaw2D {
+class StiffeningLaw2D final : public scene2d::MembraneLaw2D {
 public:
   StiffeningLaw2D(double modulus, double cubic) : modulus_(modulus), cubic_(cubic) {}
   std::string name() const override { return "Stiffening"; }
@@ -50,9 +50,9 @@ private:
   double cubic_;
 };
 
-elasticity::MembraneLawRegistry2D lawsWithStiffening()
+scene2d::MembraneLawRegistry2D lawsWithStiffening()
 {
-  auto laws = elasticity::builtInMembraneLaws2D();
+  auto laws = scene2d::builtInMembraneLaws2D();
   auto keys = Teuchos::rcp(new Teuchos::ParameterList("Stiffening"));
   core::declareReal(*keys, "Cubic stiffness", 1.0, "k of the stiffening law.", core::atLeast(0.0));
   laws.add("Stiffening", {"tension E ((omega - 1) + k (omega - 1)^3).", keys},
@@ -62,25 +62,25 @@ elasticity::MembraneLawRegistry2D lawsWithStiffening()
   return laws;
 }
 
-Teuchos::ParameterList deckOf(const elasticity::MembraneLawRegistry2D& laws, const std::vector<std::string>& overrides)
+Teuchos::ParameterList deckOf(const scene2d::MembraneLawRegistry2D& laws, const std::vector<std::string>& overrides)
 {
   Teuchos::ParameterList valid("tether2d");
-  declareModelParameters2D(valid, operators::builtInKernels2D(), laws);
+  declareModelParameters2D(valid, scene2d::builtInKernels2D(), laws);
   return testing::deckWith(valid, overrides);
 }
 
-CapsuleModel2D modelOf(const Teuchos::ParameterList& deck, const elasticity::MembraneLawRegistry2D& laws)
+CapsuleModel2D modelOf(const Teuchos::ParameterList& deck, const scene2d::MembraneLawRegistry2D& laws)
 {
   return CapsuleModel2D(Teuchos::rcp(new Teuchos::SerialComm<int>), readCellSettings2D(deck.sublist("Cell"), laws),
                         readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall")),
-                        operators::readContourDiscretisation2D(deck.sublist("Discretisation")),
+                        scene2d::readContourDiscretisation2D(deck.sublist("Discretisation")),
                         operators::readSolverParameters(deck.sublist("Solver")));
 }
 
 // The largest |gamma_i - expected(omega_i)| of the model's membrane on its initial state,
 // an ellipse stretched by 1 + alpha over its reference (Cell/Prestress), and the smallest
 // stretch there.
-double worstTension(const CapsuleModel2D& model, const elasticity::MembraneLaw2D& expected, double& leastStretch)
+double worstTension(const CapsuleModel2D& model, const scene2d::MembraneLaw2D& expected, double& leastStretch)
 {
   const auto state = model.membrane(model.contour(model.initialState()));
   double worst = 0.0;

@@ -5,8 +5,8 @@
 #include <capsula/contour/ContourLocation.hpp>
 #include <capsula/contour/InitialShapes.hpp>
 #include <capsula/core/Error.hpp>
-#include <capsula/elasticity/ElasticMembrane2D.hpp>
-#include <capsula/elasticity/HookeanLaw2D.hpp>
+#include <capsula/scene2d/ElasticMembrane2D.hpp>
+#include <capsula/scene2d/HookeanLaw2D.hpp>
 #include <capsula/scene2d/TetherRegrid2D.hpp>
 
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@
 using capsula::testing::pi;
 
 using namespace capsula;
-using scene2d::TetherGrading2D;
+using capsula::scene2d::TetherGrading2D;
 
 namespace {
 
@@ -108,9 +108,9 @@ TEST(TetherRegrid2D, RigidlyTurnedEllipseKeepsItsMaterialPoints)
   const double first = (regrid.referenceNodes.col(1) - regrid.referenceNodes.col(0)).norm();
   const double far = (regrid.referenceNodes.col(49) - regrid.referenceNodes.col(48)).norm();
   EXPECT_LT(first, 0.15 * far);
-  const elasticity::ElasticMembrane2D membrane(contour::Contour(regrid.referenceNodes, tethered()),
-                                               elasticity::HookeanLaw2D(1.0));
-  const elasticity::MembraneState2D state = membrane.evaluate(contour::Contour(regrid.currentNodes, tethered()));
+  const scene2d::ElasticMembrane2D membrane(contour::Contour(regrid.referenceNodes, tethered()),
+                                            scene2d::HookeanLaw2D(1.0));
+  const scene2d::MembraneState2D state = membrane.evaluate(contour::Contour(regrid.currentNodes, tethered()));
   EXPECT_LT((state.stretch().array() - 1.0).abs().maxCoeff(), 1e-5);
 }
 
@@ -138,9 +138,9 @@ TEST(TetherRegrid2D, StretchedCircleKeepsItsStretch)
     theta0 -= (theta0 + 0.3 * std::sin(theta0) + pi / 2) / (1.0 + 0.3 * std::cos(theta0));
   }
   EXPECT_NEAR(std::remainder(regrid.tetherReferenceArcLength - theta0, 2.0 * pi), 0.0, 1e-5);
-  const elasticity::ElasticMembrane2D membrane(contour::Contour(regrid.referenceNodes, tethered()),
-                                               elasticity::HookeanLaw2D(1.0));
-  const elasticity::MembraneState2D state = membrane.evaluate(contour::Contour(regrid.currentNodes, tethered()));
+  const scene2d::ElasticMembrane2D membrane(contour::Contour(regrid.referenceNodes, tethered()),
+                                            scene2d::HookeanLaw2D(1.0));
+  const scene2d::MembraneState2D state = membrane.evaluate(contour::Contour(regrid.currentNodes, tethered()));
   double worst = 0.0;
   for (int j = 1; j < n; ++j) {
     const double angle = std::atan2(regrid.referenceNodes(1, j), regrid.referenceNodes(0, j));

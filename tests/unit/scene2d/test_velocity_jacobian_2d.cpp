@@ -44,7 +44,7 @@ CapsuleModel2D jacobianModelOf(const Teuchos::ParameterList& deck)
 {
   return CapsuleModel2D(serial(), readCellSettings2D(deck.sublist("Cell")),
                         readFlowSettings2D(deck.sublist("Flow"), deck.sublist("Wall")),
-                        operators::readContourDiscretisation2D(deck.sublist("Discretisation")),
+                        scene2d::readContourDiscretisation2D(deck.sublist("Discretisation")),
                         operators::readSolverParameters(deck.sublist("Solver")));
 }
 

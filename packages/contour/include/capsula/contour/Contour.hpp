@@ -21,7 +21,7 @@
 //     O(h kappa) error into the tangents at the tether wherever the branches are curved
 //     there (the membrane's normal balance gives kappa = (Delta f . n) / gamma, not 0), so
 //     the tether force gamma t(0+) - gamma t(s_max-) is only first-order accurate; with
-//     not-a-knot ends it is third-order (tests/unit/elasticity, Tension2DLoad). Per-node values
+//     not-a-knot ends it is third-order (tests/unit/scene2d, Tension2DLoad). Per-node values
 //     of node 0 are then the limits from segment 0 (s -> 0+); the other side is
 //     pointAt(numberOfSegments() - 1, 1.0).
 #include "capsula/contour/CubicSpline.hpp"

@@ -2,7 +2,7 @@
 // Named membrane laws of one dimension: for each deck name ('Membrane law') the factory
 // that builds the law, a one-line description and the law's own deck keys (defaults,
 // validators, doc strings). MembraneLawRegistry (3D surfaces, MembraneLaw) and
-// MembraneLawRegistry2D (contours, MembraneLaw2D) are catalogues of their dimension's
+// scene2d::MembraneLawRegistry2D (contours, MembraneLaw2D) are catalogues of their dimension's
 // laws; the deck side (MembraneLawChoice.hpp) needs only the MembraneLawInfo. Nothing
 // global: the program owns the registry and decides what it holds (docs/extending.md).
 #include <capsula/core/Error.hpp>

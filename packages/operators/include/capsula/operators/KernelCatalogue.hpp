@@ -1,7 +1,7 @@
 #pragma once
 // Named Green's functions of one dimension: for each deck name ('Operator/Kernel') the
 // factory that builds its operator, the fluid domain it is for and its own deck settings.
-// KernelRegistry (3D) and KernelRegistry2D are catalogues of their dimension's factories;
+// KernelRegistry (3D) and scene2d::KernelRegistry2D are catalogues of their dimension's factories;
 // the deck side (KernelChoice.hpp) needs only the KernelInfo, whatever the dimension.
 #include <capsula/operators/RegisteredNames.hpp>
 

@@ -8,7 +8,7 @@
 // |f| <= 3 - 2 sqrt(2) = 0.1716, so f^2 <= 0.0295 and the series to f^20/21 leaves a
 // truncation below 1e-18 relative. ln 2 is split into a high part with 21 trailing zero
 // bits (e ln2hi is exact for |e| < 2^21) and the remainder. The result is within a few
-// units in the last place of std::log (tests/unit/operators, VectorisableLog).
+// units in the last place of std::log (tests/unit/scene2d, VectorisableLog).
 //
 // Valid for finite, normal x > 0 only (no checks: the callers pass squared distances or
 // their ratios, which are). The pieces are exposed so that a kernel can share the one

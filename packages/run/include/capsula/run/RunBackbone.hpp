@@ -1,7 +1,7 @@
 #pragma once
 // The run backbone: what every app's run does around its model, written once. The 3D
 // scenes (cell3d, twocell3d: SceneRun.cpp) and the 2D tethered cell (tether2d:
-// TetherRun2D.cpp) plug their model in through RunModel; the backbone owns
+// scene2d/TetherRun2D.cpp) plug their model in through RunModel; the backbone owns
 //
 //   restart        the checkpoint of --restart DIR, read and checked against the
 //                  application and the deck (RestartDeck.hpp: every key but 'Time

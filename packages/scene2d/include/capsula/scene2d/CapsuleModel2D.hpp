@@ -16,15 +16,15 @@
 // restart whose waveform file changed is refused. The regridded markers and the tether are
 // the tether procedure's to save.
 #include "capsula/scene2d/CellContour2D.hpp"
+#include "capsula/scene2d/ContourDiscretisation2D.hpp"
+#include "capsula/scene2d/ElasticMembrane2D.hpp"
 #include "capsula/scene2d/FlowModel2D.hpp"
+#include "capsula/scene2d/InterfaceVelocity2D.hpp"
+#include "capsula/scene2d/KernelRegistry2D.hpp"
+#include "capsula/scene2d/MembraneState2D.hpp"
 
 #include <capsula/contour/Contour.hpp>
-#include <capsula/elasticity/ElasticMembrane2D.hpp>
-#include <capsula/elasticity/MembraneState2D.hpp>
 #include <capsula/io/CheckpointSection.hpp>
-#include <capsula/operators/ContourDiscretisation2D.hpp>
-#include <capsula/operators/InterfaceVelocity2D.hpp>
-#include <capsula/operators/KernelRegistry2D.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 
 #include <Eigen/Core>
@@ -41,23 +41,22 @@ namespace capsula::scene2d {
 class CapsuleModel2D final : public io::CheckpointSection {
 public:
   CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const CellSettings2D& cell,
-                 const FlowSettings2D& flow, const operators::ContourDiscretisation2D& discretisation,
-                 const operators::SolverParameters& solver,
-                 operators::KernelRegistry2D kernels = operators::builtInKernels2D());
+                 const FlowSettings2D& flow, const ContourDiscretisation2D& discretisation,
+                 const operators::SolverParameters& solver, KernelRegistry2D kernels = builtInKernels2D());
 
   int numberOfNodes() const { return static_cast<int>(referenceNodes_.cols()); }
   const CellSettings2D& cell() const { return cell_; }
   const FlowSettings2D& flow() const { return flow_; }
   /// Ca, lambda and u_inf = (k(t) y, 0) at time t ('Flow/Shear rate').
-  operators::FlowConditions2D flowAt(double t) const;
-  const operators::ContourDiscretisation2D& discretisation() const { return discretisation_; }
+  FlowConditions2D flowAt(double t) const;
+  const ContourDiscretisation2D& discretisation() const { return discretisation_; }
   std::string kernelName() const { return velocity_->kernelName(); }
   /// An evaluator of the model's Green's function (FlowSettings2D::kernel) for contours of
   /// `numNodes` nodes, e.g. the stiff solver's on a frozen contour.
-  std::unique_ptr<operators::InterfaceVelocity2D>
-  makeInterfaceVelocity(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, int numNodes,
-                        const operators::ContourDiscretisation2D& discretisation,
-                        const operators::SolverParameters& solver) const;
+  std::unique_ptr<InterfaceVelocity2D> makeInterfaceVelocity(const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                                                             int numNodes,
+                                                             const ContourDiscretisation2D& discretisation,
+                                                             const operators::SolverParameters& solver) const;
   /// The terms built, one line each (the run log and summary.json print them).
   std::vector<std::string> terms() const;
 
@@ -93,11 +92,10 @@ public:
 
   /// The contour through the state's nodes (periodic, or tethered after tether()).
   contour::Contour contour(const std::vector<double>& state) const;
-  elasticity::MembraneState2D membrane(const contour::Contour& contour) const;
+  MembraneState2D membrane(const contour::Contour& contour) const;
 
   /// Node velocities at time t for a contour and its membrane state (collective).
-  operators::VelocitySolution2D velocities(double t, const contour::Contour& contour,
-                                           const elasticity::MembraneState2D& membrane);
+  VelocitySolution2D velocities(double t, const contour::Contour& contour, const MembraneState2D& membrane);
 
   /// dy/dt = u(t, y) (collective): the right-hand side of the time integration.
   void rightHandSide(double t, const std::vector<double>& state, std::vector<double>& derivative);
@@ -119,11 +117,11 @@ public:
 private:
   /// The membrane on `reference`: the tension of 'Cell/Membrane law' (E = 1), with bending
   /// when Cell/Bending modulus > 0.
-  std::unique_ptr<elasticity::ElasticMembrane2D> makeMembrane(const contour::Contour& reference) const;
+  std::unique_ptr<ElasticMembrane2D> makeMembrane(const contour::Contour& reference) const;
 
   CellSettings2D cell_;
   FlowSettings2D flow_;
-  operators::ContourDiscretisation2D discretisation_;
+  ContourDiscretisation2D discretisation_;
   std::string krylovMethod_; ///< 'Solver/Method', named in terms()
   Eigen::Matrix2Xd referenceNodes_;
   double referenceLength_ = 0.0;
@@ -132,9 +130,9 @@ private:
   Eigen::Matrix2Xd regriddedReference_;
   Eigen::Matrix2Xd freeReference_;
   bool freeRegridded_ = false;
-  std::unique_ptr<elasticity::ElasticMembrane2D> membrane_;
-  operators::KernelRegistry2D kernels_;
-  std::unique_ptr<operators::InterfaceVelocity2D> velocity_;
+  std::unique_ptr<ElasticMembrane2D> membrane_;
+  KernelRegistry2D kernels_;
+  std::unique_ptr<InterfaceVelocity2D> velocity_;
   std::optional<operators::WarmStartHistory> warmStart_;
   int lastIterations_ = 0;
 };

@@ -12,9 +12,9 @@
 //   area, area drift      enclosed area and (A - A_ref)/A_ref;
 //   D12                   Taylor deformation of the equivalent ellipse (eq A.53).
 #include "capsula/scene2d/CapsuleModel2D.hpp"
+#include "capsula/scene2d/MembraneState2D.hpp"
 
 #include <capsula/contour/Contour.hpp>
-#include <capsula/elasticity/MembraneState2D.hpp>
 
 #include <string>
 #include <vector>
@@ -46,7 +46,7 @@ ContourExtremum2D contourMaximum(const contour::Contour& contour, int axis);
 
 /// The metrics of one state. `velocities`: 2 per node, of the same state.
 CellMetrics2D cellMetrics2D(const CapsuleModel2D& model, const contour::Contour& contour,
-                            const elasticity::MembraneState2D& membrane, const std::vector<double>& velocities);
+                            const MembraneState2D& membrane, const std::vector<double>& velocities);
 
 /// metrics.csv columns after time, step and dt, in the order of metricValues().
 std::vector<std::string> metricColumns();

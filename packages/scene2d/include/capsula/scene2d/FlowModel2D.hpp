@@ -3,9 +3,10 @@
 // Flow/Shear rate: k(t) over its mean, operators/ShearRate.hpp) and whether the wall y = 0 bounds it (Wall/Enabled: Blake's 2D Green's function, thesis
 // App. B.1, or free space), and the Green's function that describes it ('Operator/Kernel',
 // operators/KernelChoice.hpp: Auto follows Wall/Enabled). Dimensionless as in the thesis: u_inf = (y, 0), time in 1/k.
-#include <capsula/operators/InterfaceVelocity2D.hpp>
+#include "capsula/scene2d/InterfaceVelocity2D.hpp"
+#include "capsula/scene2d/KernelRegistry2D.hpp"
+
 #include <capsula/operators/KernelChoice.hpp>
-#include <capsula/operators/KernelRegistry2D.hpp>
 #include <capsula/operators/ShearRate.hpp>
 
 #include <Teuchos_ParameterList.hpp>
@@ -13,8 +14,8 @@
 namespace capsula::scene2d {
 
 struct FlowSettings2D {
-  operators::FlowConditions2D conditions; ///< Ca, lambda, u_inf = (y, 0) at the mean shear rate
-  operators::ShearRate shearRate;         ///< k(t) over its mean: u_inf = (k(t) y, 0) at time t
+  FlowConditions2D conditions;    ///< Ca, lambda, u_inf = (y, 0) at the mean shear rate
+  operators::ShearRate shearRate; ///< k(t) over its mean: u_inf = (k(t) y, 0) at time t
   bool wall = true;
   operators::KernelChoice kernel{"Wall", {}}; ///< the registry name (Auto resolved) and settings
 };
@@ -29,6 +30,6 @@ void declareWallParameters2D(Teuchos::ParameterList& wall);
 /// unknown kernel or one for the other fluid domain (KernelChoice.hpp).
 FlowSettings2D readFlowSettings2D(const Teuchos::ParameterList& flow, const Teuchos::ParameterList& wall,
                                   const Teuchos::ParameterList& operatorList = {},
-                                  const operators::KernelRegistry2D& kernels = operators::builtInKernels2D());
+                                  const KernelRegistry2D& kernels = builtInKernels2D());
 
 } // namespace capsula::scene2d

@@ -31,10 +31,10 @@
 // being rebuilt. Every rank computes the same J~ v (the single layer's rows are shared and
 // gathered in a fixed order), so the solves do not depend on the number of ranks.
 #include "capsula/scene2d/CapsuleModel2D.hpp"
+#include "capsula/scene2d/InterfaceVelocity2D.hpp"
 #include "capsula/scene2d/StiffSolverParameters2D.hpp"
 
 #include <capsula/operators/DenseStagePreconditioner.hpp>
-#include <capsula/operators/InterfaceVelocity2D.hpp>
 #include <capsula/operators/StageJacobian.hpp>
 
 #include <Teuchos_Comm.hpp>
@@ -72,7 +72,7 @@ private:
 
   CapsuleModel2D& model_;
   StiffSolverSettings2D settings_;
-  std::unique_ptr<operators::InterfaceVelocity2D> velocity_; // S on the frozen contour
+  std::unique_ptr<InterfaceVelocity2D> velocity_; // S on the frozen contour
   std::optional<contour::Contour> frozen_;
   std::vector<double> frozenState_;
   std::vector<int> fixed_;
