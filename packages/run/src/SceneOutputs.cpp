@@ -1,6 +1,7 @@
 #include "capsula/run/SceneOutputs.hpp"
 
 #include "capsula/run/MetricsTable.hpp"
+#include "capsula/run/RelativeViscosity.hpp"
 #include "capsula/run/RollingStatistics.hpp"
 #include "capsula/run/SceneSnapshot.hpp"
 #include "capsula/run/SummaryJson.hpp"
@@ -264,7 +265,13 @@ bool SceneOutputs::observe(const timeint::IntegrationState& state)
         cells.push_back(&scene.cell(c));
       }
     }
-    suspensionSample = suspension_->measure(t, cells);
+    double viscosity = 0.0;
+    if (suspension_->measuresRelativeViscosity()) {
+      viscosity = relativeViscosity(scene.solver().surfaces(), operators::LoadDensity(fields.loadDensity.data()),
+                                    fields.solverVelocities.data(), scene.flowAt(t).capillaryNumber,
+                                    description_.domain, description_.flowProfile, description_.shearRate.factor(t));
+    }
+    suspensionSample = suspension_->measure(t, cells, viscosity);
     const std::vector<double> more = suspension_->row(*suspensionSample);
     row.insert(row.end(), more.begin(), more.end());
   }
@@ -421,6 +428,9 @@ void SceneOutputs::addResults(io::JsonValue& summary) const
   }
   if (suspension_) {
     suspension_->addResults(summary);
+    if (suspension_->measuresRelativeViscosity()) {
+      summary["relative viscosity"]["from"] = relativeViscosityDefinition(description_.flowProfile);
+    }
   }
   if (cellTypes_) {
     cellTypes_->addResults(summary);

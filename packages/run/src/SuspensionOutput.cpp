@@ -112,13 +112,18 @@ std::vector<std::string> SuspensionOutput::columns() const
   if (domain_.hasUpperWall()) {
     columns.push_back("cell_free_layer_upper");
   }
+  if (periodicChannel_) {
+    columns.push_back("relative_viscosity");
+  }
   return columns;
 }
 
-SuspensionSample SuspensionOutput::measure(double t, const std::vector<const mesh::SurfaceMesh*>& cells)
+SuspensionSample SuspensionOutput::measure(double t, const std::vector<const mesh::SurfaceMesh*>& cells,
+                                           double relativeViscosity)
 {
   SuspensionSample sample;
   sample.time = t;
+  sample.relativeViscosity = relativeViscosity;
   sample.profile = suspension::hematocritProfileInSlab(cells, top_, lengthX_ * lengthZ_, settings_.bins);
   sample.layer = periodicChannel_ ? suspension::cellFreeLayer(cells, domain_, settings_.columns, settings_.columns)
                                   : suspension::thinnestCellFreeLayer(cells, domain_);
@@ -127,6 +132,7 @@ SuspensionSample SuspensionOutput::measure(double t, const std::vector<const mes
     for (std::size_t k = 0; k < sum_.size(); ++k) {
       sum_[k] += sample.profile.fraction[k];
     }
+    viscositySum_ += relativeViscosity;
     ++averaged_;
   }
   return sample;
@@ -137,6 +143,9 @@ std::vector<double> SuspensionOutput::row(const SuspensionSample& sample) const
   std::vector<double> row{sample.layer.lower};
   if (domain_.hasUpperWall()) {
     row.push_back(sample.layer.upper);
+  }
+  if (periodicChannel_) {
+    row.push_back(sample.relativeViscosity);
   }
   return row;
 }
@@ -185,6 +194,14 @@ void SuspensionOutput::addResults(io::JsonValue& summary) const
   hematocrit["box"]["length z"] = lengthZ_;
   hematocrit["bin centres"] = io::JsonValue::array(binCentres());
   hematocrit["values"] = io::JsonValue::array(averageProfile());
+  if (periodicChannel_) {
+    io::JsonValue& viscosity = summary["relative viscosity"];
+    viscosity["average from"] = settings_.averageFrom;
+    viscosity["outputs averaged"] = static_cast<long long>(averaged_);
+    if (averaged_ > 0) {
+      viscosity["value"] = viscositySum_ / static_cast<double>(averaged_);
+    }
+  }
 }
 
 void SuspensionOutput::save(io::Checkpoint& checkpoint) const
@@ -193,6 +210,9 @@ void SuspensionOutput::save(io::Checkpoint& checkpoint) const
     checkpoint.arrays["suspension.hematocrit sum"] = sum_;
   }
   checkpoint.integers["suspension.outputs averaged"] = averaged_;
+  if (periodicChannel_) {
+    checkpoint.reals["suspension.relative viscosity sum"] = viscositySum_;
+  }
 }
 
 void SuspensionOutput::load(const io::Checkpoint& checkpoint, const std::string& source)
@@ -208,6 +228,13 @@ void SuspensionOutput::load(const io::Checkpoint& checkpoint, const std::string&
                                "The checkpoint '", source, "' holds a hematocrit profile of ", sum_.size(),
                                " bins, not 'Output/Suspension/Bins' = ", settings_.bins, ".");
   averaged_ = count->second;
+  if (periodicChannel_) {
+    const auto viscosity = checkpoint.reals.find("suspension.relative viscosity sum");
+    core::require<core::IoError>(viscosity != checkpoint.reals.end(), "The checkpoint '", source,
+                                 "' lacks the relative viscosity's running sum ('suspension.relative viscosity "
+                                 "sum'); it was written by a version without it.");
+    viscositySum_ = viscosity->second;
+  }
 }
 
 } // namespace capsula::run

@@ -172,22 +172,67 @@ TEST(SuspensionOutput, CellFreeLayerIsTheNearestNodesWallDistance)
   EXPECT_LT(row[1], 0.9);
 }
 
-// In a channel periodic along x and z the layer is the suspension package's column mean,
-// which for one sphere is larger than its thinnest point (most columns count H / 2).
-TEST(SuspensionOutput, PeriodicChannelTakesTheColumnMean)
+// The channel 0 < y < 6 periodic along x and z with periods 5.
+domain::Domain periodicChannel()
 {
   domain::DomainShape shape;
   shape.channelHeight = 6.0;
   shape.periodX = 5.0;
   shape.periodZ = 5.0;
-  const domain::Domain box(shape);
+  return domain::Domain(shape);
+}
+
+// In a channel periodic along x and z the layer is the suspension package's column mean,
+// which for one sphere is larger than its thinnest point (most columns count H / 2).
+TEST(SuspensionOutput, PeriodicChannelTakesTheColumnMean)
+{
+  const domain::Domain box = periodicChannel();
   run::SuspensionOutput output(settingsFor(box, [](Teuchos::ParameterList& list) { list.set("Columns", 16); }), box);
   const std::vector<mesh::SurfaceMesh> cells{sphereAt({1.0, 1.7, 2.0})};
-  const std::vector<double> row = output.row(output.measure(0.0, pointers(cells)));
+  EXPECT_EQ(output.columns(),
+            (std::vector<std::string>{"cell_free_layer_lower", "cell_free_layer_upper", "relative_viscosity"}));
+  const std::vector<double> row = output.row(output.measure(0.0, pointers(cells), 1.25));
   const suspension::CellFreeLayer columns = suspension::cellFreeLayer(pointers(cells), box, 16, 16);
   EXPECT_EQ(row[0], columns.lower);
   EXPECT_EQ(row[1], columns.upper);
+  EXPECT_EQ(row[2], 1.25);      // the relative viscosity the caller measured
   EXPECT_GT(row[0], 0.7 + 0.5); // the thinnest point is 0.7; the mean is well above
+}
+
+// The relative viscosity's mean over the window goes to summary.json and its running sum
+// through a checkpoint; a checkpoint without the sum is refused, naming it.
+TEST(SuspensionOutput, RelativeViscosityAverageContinuesAcrossACheckpoint)
+{
+  const domain::Domain box = periodicChannel();
+  const run::SuspensionOutputSettings settings =
+      settingsFor(box, [](Teuchos::ParameterList& list) { list.set("Average from", 1.0); });
+  const std::vector<mesh::SurfaceMesh> cells{sphereAt({1.0, 1.7, 2.0})};
+  run::SuspensionOutput whole(settings, box);
+  whole.measure(0.0, pointers(cells), 9.0); // before the window
+  whole.measure(1.0, pointers(cells), 1.5);
+  io::Checkpoint checkpoint;
+  whole.save(checkpoint);
+  whole.measure(2.0, pointers(cells), 1.75);
+  io::JsonValue summary;
+  whole.addResults(summary);
+  EXPECT_EQ(summary["relative viscosity"]["value"].asNumber(), 1.625);
+  EXPECT_EQ(summary["relative viscosity"]["outputs averaged"].asInteger(), 2);
+
+  run::SuspensionOutput restarted(settings, box);
+  restarted.load(checkpoint, "memory");
+  restarted.measure(2.0, pointers(cells), 1.75);
+  io::JsonValue resumed;
+  restarted.addResults(resumed);
+  EXPECT_EQ(resumed["relative viscosity"]["value"].asNumber(), 1.625);
+
+  checkpoint.reals.erase("suspension.relative viscosity sum");
+  run::SuspensionOutput old(settings, box);
+  try {
+    old.load(checkpoint, "old.h5");
+    ADD_FAILURE() << "a checkpoint without the relative viscosity's sum was read";
+  } catch (const core::IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("'suspension.relative viscosity sum'"), std::string::npos) << e.what();
+  }
 }
 
 // The average is the mean of the profiles at the outputs in the window; a run restarted from

@@ -19,9 +19,13 @@
 // 'Suspension/Hematocrit', the red cells), the profile and the layer count only the cells of
 // that 'Type', as the margination literature's red-cell-free layer does; otherwise every cell.
 //
-// The time average is the arithmetic mean of the profiles at the outputs in the window; its
-// running sum and count are checkpointed ("suspension."), so a restart continues it bit for
-// bit.
+// The relative viscosity (RelativeViscosity.hpp), in a channel periodic along x and z: from the
+// flux in Poiseuille flow, from the mean wall shear stress in Couette flow; the caller measures
+// it with the operators and hands it to measure().
+//
+// The time averages are the arithmetic means of the profiles and of the relative viscosity at
+// the outputs in the window; their running sums and count are checkpointed ("suspension."), so
+// a restart continues them bit for bit.
 #include <capsula/domain/Domain.hpp>
 #include <capsula/io/Checkpoint.hpp>
 #include <capsula/io/Json.hpp>
@@ -63,6 +67,7 @@ struct SuspensionSample {
   double time = 0.0;
   suspension::HematocritProfile profile;
   suspension::CellFreeLayer layer;
+  double relativeViscosity = 0.0; ///< in a channel periodic along x and z
 };
 
 class SuspensionOutput {
@@ -72,10 +77,15 @@ public:
 
   /// The line of the run's "Terms built" block.
   std::string term() const;
-  /// cell_free_layer_lower, and cell_free_layer_upper in a channel.
+  /// cell_free_layer_lower, and cell_free_layer_upper in a channel; relative_viscosity in a
+  /// channel periodic along x and z.
   std::vector<std::string> columns() const;
-  /// Measures `cells` at time t and adds the profile to the average if t is in its window.
-  SuspensionSample measure(double t, const std::vector<const mesh::SurfaceMesh*>& cells);
+  /// Whether measure() takes a relative viscosity (a channel periodic along x and z).
+  bool measuresRelativeViscosity() const { return periodicChannel_; }
+  /// Measures `cells` at time t and adds the profile and `relativeViscosity` (read only where
+  /// measuresRelativeViscosity()) to the averages if t is in their window.
+  SuspensionSample measure(double t, const std::vector<const mesh::SurfaceMesh*>& cells,
+                           double relativeViscosity = 0.0);
   /// The values of columns() for `sample`.
   std::vector<double> row(const SuspensionSample& sample) const;
   /// The profile as a polyline block "hematocrit" of the bin centres (0, y_k, 0) with the
@@ -86,7 +96,7 @@ public:
   std::vector<double> binCentres() const;
   std::vector<double> averageProfile() const;
   std::int64_t averagedOutputs() const { return averaged_; }
-  /// summary.json's "hematocrit".
+  /// summary.json's "hematocrit", and "relative viscosity" where measured.
   void addResults(io::JsonValue& summary) const;
 
   void save(io::Checkpoint& checkpoint) const;
@@ -98,6 +108,7 @@ private:
   double top_ = 0.0, lengthX_ = 0.0, lengthZ_ = 0.0;
   bool periodicChannel_ = false;
   std::vector<double> sum_; // of the profiles in the window
+  double viscositySum_ = 0.0;
   std::int64_t averaged_ = 0;
 };
 
