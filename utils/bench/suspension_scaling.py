@@ -11,8 +11,10 @@ one per eight red cells, at viscosity ratio 1) in the periodic Poiseuille channe
 N red cells fill the hematocrit: the box is square, L_x = L_z = sqrt(N V / (hematocrit H)) with V
 the red cell's own (faceted) volume, which the app reports when asked for a hematocrit it
 cannot meet. The platelets' shear modulus is 2 (so RK4 steps of 0.0025 are stable at level 1 and
-2), the steps are RK4 of 0.0025 (fixed: every N takes the same steps), GMRES at 1e-6, the Ewald
-sums at their default tolerance, outputs at the start and the end only.
+2), the gaps kept at placement those of the margination deck (0.05 between cells, 0.1 from the
+walls: random sequential addition jams at hematocrit 0.2 with the demo's 0.2), the steps are RK4
+of 0.0025 (fixed: every N takes the same steps), GMRES at 1e-6, the Ewald sums at their default
+tolerance, outputs at the start and the end only.
 
 Per run: the seconds of one step (the wall time of the run less its outputs, over the steps),
 the double-layer applications (GMRES iterations) per right-hand side, the single-layer and
@@ -53,7 +55,8 @@ def deck_settings(args, box):
                 "Suspension/Cell types/platelet/Shear modulus": 2,
                 "Time integration/Method": "RK4", "Time integration/Initial step": STEP,
                 "Time integration/End time": STEP * args.steps, "Output/Interval": STEP * args.steps,
-                "Output/Snapshots": "false", "Solver/Tolerance": 1e-6}
+                "Output/Snapshots": "false", "Solver/Tolerance": 1e-6,
+                "Cells/Minimum gap": 0.05, "Wall/Minimum gap": 0.1}
     return [item for key, value in settings.items() for item in ("--set", f"{key}={value}")]
 
 
