@@ -134,7 +134,7 @@ def main():
                      f"{row['applications per rhs']:.1f} | {row['single']:.1f} | {row['double']:.1f} | "
                      f"{row['memory']:.0f} |")
     counts = [r["red"] for r in rows]
-    per_cell = 10 * 4 ** args.level + 2  # nodes of a 6-node icosphere mesh of this level
+    per_cell = 10 * 4 ** (args.level + 1) + 2  # nodes of a level-L mesh of 6-node triangles (162 at 1)
     nlogn = [f"{1 + math.log(math.log(per_cell * n) / math.log(per_cell * m)) / math.log(n / m):.2f}"
              for m, n in zip(counts, counts[1:])]
     lines += ["", "growth: ln(step_N / step_M) / ln(N / M) between successive rows; the steps are fixed, so a "
