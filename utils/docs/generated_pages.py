@@ -76,6 +76,10 @@ GENERATORS.update({
         "/usr/bin/python3 utils/bench/periodic_scaling.py --build build",
         ["utils/bench/periodic_scaling.py", "apps/bench_operators/main.cpp"],
         "about 10 minutes on 1 core"),
+    "docs/figures/suspension_scaling_table.md": (
+        "/usr/bin/python3 utils/bench/suspension_scaling.py --build build",
+        ["utils/bench/suspension_scaling.py", "utils/bench/accuracy_cost_report.py", "input/suspension3d/demo.xml"],
+        "about 17 minutes on 1 core"),
     "docs/cell3d-adhesion-results.md": (
         "bash utils/studies/cell3d-adhesion.sh docs/figures",
         STUDY + ["utils/studies/cell3d-adhesion.sh", "utils/plotting/cell3d_adhesion.py", "input/cell3d/adhesion"],
