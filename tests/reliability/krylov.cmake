@@ -24,3 +24,14 @@ capsula_add_reliability_test(reliability_belos_entry_limits_the_solve EXIT_CODE 
   MATCHES "'Solver/Method' = Block GMRES for the viscosity-ratio equation stopped after 1 iterations at relative residual [^ ]+ > 'Solver/Tolerance' = 1e-09.*The entries of 'Solver/Belos' \\('Maximum Iterations'\\) take precedence over those keys\\."
   COMMAND $<TARGET_FILE:cell3d> ${_lambda5} --set "Solver/Belos/Maximum Iterations=1"
           --output ${_out}/belos_one_iteration)
+
+capsula_add_reliability_test(reliability_unknown_preconditioner_lists_the_offered_ones EXIT_CODE 2
+  MATCHES "'Solver/Preconditioner' = \"Cell block\" is invalid: it must be one of: None, Cell blocks \\(did you mean \"Cell blocks\"\\?\\)"
+  COMMAND $<TARGET_FILE:cell3d> ${_lambda5} --set "Solver/Preconditioner=Cell block" --output ${_out}/never)
+
+# With the cell blocks the solve is flexible GMRES whatever 'Solver/Method' says: the message of
+# a solve cut short names the preconditioner, not the method.
+capsula_add_reliability_test(reliability_cell_block_solve_cut_short_names_the_preconditioner EXIT_CODE 1
+  MATCHES "Flexible GMRES \\('Solver/Preconditioner' = Cell blocks\\) for the viscosity-ratio equation stopped after 1 iterations at relative residual [^ ]+ > 'Solver/Tolerance' = 1e-09"
+  COMMAND $<TARGET_FILE:cell3d> ${_lambda5} --set "Solver/Preconditioner=Cell blocks"
+          --set "Solver/Maximum iterations=1" --output ${_out}/cell_blocks_one_iteration)

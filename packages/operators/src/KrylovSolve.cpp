@@ -70,8 +70,13 @@ std::string stoppedShortMessage(const std::string& equation, const SolverParamet
                                 const KrylovResult& result)
 {
   std::ostringstream text;
-  text << "'Solver/Method' = " << parameters.method << " for " << equation << " stopped after " << result.iterations
-       << " iterations at relative residual " << result.residual << " > 'Solver/Tolerance' = " << parameters.tolerance
+  if (parameters.cellBlockPreconditioner) {
+    text << "Flexible GMRES ('Solver/Preconditioner' = " << kCellBlockPreconditioner << ")";
+  } else {
+    text << "'Solver/Method' = " << parameters.method;
+  }
+  text << " for " << equation << " stopped after " << result.iterations << " iterations at relative residual "
+       << result.residual << " > 'Solver/Tolerance' = " << parameters.tolerance
        << ". Raise 'Solver/Maximum iterations' or 'Solver/Restart', relax 'Solver/Tolerance', or choose another "
           "'Solver/Method'.";
   if (parameters.belos.numParams() > 0) {

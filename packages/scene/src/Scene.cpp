@@ -194,8 +194,9 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
       line << "viscosity ratio 1: explicit velocity (no double layer, no linear solve)";
     } else {
       line << "viscosity ratio " << describeViscosityRatios(description_) << ": double layer and Belos "
-           << solverParameters.method << " (tolerance " << solverParameters.tolerance
-           << (solverParameters.warmStart ? ", warm start" : "") << ")";
+           << (solverParameters.cellBlockPreconditioner ? "Flexible GMRES on each cell's block"
+                                                        : solverParameters.method)
+           << " (tolerance " << solverParameters.tolerance << (solverParameters.warmStart ? ", warm start" : "") << ")";
     }
     terms_.push_back(line.str());
   }

@@ -3,6 +3,7 @@
 // instantiates this template with its policy and registers solverFactory<Policy>() in a
 // KernelRegistry (docs/extending.md); nothing in this package changes.
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
+#include <capsula/operators/CellBlockPreconditioner.hpp>
 #include <capsula/operators/KrylovSolve.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/operators/LayerPotentials.hpp>
@@ -60,12 +61,16 @@ private:
                                        WarmStartHistory* history);
   void requireInFluid(const std::vector<double>& points) const;
   std::vector<double> ownedPointsShare(const std::vector<double>& points) const;
+  // 'Solver/Preconditioner' = "Cell blocks": built at the first solve after setPositions,
+  // kept for any further solve at the same geometry.
+  const Teuchos::RCP<CellBlockPreconditioner>& cellBlockPreconditioner();
 
   NodeDistribution distribution_;
   CellSurfaces surfaces_;
   SolverParameters solverParameters_;
   LayerPotentials<Kernel> potentials_;
   Teuchos::RCP<Teuchos::Time> singleLayerTimer_, solveTimer_, flowTimer_;
+  Teuchos::RCP<CellBlockPreconditioner> preconditioner_; // null: none, or not built for this geometry
 };
 
 /// The factory a KernelRegistry stores for `Kernel` (a policy without settings or state of
@@ -106,6 +111,28 @@ void KernelBoundaryIntegralSolver<Kernel>::setPositions(const double* positions)
 {
   surfaces_.setPositions(positions);
   potentials_.update(surfaces_);
+  preconditioner_ = Teuchos::null;
+}
+
+template <class Kernel>
+const Teuchos::RCP<CellBlockPreconditioner>& KernelBoundaryIntegralSolver<Kernel>::cellBlockPreconditioner()
+{
+  if (preconditioner_.is_null()) {
+    std::vector<int> offsets(surfaces_.numCells() + 1);
+    std::vector<double> scale(surfaces_.numCells());
+    for (int c = 0; c < surfaces_.numCells(); ++c) {
+      offsets[c] = surfaces_.nodeOffset(c);
+      const double lambda = surfaces_.viscosityRatio(c);
+      scale[c] = (1.0 - lambda) / (4.0 * M_PI * (1.0 + lambda)); // rowScale x densityScale (SecondKindOperator)
+    }
+    offsets.back() = surfaces_.numNodes();
+    preconditioner_ = Teuchos::rcp(new CellBlockPreconditioner(
+        distribution_.map(), std::move(offsets), std::move(scale), [this](int cell, std::vector<double>& rows) {
+          Teuchos::TimeMonitor guard(*core::timer("Cell-block preconditioner: blocks"));
+          return potentials_.cellDoubleLayerBlock(cell, rows);
+        }));
+  }
+  return preconditioner_;
 }
 
 template <class Kernel>
@@ -202,7 +229,9 @@ KernelBoundaryIntegralSolver<Kernel>::solveNodeVelocities(const LoadDensity& loa
         potentials_.doubleLayerAtNodes(density, DoubleLayerForm::Subtracted, rows);
       },
       std::move(densityScale), std::move(rowScale)));
-  const KrylovResult result = solveLinearSystem(A, b, x, solverParameters_);
+  const KrylovResult result = solverParameters_.cellBlockPreconditioner
+                                  ? solveWithFlexibleGmres(A, cellBlockPreconditioner(), b, x, solverParameters_)
+                                  : solveLinearSystem(A, b, x, solverParameters_);
   core::require<core::NumericalError>(result.converged,
                                       stoppedShortMessage("the viscosity-ratio equation", solverParameters_, result));
   solution.iterations = result.iterations;

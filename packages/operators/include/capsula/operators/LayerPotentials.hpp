@@ -113,6 +113,17 @@ public:
   /// interpolated over each element with its shape functions.
   void doubleLayerAtNodes(const double* density, DoubleLayerForm form, double* result);
 
+  /// The double layer (Subtracted form) of cell c's density alone, at the node targets of
+  /// c this rank owns, as a dense block: doubleLayerAtNodes with the density of every other
+  /// cell 0. Row 3 r + j is owned target `first + r` of c (first = the first owned node of
+  /// c), column 3 b + i node nodeOffset(c) + b; `block` is resized to (3 rows) x (3 n_c),
+  /// row-major, and returns the number of rows' nodes. The regular rule takes the pointwise
+  /// kernel, as the corrections do, so for a kernel whose regular sums are another function
+  /// (a periodic kernel's Ewald sums) the block leaves out the smooth difference between the
+  /// two: the cell's interaction with its own periodic images. For the cell-block
+  /// preconditioner of the viscosity-ratio equation (CellBlockPreconditioner.hpp).
+  int cellDoubleLayerBlock(int cell, std::vector<double>& block);
+
   /// The single layer at n arbitrary points (3 each) off the surfaces (a point on a
   /// surface gets the subdivision down to its depth limit and a meaningless value).
   void singleLayerAtPoints(const double* points, int n, const LoadDensity& load, double* result);

@@ -195,6 +195,75 @@ void LayerPotentials<Kernel>::doubleLayerAtNodes(const double* density, DoubleLa
 }
 
 template <class Kernel>
+int LayerPotentials<Kernel>::cellDoubleLayerBlock(int cell, std::vector<double>& block)
+{
+  prepareDoubleLayerCorrections();
+  const CellRange& range = cells_[cell];
+  const int first = std::max(range.firstNode, firstTarget_);
+  const int end = std::min(range.endNode, firstTarget_ + numTargets_);
+  const int rows = std::max(0, end - first);
+  const int numNodes = range.endNode - range.firstNode;
+  const std::size_t columns = 3 * static_cast<std::size_t>(numNodes);
+  block.assign(3 * static_cast<std::size_t>(rows) * columns, 0.0);
+  const double* positions = quadrature_.nodePositions().data();
+  const QuadraturePoints& p = quadrature_.points();
+  const int nq = quadrature_.pointsPerElement();
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(dynamic, 4)
+#endif
+  for (int r = 0; r < rows; ++r) {
+    const int g = first + r;
+    const double* x0 = positions + 3 * g;
+    // B_b, node b's 3x3 block (u_b,i B_ij adds to row j), node after node.
+    std::vector<double> nodeBlocks(9 * static_cast<std::size_t>(numNodes), 0.0);
+    const auto add = [&](int node, const double* B, double sign) {
+      double* target = &nodeBlocks[9 * static_cast<std::size_t>(node - range.firstNode)];
+      for (int k = 0; k < 9; ++k) {
+        target[k] += sign * B[k];
+      }
+    };
+    // The regular rule over the whole cell with the subtraction of u(x0) (eq 3.44), as the
+    // far-field sums apply it to the own cell ...
+    double subtracted[9] = {};
+    for (int m = range.firstElement; m < range.endElement; ++m) {
+      const auto& nodes = quadrature_.elements().nodes[m];
+      for (int k = 0; k < nq; ++k) {
+        const std::size_t q = static_cast<std::size_t>(m) * nq + k;
+        const double x[3] = {p.x[q], p.y[q], p.z[q]};
+        const double a[3] = {p.nx[q], p.ny[q], p.nz[q]};
+        double Tn[9] = {};
+        addDoubleLayerMatrix(kernel_, x, x0, a, Tn);
+        for (int node = 0; node < 6; ++node) {
+          add(nodes[node], Tn, p.phi[6 * q + node]);
+        }
+        detail::addScaledBlock(subtracted, Tn, 1.0);
+      }
+    }
+    add(g, subtracted, -1.0);
+    // ... the corrections on the cell's own nodes, and -4 pi u(x0).
+    const TargetCorrections& corr = corrections_[g - firstTarget_];
+    for (std::size_t e = 0; e < corr.nodes.size(); ++e) {
+      if (corr.nodes[e] >= range.firstNode && corr.nodes[e] < range.endNode) {
+        add(corr.nodes[e], &corr.dbl[9 * e], 1.0);
+      }
+    }
+    add(g, corr.self, 1.0);
+    const double identity[9] = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
+    add(g, identity, -4.0 * M_PI);
+    // Entry (3 r + j, 3 b + i) = (B_b)_ij.
+    for (int j = 0; j < 3; ++j) {
+      double* row = block.data() + (3 * static_cast<std::size_t>(r) + j) * columns;
+      for (int b = 0; b < numNodes; ++b) {
+        for (int i = 0; i < 3; ++i) {
+          row[3 * b + i] = nodeBlocks[9 * static_cast<std::size_t>(b) + 3 * i + j];
+        }
+      }
+    }
+  }
+  return rows;
+}
+
+template <class Kernel>
 template <class AddNear>
 void LayerPotentials<Kernel>::addNearCorrectionsAtPoints(const double* points, int n, const std::vector<double>& far,
                                                          double* result, const AddNear& addNear) const

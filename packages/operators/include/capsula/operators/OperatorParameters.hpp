@@ -50,7 +50,15 @@ struct SolverParameters {
   bool warmStart = false;
   /// Solve iteratively even when every viscosity ratio is 1 (for tests; not a deck key).
   bool alwaysIterate = false;
+  /// Precondition the solve by each cell's own block, inverted (CellBlockPreconditioner.hpp;
+  /// the 3D deck's 'Solver/Preconditioner' = "Cell blocks"): flexible GMRES then replaces
+  /// `method` and `belos`.
+  bool cellBlockPreconditioner = false;
 };
+
+/// The values of 'Solver/Preconditioner'.
+inline constexpr const char* kNoPreconditioner = "None";
+inline constexpr const char* kCellBlockPreconditioner = "Cell blocks";
 
 /// Declares Quadrature points, Singular quadrature points, Near-singular tolerance,
 /// Near-singular distance and Regular neighbour rings in `discretisation`.
