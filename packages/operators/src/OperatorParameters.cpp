@@ -91,7 +91,7 @@ void declareSolverKeys(Teuchos::ParameterList& solver, double defaultTolerance, 
                         "How the viscosity-ratio equation is preconditioned. \"None\": the method of "
                         "'Solver/Method' on the equation as it is. \"Cell blocks\": each cell's own double "
                         "layer on itself, a dense block per cell at a viscosity ratio other than 1, "
-                        "LU-factorised once per geometry and applied on the right of flexible GMRES "
+                        "LU-factorised at each time step's first solve and applied on the right of flexible GMRES "
                         "(which then replaces 'Method' and 'Belos'; 'Tolerance' keeps its meaning). It "
                         "cuts the iterations of crowded scenes (docs/operators.md, \"Cell-block "
                         "preconditioner\") for (3 n)^2 floats per cell of n nodes (15 MB at mesh level 2).");

@@ -32,6 +32,7 @@ timeint::ObserverVerdict RunScene::afterStep(timeint::IntegrationState& state, c
   regulariseMeshes(state);
   adaptMeshes(state);
   updateBonds(state, report.stepSize);
+  scene_->startStep();
   return timeint::ObserverVerdict::Continue;
 }
 

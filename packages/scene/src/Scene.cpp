@@ -142,7 +142,8 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
 
   // Membranes.
   const auto discretisation = operators::readDiscretisationParameters(deck.sublist("Discretisation"));
-  const auto solverParameters = operators::readSolverParameters(deck.sublist("Solver"));
+  auto solverParameters = operators::readSolverParameters(deck.sublist("Solver"));
+  solverParameters.preconditionerRefresh = operators::SolverParameters::PreconditionerRefresh::OnRequest; // startStep
   elasticity::MembraneDiscretisation membraneDiscretisation;
   membraneDiscretisation.numQuadraturePoints = discretisation.quadraturePoints;
   for (int c = 0; c < n; ++c) {

@@ -56,6 +56,12 @@ public:
   /// quadrature caches. Throws core::InputError if a node leaves the fluid domain.
   virtual void setPositions(const double* positions) = 0;
 
+  /// Rebuild the preconditioner of the viscosity-ratio equation, if it has one, at the next
+  /// solve (SolverParameters::preconditionerRefresh). Until then a solve at a new geometry
+  /// keeps the blocks of the geometry they were built at: they steer the iteration only, the
+  /// solution is the tolerance's either way.
+  virtual void refreshPreconditioner() {}
+
   /// The velocity of every node (eq above) for the membrane load `load` (LoadDensity.hpp:
   /// Delta f at the nodes of every element, global numbering). `initialGuess` (3 per node, or null: the right-hand
   /// side) starts the Krylov solve when some lambda != 1. Collective; throws

@@ -37,6 +37,7 @@ public:
   int numOwnedNodes() const override { return distribution_.numOwnedNodes(); }
 
   void setPositions(const double* positions) override;
+  void refreshPreconditioner() override { preconditioner_ = Teuchos::null; }
   VelocitySolution nodeVelocities(const LoadDensity& load, const FlowConditions& flow,
                                   const double* initialGuess = nullptr) override;
   VelocitySolution nodeVelocities(const LoadDensity& load, const FlowConditions& flow,
@@ -61,8 +62,8 @@ private:
                                        WarmStartHistory* history);
   void requireInFluid(const std::vector<double>& points) const;
   std::vector<double> ownedPointsShare(const std::vector<double>& points) const;
-  // 'Solver/Preconditioner' = "Cell blocks": built at the first solve after setPositions,
-  // kept for any further solve at the same geometry.
+  // 'Solver/Preconditioner' = "Cell blocks": built at the first solve after setPositions
+  // or refreshPreconditioner (SolverParameters::preconditionerRefresh), kept until then.
   const Teuchos::RCP<CellBlockPreconditioner>& cellBlockPreconditioner();
 
   NodeDistribution distribution_;
@@ -70,7 +71,7 @@ private:
   SolverParameters solverParameters_;
   LayerPotentials<Kernel> potentials_;
   Teuchos::RCP<Teuchos::Time> singleLayerTimer_, solveTimer_, flowTimer_;
-  Teuchos::RCP<CellBlockPreconditioner> preconditioner_; // null: none, or not built for this geometry
+  Teuchos::RCP<CellBlockPreconditioner> preconditioner_; // null: none, or to be built at the next solve
 };
 
 /// The factory a KernelRegistry stores for `Kernel` (a policy without settings or state of
@@ -111,7 +112,9 @@ void KernelBoundaryIntegralSolver<Kernel>::setPositions(const double* positions)
 {
   surfaces_.setPositions(positions);
   potentials_.update(surfaces_);
-  preconditioner_ = Teuchos::null;
+  if (solverParameters_.preconditionerRefresh == SolverParameters::PreconditionerRefresh::EveryGeometry) {
+    preconditioner_ = Teuchos::null;
+  }
 }
 
 template <class Kernel>

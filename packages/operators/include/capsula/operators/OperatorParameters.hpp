@@ -54,6 +54,11 @@ struct SolverParameters {
   /// the 3D deck's 'Solver/Preconditioner' = "Cell blocks"): flexible GMRES then replaces
   /// `method` and `belos`.
   bool cellBlockPreconditioner = false;
+  /// When the cell blocks are rebuilt: at the first solve after every move of the nodes, or
+  /// only after BoundaryIntegralSolver::refreshPreconditioner() (a time integration's step
+  /// starts, scene::Scene; not a deck key).
+  enum class PreconditionerRefresh { EveryGeometry, OnRequest };
+  PreconditionerRefresh preconditionerRefresh = PreconditionerRefresh::EveryGeometry;
 };
 
 /// The values of 'Solver/Preconditioner'.

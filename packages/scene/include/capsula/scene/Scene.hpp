@@ -171,6 +171,12 @@ public:
   /// Throws core::InputError if they do not fit this scene's nodes.
   void restoreGmresWarmStart(const std::vector<double>& rightHandSides, const std::vector<double>& solutions);
 
+  /// A time step begins: the cell-block preconditioner ('Solver/Preconditioner') is rebuilt
+  /// at the next solve and kept through the step's stages (their geometries differ by the
+  /// step only). A restarted run begins at a step, so it rebuilds where the uninterrupted run
+  /// did and repeats it bit for bit.
+  void startStep() { solver_->refreshPreconditioner(); }
+
   /// True if the deck enables 'Adhesion': the cells carry receptors and bonds.
   bool hasBonds() const { return external_->hasBonds(); }
   /// The bonds (only with hasBonds()).
