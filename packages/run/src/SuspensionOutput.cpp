@@ -3,6 +3,7 @@
 #include <capsula/core/Error.hpp>
 #include <capsula/core/ParameterDeclaration.hpp>
 
+#include <cmath>
 #include <sstream>
 
 namespace capsula::run {
@@ -132,7 +133,10 @@ SuspensionSample SuspensionOutput::measure(double t, const std::vector<const mes
     for (std::size_t k = 0; k < sum_.size(); ++k) {
       sum_[k] += sample.profile.fraction[k];
     }
-    viscositySum_ += relativeViscosity;
+    if (std::isfinite(relativeViscosity)) {
+      viscositySum_ += relativeViscosity;
+      ++viscosityAveraged_;
+    }
     ++averaged_;
   }
   return sample;
@@ -197,9 +201,9 @@ void SuspensionOutput::addResults(io::JsonValue& summary) const
   if (periodicChannel_) {
     io::JsonValue& viscosity = summary["relative viscosity"];
     viscosity["average from"] = settings_.averageFrom;
-    viscosity["outputs averaged"] = static_cast<long long>(averaged_);
-    if (averaged_ > 0) {
-      viscosity["value"] = viscositySum_ / static_cast<double>(averaged_);
+    viscosity["outputs averaged"] = static_cast<long long>(viscosityAveraged_);
+    if (viscosityAveraged_ > 0) {
+      viscosity["value"] = viscositySum_ / static_cast<double>(viscosityAveraged_);
     }
   }
 }
@@ -212,6 +216,7 @@ void SuspensionOutput::save(io::Checkpoint& checkpoint) const
   checkpoint.integers["suspension.outputs averaged"] = averaged_;
   if (periodicChannel_) {
     checkpoint.reals["suspension.relative viscosity sum"] = viscositySum_;
+    checkpoint.integers["suspension.relative viscosity outputs"] = viscosityAveraged_;
   }
 }
 
@@ -234,6 +239,9 @@ void SuspensionOutput::load(const io::Checkpoint& checkpoint, const std::string&
                                  "' lacks the relative viscosity's running sum ('suspension.relative viscosity "
                                  "sum'); it was written by a version without it.");
     viscositySum_ = viscosity->second;
+    // A checkpoint written before the count was kept summed every output of the window.
+    const auto outputs = checkpoint.integers.find("suspension.relative viscosity outputs");
+    viscosityAveraged_ = outputs == checkpoint.integers.end() ? averaged_ : outputs->second;
   }
 }
 

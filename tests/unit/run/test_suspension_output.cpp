@@ -13,6 +13,7 @@
 #include <capsula/io/SnapshotFile.hpp>
 #include <capsula/mesh/Placement.hpp>
 #include <capsula/mesh/Shapes.hpp>
+#include <capsula/run/RelativeViscosity.hpp>
 #include <capsula/run/SuspensionOutput.hpp>
 #include <capsula/suspension/FlatFacets.hpp>
 
@@ -232,6 +233,41 @@ TEST(SuspensionOutput, RelativeViscosityAverageContinuesAcrossACheckpoint)
     ADD_FAILURE() << "a checkpoint without the relative viscosity's sum was read";
   } catch (const core::IoError& e) {
     EXPECT_NE(std::string(e.what()).find("'suspension.relative viscosity sum'"), std::string::npos) << e.what();
+  }
+}
+
+// A pulsatile flow passes through rest: at k(t) = 0 the relative viscosity is undefined (NaN
+// in the output's row). Summed into the window's mean it made the mean NaN for the rest of the
+// run; it stays out of it, and the count of outputs it averages says so, across a checkpoint.
+TEST(SuspensionOutput, RelativeViscosityAverageSkipsAnInstantAtRest)
+{
+  const domain::Domain box = periodicChannel();
+  const std::vector<mesh::SurfaceMesh> cells{sphereAt({1.0, 1.7, 2.0})};
+  const capsula::operators::CellSurfaces surfaces(cells, 1.0);
+  const auto load = capsula::operators::LoadDensity::constantOverElements(
+      std::vector<double>(3 * static_cast<std::size_t>(surfaces.cell(0).numElements()), 0.0));
+  for (const auto kind : {domain::FlowProfileKind::Poiseuille, domain::FlowProfileKind::Shear}) {
+    const domain::FlowProfile profile(kind, box);
+    EXPECT_TRUE(std::isnan(run::relativeViscosity(surfaces, load, nullptr, 0.1, box, profile, 0.0)));
+    // An unloaded cell at lambda = 1 does not disturb the flow: exactly 1 at any k(t) != 0.
+    EXPECT_EQ(run::relativeViscosity(surfaces, load, nullptr, 0.1, box, profile, -0.5), 1.0);
+  }
+
+  const run::SuspensionOutputSettings settings = settingsFor(box, [](Teuchos::ParameterList&) {});
+  run::SuspensionOutput output(settings, box);
+  output.measure(0.0, pointers(cells), 1.5);
+  output.measure(1.0, pointers(cells), std::numeric_limits<double>::quiet_NaN());
+  io::Checkpoint checkpoint;
+  output.save(checkpoint);
+  run::SuspensionOutput restarted(settings, box);
+  restarted.load(checkpoint, "memory");
+  for (run::SuspensionOutput* o : {&output, &restarted}) {
+    o->measure(2.0, pointers(cells), 1.75);
+    io::JsonValue summary;
+    o->addResults(summary);
+    EXPECT_EQ(summary["relative viscosity"]["value"].asNumber(), 1.625);
+    EXPECT_EQ(summary["relative viscosity"]["outputs averaged"].asInteger(), 2);
+    EXPECT_EQ(summary["hematocrit"]["outputs averaged"].asInteger(), 3); // the profile has all three
   }
 }
 

@@ -110,6 +110,9 @@ private:
   std::vector<double> sum_; // of the profiles in the window
   double viscositySum_ = 0.0;
   std::int64_t averaged_ = 0;
+  // Outputs in the window with a relative viscosity: an instant of a pulsatile flow at rest
+  // has none (NaN) and stays out of its mean.
+  std::int64_t viscosityAveraged_ = 0;
 };
 
 } // namespace capsula::run
