@@ -108,13 +108,20 @@ CellBlockPreconditioner::CellBlockPreconditioner(Teuchos::RCP<const Map> map, st
       offset += n * n;
     }
   }
+  // PartialPivLU does not report a zero pivot (nor NaN in the block): look at U's diagonal.
+  // Every rank learns of a bad block, so that all of them throw and none waits in
+  // the solve's next collective.
+  int singular = -1;
   for (const Block& block : blocks_) {
-    // PartialPivLU does not report a zero pivot (nor NaN in the block): look at U's diagonal.
     const Eigen::VectorXf pivots = block.lu.matrixLU().diagonal().cwiseAbs();
-    core::require<core::NumericalError>(pivots.allFinite() && pivots.minCoeff() > 0.0f,
-                                        "The cell-block preconditioner's block of cell ", block.cell,
-                                        " is singular or not finite ('Solver/Preconditioner').");
+    if (!(pivots.allFinite() && pivots.minCoeff() > 0.0f) && singular < 0) {
+      singular = block.cell;
+    }
   }
+  int first = -1;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, singular, Teuchos::outArg(first));
+  core::require<core::NumericalError>(first < 0, "The cell-block preconditioner's block of cell ", first,
+                                      " is singular or not finite ('Solver/Preconditioner').");
 }
 
 void CellBlockPreconditioner::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode, double alpha,
