@@ -31,20 +31,27 @@ add_test(NAME regression_suspension3d_goldens
           cell_free_layer_upper=2.95962676998557:1e-8 relative_viscosity=1.0359125729696543:1e-8)
 set_tests_properties(regression_suspension3d_goldens PROPERTIES FIXTURES_REQUIRED suspension3d_one_rank
   LABELS regression)
-# 1 vs 2 ranks: the same cells (placed on every rank from the same seed) and the same motion,
-# to the 1e-8 margin of the other 1 vs 2 rank comparisons (regression_periodic_crossing).
-capsula_add_mpi_command_test(regression_suspension3d_two_ranks
-  COMMAND $<TARGET_FILE:suspension3d> ${_suspension_run} --set "Time integration/End time=0.005"
-          --output ${_suspension_out}/two_ranks
-  LABELS regression TIMEOUT 600)
-set_tests_properties(regression_suspension3d_two_ranks PROPERTIES FIXTURES_SETUP suspension3d_two_ranks)
-add_test(NAME regression_suspension3d_one_and_two_ranks_agree
-  COMMAND check_metrics shifted ${_suspension_out}/one_rank/metrics.csv ${_suspension_out}/two_ranks/metrics.csv
-          x_c_0=0:1e-8 x_c_2=0:1e-8 y_c_0=0:1e-8 y_c_2=0:1e-8 D12_0=0:1e-8 u_mean_red_cell=0:1e-8
-          u_mean_platelet=0:1e-8 cell_free_layer_lower=0:1e-8 cell_free_layer_upper=0:1e-8
-          relative_viscosity=0:1e-8)
-set_tests_properties(regression_suspension3d_one_and_two_ranks_agree PROPERTIES
-  FIXTURES_REQUIRED "suspension3d_one_rank;suspension3d_two_ranks" LABELS "mpi;regression")
+# 1 vs 2 ranks: `<name>_two_ranks` runs the case of `<name>` (its output folder `<case>`,
+# its fixture suspension3d_<case>, the extra arguments after the tolerance) on 2 ranks, and
+# `<name>_one_and_two_ranks_agree` holds every column below to `tolerance` between the two.
+function(_suspension3d_on_two_ranks name case tolerance)
+  set(columns x_c_0 x_c_2 y_c_0 y_c_2 D12_0 u_mean_red_cell u_mean_platelet cell_free_layer_lower
+      cell_free_layer_upper relative_viscosity)
+  list(TRANSFORM columns APPEND "=0:${tolerance}")
+  capsula_add_mpi_command_test(${name}_two_ranks
+    COMMAND $<TARGET_FILE:suspension3d> ${_suspension_run} --set "Time integration/End time=0.005" ${ARGN}
+            --output ${_suspension_out}/${case}_two_ranks
+    LABELS regression TIMEOUT 600)
+  set_tests_properties(${name}_two_ranks PROPERTIES FIXTURES_SETUP suspension3d_${case}_two_ranks)
+  add_test(NAME ${name}_one_and_two_ranks_agree
+    COMMAND check_metrics shifted ${_suspension_out}/${case}/metrics.csv
+            ${_suspension_out}/${case}_two_ranks/metrics.csv ${columns})
+  set_tests_properties(${name}_one_and_two_ranks_agree PROPERTIES
+    FIXTURES_REQUIRED "suspension3d_${case};suspension3d_${case}_two_ranks" LABELS "mpi;regression")
+endfunction()
+# The same cells (placed on every rank from the same seed) and the same motion, to the 1e-8
+# margin of the other 1 vs 2 rank comparisons (regression_periodic_crossing).
+_suspension3d_on_two_ranks(regression_suspension3d one_rank 1e-8)
 # A restart places the same cells again and continues bit for bit: one step, then the second
 # from the checkpoint, against the uninterrupted run, every number of metrics.csv equal.
 add_test(NAME regression_suspension3d_restart_source
@@ -79,17 +86,5 @@ add_test(NAME regression_suspension3d_cell_blocks_solve_the_same_equation
           relative_viscosity=0:5e-7)
 set_tests_properties(regression_suspension3d_cell_blocks_solve_the_same_equation PROPERTIES
   FIXTURES_REQUIRED "suspension3d_one_rank;suspension3d_cell_blocks" LABELS regression)
-capsula_add_mpi_command_test(regression_suspension3d_cell_blocks_two_ranks
-  COMMAND $<TARGET_FILE:suspension3d> ${_suspension_run} --set "Time integration/End time=0.005"
-          --set "Solver/Preconditioner=Cell blocks" --output ${_suspension_out}/cell_blocks_two_ranks
-  LABELS regression TIMEOUT 600)
-set_tests_properties(regression_suspension3d_cell_blocks_two_ranks PROPERTIES
-  FIXTURES_SETUP suspension3d_cell_blocks_two_ranks)
-add_test(NAME regression_suspension3d_cell_blocks_one_and_two_ranks_agree
-  COMMAND check_metrics shifted ${_suspension_out}/cell_blocks/metrics.csv
-          ${_suspension_out}/cell_blocks_two_ranks/metrics.csv
-          x_c_0=0:1e-10 x_c_2=0:1e-10 y_c_0=0:1e-10 y_c_2=0:1e-10 D12_0=0:1e-10 u_mean_red_cell=0:1e-10
-          u_mean_platelet=0:1e-10 cell_free_layer_lower=0:1e-10 cell_free_layer_upper=0:1e-10
-          relative_viscosity=0:1e-10)
-set_tests_properties(regression_suspension3d_cell_blocks_one_and_two_ranks_agree PROPERTIES
-  FIXTURES_REQUIRED "suspension3d_cell_blocks;suspension3d_cell_blocks_two_ranks" LABELS "mpi;regression")
+_suspension3d_on_two_ranks(regression_suspension3d_cell_blocks cell_blocks 1e-10
+  --set "Solver/Preconditioner=Cell blocks")
