@@ -72,8 +72,11 @@ set_tests_properties(regression_suspension3d_restart_is_bit_for_bit PROPERTIES
 # applications against 112): the same equation solved to the same tolerance 1e-6, so the
 # same motion within what that tolerance allows. Measured against the plain run: centroids
 # and D12 2.9e-9, the mean velocities 4.8e-7 (0.5 x the tolerance), the relative viscosity
-# 5e-8, the cell-free layers 1.9e-10. On 2 ranks the blocks are the same and so are the runs
-# (7e-12 in the velocities, round-off of the distributed sums): held to 1e-10.
+# 5e-8, the cell-free layers 1.9e-10. On 2 ranks the blocks are the same and the runs differ
+# by the round-off of the distributed sums, carried through GMRES: up to 1e-10 in the
+# platelet's velocity (summing the Ewald grids in another order on one rank moves it as much,
+# 9e-11). Held to 1e-8 as the plain run: 100 times below the solve's tolerance, which a block
+# that differed between the ranks would reach.
 add_test(NAME regression_suspension3d_cell_blocks
   COMMAND suspension3d ${_suspension_run} --set "Time integration/End time=0.005"
           --set "Solver/Preconditioner=Cell blocks" --output ${_suspension_out}/cell_blocks)
@@ -86,5 +89,5 @@ add_test(NAME regression_suspension3d_cell_blocks_solve_the_same_equation
           relative_viscosity=0:5e-7)
 set_tests_properties(regression_suspension3d_cell_blocks_solve_the_same_equation PROPERTIES
   FIXTURES_REQUIRED "suspension3d_one_rank;suspension3d_cell_blocks" LABELS regression)
-_suspension3d_on_two_ranks(regression_suspension3d_cell_blocks cell_blocks 1e-10
+_suspension3d_on_two_ranks(regression_suspension3d_cell_blocks cell_blocks 1e-8
   --set "Solver/Preconditioner=Cell blocks")

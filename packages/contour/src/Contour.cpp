@@ -1,6 +1,7 @@
 #include "capsula/contour/Contour.hpp"
 
 #include <capsula/core/Error.hpp>
+#include <capsula/core/KernelClones.hpp>
 
 #include <cmath>
 #include <cstddef>
@@ -31,13 +32,7 @@ Eigen::Matrix2Xd validatedNodes(Eigen::Matrix2Xd nodes)
 
 // The arc-length sum runs for every load evaluation of the 2D single layer (several
 // thousand per right-hand side), so, as the operators' hot loops (RegularSums.hpp), it is
-// also compiled for AVX2 and AVX-512 and the widest one the CPU has is picked at start.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && (__GNUC__ >= 11) &&       \
-    !defined(CAPSULA_NO_KERNEL_CLONES)
-#define CAPSULA_CONTOUR_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define CAPSULA_CONTOUR_CLONES
-#endif
+// also compiled for AVX2 and AVX-512 (core/KernelClones.hpp).
 
 /// sum_q w_q |dx/ds| at ds = t tau_q span (Contour::arcLengthAt). |dx/ds| by
 /// sqrt(x'^2 + y'^2), not std::hypot: the derivatives are O(1), so nothing can overflow,
@@ -45,8 +40,8 @@ Eigen::Matrix2Xd validatedNodes(Eigen::Matrix2Xd nodes)
 /// without dependencies (it vectorises: -fno-math-errno in CMakeLists.txt), then summed in
 /// order. Built without fused multiply-adds (CMakeLists.txt), so every clone returns the same
 /// bits.
-CAPSULA_CONTOUR_CLONES double gaussSpeedSum(const double* tau, const double* weight, std::size_t points, double t,
-                                            double span, const CubicPiece& px, const CubicPiece& py)
+CAPSULA_KERNEL_CLONES double gaussSpeedSum(const double* tau, const double* weight, std::size_t points, double t,
+                                           double span, const CubicPiece& px, const CubicPiece& py)
 {
   double speed[64]; // points <= 64 (validatedOptions)
   for (std::size_t q = 0; q < points; ++q) {

@@ -8,6 +8,7 @@
 // profile Kernel::zeroModeProfile, then combined by Kernel::combineZeroMode), and gathered at
 // the targets.
 #include "FftwGrids.hpp"
+#include "GaussianGridding.hpp"
 
 #include "capsula/ewald/SpectralEwald2P.hpp"
 
@@ -20,72 +21,6 @@
 #include <vector>
 
 namespace capsula::ewald::detail {
-
-/// The grid points a Gaussian centred at x reaches along one axis: first index (unwrapped) and
-/// the weights e^{-alpha (x_i - x)^2}.
-struct AxisStencil {
-  int first = 0;
-  std::vector<double> weight;
-};
-
-inline AxisStencil axisStencil(double x, double origin, double spacing, double radius, double alpha)
-{
-  AxisStencil s;
-  s.first = static_cast<int>(std::ceil((x - radius - origin) / spacing));
-  const int last = static_cast<int>(std::floor((x + radius - origin) / spacing));
-  for (int i = s.first; i <= last; ++i) {
-    const double d = origin + i * spacing - x;
-    s.weight.push_back(std::exp(-alpha * d * d));
-  }
-  return s;
-}
-
-/// visit(grid index, weight) over the grid points of the normalised Gaussian at x.
-template <class Visit>
-void forEachGridPoint(const SpectralEwaldSettings& s, const double* x, Visit visit)
-{
-  constexpr double enginePi = 3.14159265358979323846;
-  const double alpha = s.gaussianExponent;
-  const AxisStencil sx = axisStencil(x[0], 0.0, s.spacingX, s.supportRadius, alpha);
-  const AxisStencil sy = axisStencil(x[1], s.yOrigin, s.spacingY, s.supportRadius, alpha);
-  const AxisStencil sz = axisStencil(x[2], 0.0, s.spacingZ, s.supportRadius, alpha);
-  const double normalisation = std::pow(alpha / enginePi, 1.5);
-  // The wrapped z indices once per point, not once per grid point (an integer division each).
-  const std::size_t countZ = sz.weight.size();
-  std::vector<int> wrappedZ(countZ);
-  for (std::size_t c = 0; c < countZ; ++c) {
-    wrappedZ[c] = ((sz.first + static_cast<int>(c)) % s.gridZ + s.gridZ) % s.gridZ;
-  }
-  for (std::size_t b = 0; b < sy.weight.size(); ++b) {
-    const int j = sy.first + static_cast<int>(b);
-    for (std::size_t a = 0; a < sx.weight.size(); ++a) {
-      const int i = ((sx.first + static_cast<int>(a)) % s.gridX + s.gridX) % s.gridX;
-      const double wxy = normalisation * sx.weight[a] * sy.weight[b];
-      const std::size_t row = (static_cast<std::size_t>(j) * s.gridX + i) * s.gridZ;
-      for (std::size_t c = 0; c < countZ; ++c) {
-        visit(row + wrappedZ[c], wxy * sz.weight[c]);
-      }
-    }
-  }
-}
-
-/// The points (3 numbers each) in the order of their grid rows (y level, then x index), so that
-/// consecutive spreading and gathering touch neighbouring memory.
-inline std::vector<std::size_t> gridOrder(const SpectralEwaldSettings& s, const std::vector<double>& points)
-{
-  const std::size_t count = points.size() / 3;
-  std::vector<std::size_t> order(count);
-  std::vector<long long> key(count);
-  for (std::size_t n = 0; n < count; ++n) {
-    order[n] = n;
-    const double xFolded = points[3 * n] - s.gridX * s.spacingX * std::floor(points[3 * n] / (s.gridX * s.spacingX));
-    const long long i = static_cast<long long>(xFolded / s.spacingX);
-    const long long j = static_cast<long long>(std::floor((points[3 * n + 1] - s.yOrigin) / s.spacingY));
-    key[n] = j * (s.gridX + 1) + i;
-  }
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
-  return order;
-}
 
 /// Signed wavenumber index of FFT index i on n points; n / 2 (Nyquist, even n) returns n.
 inline int signedIndex(int i, int n)
@@ -267,14 +202,11 @@ void addSmoothPart(const PeriodicLayer& layer, const SpectralEwaldSettings& s, c
   for (auto& component : fieldSpectrum) {
     component = makeComplexGrid(modes);
   }
-  for (std::size_t n : gridOrder(s, sources)) {
-    const double* q = &densities[C * n];
-    forEachGridPoint(s, &sources[3 * n], [&](std::size_t index, double weight) {
-      for (int c = 0; c < C; ++c) {
-        spread[c][index] += weight * q[c];
-      }
-    });
+  std::vector<double*> spreadGrids;
+  for (auto& grid : spread) {
+    spreadGrids.push_back(grid.get());
   }
+  spreadOnGrid(s, sources, densities, C, spreadGrids.data());
   // FFTW_ESTIMATE plans do not touch the arrays; an out-of-place r2c keeps its input (the zero
   // mode needs it). The 2D transforms in x and z run on every y-level (contiguous planes).
   const int n[2] = {s.gridX, s.gridZ};
@@ -293,18 +225,8 @@ void addSmoothPart(const PeriodicLayer& layer, const SpectralEwaldSettings& s, c
     fftw_destroy_plan(backward);
   }
   addZeroMode<Kernel>(layer, s, spread, field);
-  const double cellVolume = s.spacingX * s.spacingY * s.spacingZ;
-  for (std::size_t t : gridOrder(s, targets)) {
-    double u[3] = {0.0, 0.0, 0.0};
-    forEachGridPoint(s, &targets[3 * t], [&](std::size_t index, double weight) {
-      for (int c = 0; c < 3; ++c) {
-        u[c] += weight * field[c][index];
-      }
-    });
-    for (int c = 0; c < 3; ++c) {
-      velocities[3 * t + c] += cellVolume * u[c];
-    }
-  }
+  const double* fieldGrids[3] = {field[0].get(), field[1].get(), field[2].get()};
+  gatherFromGrid(s, targets, fieldGrids, s.spacingX * s.spacingY * s.spacingZ, velocities);
 }
 
 } // namespace capsula::ewald::detail

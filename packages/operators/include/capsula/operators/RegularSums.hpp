@@ -6,21 +6,14 @@
 // reassociating floating-point sums (each target adds its terms in source order, the
 // same on any number of ranks). Targets sit in a fixed-size block of arrays padded to a
 // multiple of the vector width by repeating the last target; the sources are read once
-// per point and broadcast. On x86-64 Linux with GCC the loops are also compiled for
-// AVX2 and AVX-512 and the widest one the CPU supports is picked when the program
-// starts (target_clones): the build flags stay portable. The translation units that
-// instantiate these templates need -fno-math-errno, or sqrt blocks vectorisation.
+// per point and broadcast. The loops are also compiled for AVX2 and AVX-512
+// (core/KernelClones.hpp). The translation units that instantiate these templates need
+// -fno-math-errno, or sqrt blocks vectorisation.
+#include <capsula/core/KernelClones.hpp>
 #include <capsula/operators/KernelTraits.hpp>
 
 #include <algorithm>
 #include <type_traits>
-
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && (__GNUC__ >= 11) &&       \
-    !defined(CAPSULA_NO_KERNEL_CLONES)
-#define CAPSULA_KERNEL_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define CAPSULA_KERNEL_CLONES
-#endif
 
 namespace capsula::operators {
 

@@ -16,7 +16,8 @@
 // greens::stokesletWall2D / stokesletFreeSpace2D by tests/unit/scene2d, RegularSums2D),
 // and for the double-layer weights W_ij = T_ijk a_k of SplineDoubleLayer2D (pinned against
 // greens::stressletWall2D / stressletFreeSpace2D).
-#include <capsula/operators/RegularSums.hpp> // CAPSULA_KERNEL_CLONES
+#include <capsula/core/KernelClones.hpp>
+#include <capsula/operators/RegularSums.hpp> // targetLaneMultiple
 #include <capsula/operators/VectorisableLog.hpp>
 
 namespace capsula::scene2d {
