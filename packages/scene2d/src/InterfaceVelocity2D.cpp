@@ -3,10 +3,7 @@
 #include "capsula/scene2d/LayerPotentials2D.hpp"
 
 #include <capsula/core/Error.hpp>
-#include <capsula/operators/KrylovSolve.hpp>
-#include <capsula/operators/SecondKindOperator.hpp>
-
-#include <Tpetra_MultiVector.hpp>
+#include <capsula/operators/SecondKindSolve.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -69,7 +66,6 @@ public:
       return solution;
     }
 
-    using MV = Tpetra::MultiVector<double>;
     const double coefficient = (1.0 - lambda) / (2.0 * M_PI * (1.0 + lambda));
     std::vector<double> rowScale(static_cast<std::size_t>(owned), coefficient);
     for (std::size_t k = 0; k < rowScale.size(); ++k) {
@@ -77,49 +73,19 @@ public:
         rowScale[k] = 0.0; // a prescribed velocity: the row is the identity
       }
     }
-    auto A = Teuchos::rcp(new operators::SecondKindOperator(
-        distribution_.map(),
-        [this](const double* density, double* rows) {
-          potentials_.doubleLayerAtNodes(density, operators::DoubleLayerForm::Subtracted, rows);
-        },
-        {}, std::move(rowScale), 2));
-    // The start: the lambda = 1 velocity, or the warm start's combination of the last
-    // solutions (every rank forms the same guess from the same global vectors).
-    std::vector<double> globalRhs, guess;
-    if (history) {
-      globalRhs = distribution_.gather(rhs);
-      if (!history->empty() && history->length() != globalRhs.size()) {
-        *history = operators::WarmStartHistory(history->depth()); // another contour: its solutions do not apply
-      }
-      guess = history->initialGuess(globalRhs);
-    }
-    auto b = Teuchos::rcp(new MV(distribution_.map(), 1));
-    auto x = Teuchos::rcp(new MV(distribution_.map(), 1));
-    {
-      auto bData = b->getDataNonConst(0);
-      auto xData = x->getDataNonConst(0);
-      std::copy(rhs.begin(), rhs.end(), bData.begin());
-      if (history) {
-        std::copy(guess.begin() + 2 * first, guess.begin() + 2 * (first + owned), xData.begin());
-      } else {
-        std::copy(rhs.begin(), rhs.end(), xData.begin());
-      }
-    }
-    const operators::KrylovResult result = operators::solveLinearSystem(A, b, x, solver_);
-    core::require<core::NumericalError>(
-        result.converged, operators::stoppedShortMessage(
-                              core::message("the viscosity-ratio equation (lambda = ", lambda, ")"), solver_, result));
-    std::vector<double> ownedVelocity(rhs.size());
-    {
-      const auto xData = x->getData(0);
-      std::copy(xData.begin(), xData.end(), ownedVelocity.begin());
-    }
-    solution.velocities = distribution_.gather(ownedVelocity);
-    solution.iterations = result.iterations;
-    solution.residual = result.residual;
-    if (history) {
-      history->add(std::move(globalRhs), solution.velocities);
-    }
+    operators::SecondKindEquation equation{distribution_,
+                                           [this](const double* density, double* rows) {
+                                             potentials_.doubleLayerAtNodes(
+                                                 density, operators::DoubleLayerForm::Subtracted, rows);
+                                           },
+                                           {},
+                                           std::move(rowScale),
+                                           core::message("the viscosity-ratio equation (lambda = ", lambda, ")")};
+    operators::SecondKindSolution solved =
+        operators::solveSecondKind(std::move(equation), rhs, solver_, nullptr, history);
+    solution.velocities = std::move(solved.velocities);
+    solution.iterations = solved.krylov.iterations;
+    solution.residual = solved.krylov.residual;
     return solution;
   }
 

@@ -4,17 +4,13 @@
 // KernelRegistry (docs/extending.md); nothing in this package changes.
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
 #include <capsula/operators/CellBlockPreconditioner.hpp>
-#include <capsula/operators/KrylovSolve.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/operators/LayerPotentials.hpp>
 #include <capsula/operators/NodeDistribution.hpp>
-#include <capsula/operators/SecondKindOperator.hpp>
+#include <capsula/operators/SecondKindSolve.hpp>
 
 #include <capsula/core/Error.hpp>
 #include <capsula/core/Timers.hpp>
-
-#include <Teuchos_Array.hpp>
-#include <Tpetra_MultiVector.hpp>
 
 #include <cmath>
 #include <memory>
@@ -190,34 +186,6 @@ KernelBoundaryIntegralSolver<Kernel>::solveNodeVelocities(const LoadDensity& loa
   }
 
   Teuchos::TimeMonitor guard(*solveTimer_);
-  std::vector<double> globalRhs, guess;
-  if (history) { // every rank forms the same guess from the same global vectors
-    globalRhs = distribution_.gather(rhs);
-    if (!history->empty() && history->length() != globalRhs.size()) {
-      *history = WarmStartHistory(history->depth()); // another mesh: its solutions do not apply
-    }
-    guess = history->initialGuess(globalRhs);
-    initialGuess = guess.data();
-  }
-  using MV = Tpetra::MultiVector<double>;
-  const auto map = distribution_.map();
-  auto b = Teuchos::rcp(new MV(map, 1));
-  auto x = Teuchos::rcp(new MV(map, 1));
-  {
-    auto bData = b->getDataNonConst(0);
-    auto xData = x->getDataNonConst(0);
-    for (std::size_t k = 0; k < rhs.size(); ++k) {
-      bData[k] = rhs[k];
-      xData[k] = initialGuess ? initialGuess[3 * first + k] : rhs[k];
-    }
-  }
-  Teuchos::Array<double> norm(1);
-  b->norm2(norm());
-  if (norm[0] == 0.0) {
-    // No load and no flow: the homogeneous equation has only u = 0 (lambda > 0).
-    solution.velocities.assign(3 * static_cast<std::size_t>(surfaces_.numNodes()), 0.0);
-    return solution;
-  }
   std::vector<double> densityScale(surfaces_.numNodes());
   for (int g = 0; g < surfaces_.numNodes(); ++g) {
     densityScale[g] = 1.0 - lambdaOfNode(g);
@@ -226,24 +194,17 @@ KernelBoundaryIntegralSolver<Kernel>::solveNodeVelocities(const LoadDensity& loa
   for (int t = 0; t < numOwned; ++t) {
     rowScale[t] = 1.0 / (4.0 * M_PI * (1.0 + lambdaOfNode(first + t)));
   }
-  auto A = Teuchos::rcp(new SecondKindOperator(
-      map,
-      [this](const double* density, double* rows) {
-        potentials_.doubleLayerAtNodes(density, DoubleLayerForm::Subtracted, rows);
-      },
-      std::move(densityScale), std::move(rowScale)));
-  const KrylovResult result = solverParameters_.cellBlockPreconditioner
-                                  ? solveWithFlexibleGmres(A, cellBlockPreconditioner(), b, x, solverParameters_)
-                                  : solveLinearSystem(A, b, x, solverParameters_);
-  core::require<core::NumericalError>(result.converged,
-                                      stoppedShortMessage("the viscosity-ratio equation", solverParameters_, result));
-  solution.iterations = result.iterations;
-  solution.residual = result.residual;
-  const auto xData = x->getData(0);
-  solution.velocities = distribution_.gather(std::vector<double>(xData.begin(), xData.end()));
-  if (history) {
-    history->add(std::move(globalRhs), solution.velocities);
-  }
+  SecondKindEquation equation{distribution_,
+                              [this](const double* density, double* rows) {
+                                potentials_.doubleLayerAtNodes(density, DoubleLayerForm::Subtracted, rows);
+                              },
+                              std::move(densityScale), std::move(rowScale), "the viscosity-ratio equation"};
+  SecondKindSolution solved =
+      solveSecondKind(std::move(equation), rhs, solverParameters_, initialGuess, history,
+                      solverParameters_.cellBlockPreconditioner ? cellBlockPreconditioner() : Teuchos::null);
+  solution.velocities = std::move(solved.velocities);
+  solution.iterations = solved.krylov.iterations;
+  solution.residual = solved.krylov.residual;
   return solution;
 }
 

@@ -8,22 +8,29 @@
 
 namespace capsula::operators {
 
-struct LinearFlow {
-  mesh::Vec3 velocity = mesh::Vec3::Zero();
-  mesh::Mat3 gradient = mesh::Mat3::Zero();
+/// u_inf(x) = velocity + gradient x in Dim dimensions (3 for the surfaces, 2 for the contours).
+template <int Dim>
+struct LinearFlowOf {
+  using Vector = Eigen::Matrix<double, Dim, 1>;
+  using Matrix = Eigen::Matrix<double, Dim, Dim>;
 
-  mesh::Vec3 at(const mesh::Vec3& x) const { return velocity + gradient * x; }
+  Vector velocity = Vector::Zero();
+  Matrix gradient = Matrix::Zero();
 
-  /// u_inf = (rate * y, 0, 0).
-  static LinearFlow simpleShear(double rate = 1.0)
+  Vector at(const Vector& x) const { return velocity + gradient * x; }
+
+  /// u_inf = (rate * y, 0, ...).
+  static LinearFlowOf simpleShear(double rate = 1.0)
   {
-    LinearFlow flow;
+    LinearFlowOf flow;
     flow.gradient(0, 1) = rate;
     return flow;
   }
   /// Fluid at rest.
-  static LinearFlow quiescent() { return LinearFlow{}; }
+  static LinearFlowOf quiescent() { return LinearFlowOf{}; }
 };
+
+using LinearFlow = LinearFlowOf<3>;
 
 /// u_inf(x) = linear.at(x) + curvature y^2 e_x: a linear flow, plus for plane Poiseuille flow
 /// in the channel 0 < y < H (domain/FlowProfile.hpp, u = k y (1 - y / H)) the term of

@@ -18,6 +18,7 @@
 
 #include <capsula/contour/Contour.hpp>
 #include <capsula/operators/DoubleLayerForm.hpp>
+#include <capsula/operators/LinearFlow.hpp>
 #include <capsula/operators/NodeDistribution.hpp>
 #include <capsula/operators/OperatorParameters.hpp>
 #include <capsula/operators/WarmStartHistory.hpp>
@@ -33,20 +34,9 @@
 
 namespace capsula::scene2d {
 
-/// u_inf(x) = velocity + gradient x, gradient(i, j) = d u_i / d x_j.
-struct LinearFlow2D {
-  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();
-  Eigen::Matrix2d gradient = Eigen::Matrix2d::Zero();
-
-  Eigen::Vector2d at(const Eigen::Vector2d& x) const { return velocity + gradient * x; }
-  /// u_inf = (rate y, 0): simple shear over the wall y = 0 (rate 1 in units of k).
-  static LinearFlow2D simpleShear(double rate = 1.0)
-  {
-    LinearFlow2D flow;
-    flow.gradient(0, 1) = rate;
-    return flow;
-  }
-};
+/// u_inf(x) = velocity + gradient x, gradient(i, j) = d u_i / d x_j; simpleShear(rate) is
+/// u_inf = (rate y, 0) over the wall y = 0 (rate 1 in units of k).
+using LinearFlow2D = operators::LinearFlowOf<2>;
 
 struct FlowConditions2D {
   double capillaryNumber = 1.0; ///< Ca = mu k L / E (eq A.13)
