@@ -27,15 +27,15 @@ std::string indexed(const std::string& name, int cell)
 
 } // namespace
 
-double shapeChangeRate(const double* nodeVelocities, const std::vector<Vec3>& nodeNormals, const Vec3& centroidVelocity)
+double shapeChangeRate(const double* nodeVelocities, const double* nodeNormals, int numNodes,
+                       const Vec3& centroidVelocity)
 {
   double sum = 0.0;
-  for (std::size_t i = 0; i < nodeNormals.size(); ++i) {
-    const double normalSpeed =
-        (mesh::nodeAt(nodeVelocities, static_cast<int>(i)) - centroidVelocity).dot(nodeNormals[i]);
+  for (int i = 0; i < numNodes; ++i) {
+    const double normalSpeed = (mesh::nodeAt(nodeVelocities, i) - centroidVelocity).dot(mesh::nodeAt(nodeNormals, i));
     sum += normalSpeed * normalSpeed;
   }
-  return nodeNormals.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(nodeNormals.size()));
+  return numNodes == 0 ? 0.0 : std::sqrt(sum / static_cast<double>(numNodes));
 }
 
 OutputMetrics::OutputMetrics(int numCells) : numCells_(numCells), centroids_(static_cast<std::size_t>(numCells)) {}
@@ -58,11 +58,13 @@ std::vector<CellSample> OutputMetrics::record(double t, const scene::Scene& scen
     s.unconstrainedVelocity =
         centroidVelocity(cell, fields.solverVelocities.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(c)));
     s.rotation = rigidMotionFit(cell, velocities, s.shape.centroid).rotation;
-    s.shapeChangeRate = shapeChangeRate(velocities, scene.membrane(c).nodeNormals(), s.instantVelocity);
+    const double* normals = fields.nodeNormals.data() + 3 * static_cast<std::size_t>(scene.nodeOffset(c));
+    s.shapeChangeRate = shapeChangeRate(velocities, normals, cell.numNodes(), s.instantVelocity);
     s.gmresIterations = fields.gmresIterations;
     s.shearRate = scene.description().shearRate.factor(t);
     s.profileAtCentroid = scene.description().flowProfile.velocity(s.shape.centroid[1]);
-    s.stability = measureStability(cell, scene.membrane(c), scene.description().domain);
+    s.stability =
+        measureStability(cell, fields.membraneExtremes[static_cast<std::size_t>(c)], scene.description().domain);
     if (scene.hasBonds()) {
       s.adhesion = scene.bonds().summary(c, cell, cell.positionData());
     }

@@ -19,7 +19,19 @@ double localElementSize(const mesh::SurfaceMesh& cell, int node)
   return size;
 }
 
+MembraneExtremes membraneExtremes(const elasticity::MembraneMechanics& membrane)
+{
+  return {membrane.mostCompressiveTension().tension,
+          membrane.leastPrincipalStiffness().stiffness / membrane.law().shearModulus()};
+}
+
 CellStability measureStability(const mesh::SurfaceMesh& cell, const elasticity::MembraneMechanics& membrane,
+                               const domain::Domain& domain)
+{
+  return measureStability(cell, membraneExtremes(membrane), domain);
+}
+
+CellStability measureStability(const mesh::SurfaceMesh& cell, const MembraneExtremes& membrane,
                                const domain::Domain& domain)
 {
   CellStability s;
@@ -27,8 +39,8 @@ CellStability measureStability(const mesh::SurfaceMesh& cell, const elasticity::
   s.minAngleDegrees = quality.minAngle;
   s.maxEdgeRatio = quality.maxEdgeRatio;
   s.maxDistortion = quality.maxDistortion;
-  s.mostCompressiveTension = membrane.mostCompressiveTension().tension;
-  s.minPrincipalStiffness = membrane.leastPrincipalStiffness().stiffness / membrane.law().shearModulus();
+  s.mostCompressiveTension = membrane.mostCompressiveTension;
+  s.minPrincipalStiffness = membrane.leastPrincipalStiffness;
   // The gap of a node: its distance to the nearer wall, or its height without walls.
   const auto gapOf = [&](int node) {
     const mesh::Vec3& x = cell.position(node);

@@ -7,9 +7,17 @@
 
 namespace capsula::scene {
 
-LocalMobilityPreconditioner::LocalMobilityPreconditioner(Teuchos::RCP<const Map> map)
-    : StagePreconditioner(std::move(map), "LocalMobilityPreconditioner")
-{}
+LocalMobilityPreconditioner::LocalMobilityPreconditioner(Teuchos::RCP<const Map> map, CellOwnership ownership,
+                                                         std::vector<int> cellNodeOffsets)
+    : StagePreconditioner(std::move(map), "LocalMobilityPreconditioner"), ownership_(std::move(ownership))
+{
+  core::require(cellNodeOffsets.size() == static_cast<std::size_t>(ownership_.numCells()) + 1,
+                "LocalMobilityPreconditioner: ", cellNodeOffsets.size(), " node offsets for ", ownership_.numCells(),
+                " cells");
+  for (const int first : cellNodeOffsets) {
+    cellUnknownOffsets_.push_back(3 * static_cast<std::size_t>(first));
+  }
+}
 
 void LocalMobilityPreconditioner::setCell(int cell, int firstNode, const elasticity::TangentStiffness& stiffness,
                                           std::vector<double> mobility, const adhesion::LoadStiffness* external)
@@ -50,7 +58,13 @@ void LocalMobilityPreconditioner::setCell(int cell, int firstNode, const elastic
 
 void LocalMobilityPreconditioner::factorise(double shift)
 {
-  for (CellBlock& block : cells_) {
+  // A singular block on one rank stops the solve on every rank.
+  ownership_.forEachOwnedCell([&](int cell) {
+    if (static_cast<std::size_t>(cell) >= cells_.size() ||
+        cells_[static_cast<std::size_t>(cell)].stiffness.rows() == 0) {
+      return;
+    }
+    CellBlock& block = cells_[static_cast<std::size_t>(cell)];
     SparseMatrix A = shift * block.stiffness;
     A.diagonal() += block.inverseMobility; // H has every diagonal entry (a node couples to itself)
     A.makeCompressed();
@@ -71,14 +85,17 @@ void LocalMobilityPreconditioner::factorise(double shift)
                                           "The preconditioner of the stiff stage solve is singular (shift ", shift,
                                           "): set 'Solver/Stiff/Preconditioner' to None.");
     }
-  }
+  });
 }
 
 void LocalMobilityPreconditioner::solve(const double* x, double* z) const
 {
-  std::copy(x, x + map().getNodeNumElements(), z); // nodes of no cell: identity
+  std::copy(x, x + map().getNodeNumElements(), z); // nodes of no cell, cells without a block: identity
   for (const CellBlock& block : cells_) {
     const auto n = block.stiffness.rows();
+    if (n == 0) {
+      continue;
+    }
     const std::size_t first = 3 * static_cast<std::size_t>(block.firstNode);
     local_.resize(n);
     for (Eigen::Index k = 0; k < n; ++k) {
@@ -89,6 +106,9 @@ void LocalMobilityPreconditioner::solve(const double* x, double* z) const
       z[first + static_cast<std::size_t>(k)] = solved_[k];
     }
   }
+  shared_.assign(z, z + map().getNodeNumElements());
+  ownership_.share(shared_, cellUnknownOffsets_);
+  std::copy(shared_.begin(), shared_.end(), z);
 }
 
 } // namespace capsula::scene

@@ -81,6 +81,15 @@ std::string describeViscosityRatios(const SceneDescription& description)
   return line.str();
 }
 
+std::vector<int> nodesPerCell(const std::vector<mesh::SurfaceMesh>& cells)
+{
+  std::vector<int> nodes;
+  for (const auto& cell : cells) {
+    nodes.push_back(cell.numNodes());
+  }
+  return nodes;
+}
+
 // The cells' surfaces as the deck describes them (the state at t = 0), with room in the
 // domain and clear of its walls.
 std::vector<mesh::SurfaceMesh> initialSurfaces(const SceneDescription& description)
@@ -111,6 +120,7 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     : description_(description),
       comm_(comm),
       cells_(std::move(cells)),
+      ownership_(comm, nodesPerCell(cells_)),
       membraneTimer_(core::timer("Membrane tensions and loads")),
       velocityTimer_(core::timer("Boundary-integral velocity")),
       constraintTimer_(core::timer("Stage constraints"))
@@ -150,22 +160,27 @@ Scene::Scene(const SceneDescription& description, const Teuchos::ParameterList& 
     const CellDescription& cell = description_.cells[static_cast<std::size_t>(c)];
     core::require(cell.law != nullptr, "Scene: '", cell.path, "' has no membrane law (describeScene builds it)");
     const mesh::SurfaceMesh& surface = cells_[static_cast<std::size_t>(c)];
-    std::vector<double> reference = !references.empty()    ? std::move(references[static_cast<std::size_t>(c)])
-                                    : cell.prestress > 0.0 ? elasticity::prestressedReference(surface, cell.prestress)
-                                                           : surface.positions();
+    references_.push_back(!references.empty()    ? std::move(references[static_cast<std::size_t>(c)])
+                          : cell.prestress > 0.0 ? elasticity::prestressedReference(surface, cell.prestress)
+                                                 : surface.positions());
+    terms_.push_back(describeMembrane(cell, surface));
+  }
+  membranes_.resize(static_cast<std::size_t>(n));
+  ownership_.forEachOwnedCell([&](int c) {
+    const CellDescription& cell = description_.cells[static_cast<std::size_t>(c)];
     membraneDiscretisation.forceMethod = elasticity::membraneForceMethod(cell.membraneForces);
     elasticity::BendingParameters bending;
     bending.modulus = cell.bendingModulus;
     bending.spontaneousCurvature = cell.spontaneousCurvature;
     bending.reference = elasticity::bendingReference(cell.bendingReference);
     try {
-      membranes_.push_back(std::make_unique<elasticity::MembraneMechanics>(surface, std::move(reference), cell.law,
-                                                                           membraneDiscretisation, bending));
+      membranes_[static_cast<std::size_t>(c)] = std::make_unique<elasticity::MembraneMechanics>(
+          cells_[static_cast<std::size_t>(c)], references_[static_cast<std::size_t>(c)], cell.law,
+          membraneDiscretisation, bending);
     } catch (const core::InputError& e) {
       throw core::InputError(core::message("'", cell.path, "': ", e.what()));
     }
-    terms_.push_back(describeMembrane(cell, surface));
-  }
+  });
 
   buildExternalForces();
 
@@ -319,21 +334,19 @@ std::vector<MeshRegularisation> Scene::regulariseMeshes(double t, std::vector<do
     if (mesh::meshQuality(surface).minAngle >= settings.triggerAngle) {
       continue;
     }
-    const auto& membrane = *membranes_[static_cast<std::size_t>(c)];
     mesh::RedistributionOptions options = settings.options;
     // Work on the elements near the bound only: every node moved is re-interpolated, which
     // costs shape (O(h^3) per move); 10 degrees above the trigger gives the passes room.
     options.improveBelow = std::min(60.0, settings.triggerAngle + 10.0);
     const mesh::RedistributedNodes moved =
-        mesh::redistributeNodes(surface, surface.positions(), membrane.referencePositions(), options);
+        mesh::redistributeNodes(surface, surface.positions(), referencePositions(c), options);
     if (moved.passes == 0) { // no pass improved the smallest angle: leave the cell as it is
       continue;
     }
     std::copy(moved.positions.begin(), moved.positions.end(), x);
     surface.setPositions(x);
     try {
-      membranes_[static_cast<std::size_t>(c)] =
-          std::make_unique<elasticity::MembraneMechanics>(membrane.withReference(moved.reference));
+      replaceReference(c, moved.reference);
     } catch (const core::InputError& e) {
       throw core::NumericalError(core::message("At t = ", t, ", redistributing the nodes of '",
                                                description_.cells[static_cast<std::size_t>(c)].path,
@@ -372,20 +385,54 @@ std::optional<AdaptedCells> Scene::adaptedCells(const std::vector<double>& posit
   return adapted;
 }
 
+const elasticity::MembraneMechanics& Scene::membrane(int c) const
+{
+  core::require(ownership_.owns(c), "Scene: the membrane of '", description_.cells[static_cast<std::size_t>(c)].path,
+                "' is held by rank ", ownership_.owner(c), ", not by rank ", comm_->getRank());
+  return *membranes_[static_cast<std::size_t>(c)];
+}
+
 void Scene::setReferencePositions(int c, std::vector<double> reference)
 {
-  auto& membrane = membranes_[static_cast<std::size_t>(c)];
-  membrane = std::make_unique<elasticity::MembraneMechanics>(membrane->withReference(std::move(reference)));
+  replaceReference(c, std::move(reference));
+}
+
+// Collective: the owner rebuilds the membrane on the new reference (an InputError for a
+// degenerate one reaches every rank).
+void Scene::replaceReference(int c, std::vector<double> reference)
+{
+  references_[static_cast<std::size_t>(c)] = std::move(reference);
+  ownership_.onOwner(c, [&] {
+    auto& membrane = membranes_[static_cast<std::size_t>(c)];
+    membrane = std::make_unique<elasticity::MembraneMechanics>(
+        membrane->withReference(references_[static_cast<std::size_t>(c)]));
+  });
+}
+
+std::vector<std::size_t> Scene::perElementOffsets(std::size_t width) const
+{
+  std::vector<std::size_t> offsets;
+  for (int c = 0; c < numCells(); ++c) {
+    offsets.push_back(width * static_cast<std::size_t>(elementOffset(c)));
+  }
+  offsets.push_back(width * static_cast<std::size_t>(numElements()));
+  return offsets;
+}
+
+std::vector<std::size_t> Scene::perNodeOffsets(std::size_t width) const
+{
+  std::vector<std::size_t> offsets;
+  for (int c = 0; c < numCells(); ++c) {
+    offsets.push_back(width * static_cast<std::size_t>(nodeOffset(c)));
+  }
+  offsets.push_back(width * static_cast<std::size_t>(numNodes()));
+  return offsets;
 }
 
 // The forces from outside the membranes, only those the deck enables (ExternalForces.hpp).
 void Scene::buildExternalForces()
 {
-  std::vector<std::vector<double>> unstressed;
-  for (const auto& membrane : membranes_) {
-    unstressed.push_back(membrane->referencePositions());
-  }
-  external_.emplace(description_, cells_, unstressed);
+  external_.emplace(description_, cells_, references_);
   terms_.insert(terms_.end(), external_->terms().begin(), external_->terms().end());
 }
 
@@ -395,7 +442,7 @@ void Scene::computeLoads(double t, elasticity::MembraneEvaluation what)
   if (external_->any()) {
     external_->compute(cells_);
   }
-  for (int c = 0; c < numCells(); ++c) {
+  ownership_.forEachOwnedCell([&](int c) {
     auto& membrane = *membranes_[static_cast<std::size_t>(c)];
     try {
       membrane.evaluate(cells_[static_cast<std::size_t>(c)].positionData(), what,
@@ -415,7 +462,9 @@ void Scene::computeLoads(double t, elasticity::MembraneEvaluation what)
         loads_[3 * (first + e) + static_cast<std::size_t>(d)] = averages[e][d];
       }
     }
-  }
+  });
+  ownership_.share(loadDensity_, perElementOffsets(18));
+  ownership_.share(loads_, perElementOffsets(3));
 }
 
 void Scene::velocity(double t, const std::vector<double>& positions, std::vector<double>& velocities)
@@ -497,17 +546,44 @@ SceneFields Scene::evaluate(double t, const std::vector<double>& positions)
   constrain(positions, fields.velocities);
   fields.elementLoads = loads_;
   fields.loadDensity = loadDensity_;
-  fields.principalTensions.reserve(2 * static_cast<std::size_t>(numNodes()));
-  fields.stretches.reserve(2 * static_cast<std::size_t>(numNodes()));
-  for (const auto& membrane : membranes_) {
-    for (const auto& tension : membrane->nodalPrincipalTensions()) {
-      fields.principalTensions.push_back(tension.major);
-      fields.principalTensions.push_back(tension.minor);
+  // Each owner writes its cells' nodal values; share() completes them on every rank.
+  fields.principalTensions.assign(2 * static_cast<std::size_t>(numNodes()), 0.0);
+  fields.stretches.assign(2 * static_cast<std::size_t>(numNodes()), 0.0);
+  fields.nodeNormals.assign(3 * static_cast<std::size_t>(numNodes()), 0.0);
+  std::vector<double> extremes(2 * static_cast<std::size_t>(numCells()), 0.0);
+  for (int c = 0; c < numCells(); ++c) {
+    if (!ownership_.owns(c)) {
+      continue;
     }
-    for (const auto& stretch : membrane->nodalStretches()) {
-      fields.stretches.push_back(stretch.major);
-      fields.stretches.push_back(stretch.minor);
+    const auto& membrane = *membranes_[static_cast<std::size_t>(c)];
+    const std::size_t first = static_cast<std::size_t>(nodeOffset(c));
+    const auto& tensions = membrane.nodalPrincipalTensions();
+    const auto& stretches = membrane.nodalStretches();
+    const auto& normals = membrane.nodeNormals();
+    for (std::size_t i = 0; i < tensions.size(); ++i) {
+      fields.principalTensions[2 * (first + i)] = tensions[i].major;
+      fields.principalTensions[2 * (first + i) + 1] = tensions[i].minor;
+      fields.stretches[2 * (first + i)] = stretches[i].major;
+      fields.stretches[2 * (first + i) + 1] = stretches[i].minor;
+      for (int d = 0; d < 3; ++d) {
+        fields.nodeNormals[3 * (first + i) + static_cast<std::size_t>(d)] = normals[i][d];
+      }
     }
+    const MembraneExtremes cellExtremes = membraneExtremes(membrane);
+    extremes[2 * static_cast<std::size_t>(c)] = cellExtremes.mostCompressiveTension;
+    extremes[2 * static_cast<std::size_t>(c) + 1] = cellExtremes.leastPrincipalStiffness;
+  }
+  ownership_.share(fields.principalTensions, perNodeOffsets(2));
+  ownership_.share(fields.stretches, perNodeOffsets(2));
+  ownership_.share(fields.nodeNormals, perNodeOffsets(3));
+  std::vector<std::size_t> cellOffsets;
+  for (int c = 0; c <= numCells(); ++c) {
+    cellOffsets.push_back(2 * static_cast<std::size_t>(c));
+  }
+  ownership_.share(extremes, cellOffsets);
+  for (int c = 0; c < numCells(); ++c) {
+    fields.membraneExtremes.push_back(
+        {extremes[2 * static_cast<std::size_t>(c)], extremes[2 * static_cast<std::size_t>(c) + 1]});
   }
   return fields;
 }

@@ -56,8 +56,16 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
   const int numNodes = scene.numNodes();
   const auto map = Teuchos::rcp(
       new Tpetra::Map<>(3 * static_cast<Tpetra::global_size_t>(numNodes), 0, scene.comm(), Tpetra::LocallyReplicated));
+  const CellOwnership& ownership = scene.cellOwnership();
+  std::vector<int> cellNodeOffsets;
+  for (int c = 0; c < scene.numCells(); ++c) {
+    cellNodeOffsets.push_back(scene.nodeOffset(c));
+    cellUnknownOffsets_.push_back(3 * static_cast<std::size_t>(scene.nodeOffset(c)));
+  }
+  cellNodeOffsets.push_back(numNodes);
+  cellUnknownOffsets_.push_back(3 * static_cast<std::size_t>(numNodes));
   if (settings_.preconditioned) {
-    preconditioner_ = Teuchos::rcp(new LocalMobilityPreconditioner(map));
+    preconditioner_ = Teuchos::rcp(new LocalMobilityPreconditioner(map, ownership, std::move(cellNodeOffsets)));
   }
   // Eq 3.38 per node with the lambda of its cell.
   for (int c = 0; c < scene.numCells(); ++c) {
@@ -67,8 +75,12 @@ VelocityJacobian::VelocityJacobian(Scene& scene, const Teuchos::ParameterList& d
     flowFactor_.insert(flowFactor_.end(), static_cast<std::size_t>(scene.cell(c).numNodes()), 2.0 / (1.0 + lambda));
   }
   startSolver(map, preconditioner_);
+  stiffness_.resize(static_cast<std::size_t>(scene.numCells()));
+  mass_.resize(static_cast<std::size_t>(scene.numCells()));
   for (int c = 0; c < scene.numCells(); ++c) {
-    mass_.push_back(std::make_unique<mesh::SurfaceMassMatrix>(scene.cell(c)));
+    if (ownership.owns(c)) {
+      mass_[static_cast<std::size_t>(c)] = std::make_unique<mesh::SurfaceMassMatrix>(scene.cell(c));
+    }
   }
   if (hasExternalLoadStiffness(scene)) {
     external_.resize(static_cast<std::size_t>(scene.numCells()));
@@ -85,12 +97,13 @@ void VelocityJacobian::freeze(double t, const std::vector<double>& y)
   }
   frozenPositions_ = y;
   frozen_->setPositions(y.data());
-  stiffness_.clear();
   const SceneDescription& description = scene_.description();
-  for (int c = 0; c < scene_.numCells(); ++c) {
+  scene_.cellOwnership().forEachOwnedCell([&](int c) {
     const double* positions = y.data() + 3 * static_cast<std::size_t>(scene_.nodeOffset(c));
+    auto& stiffness = stiffness_[static_cast<std::size_t>(c)];
+    stiffness.reset();
     try {
-      stiffness_.push_back(scene_.membrane(c).tangentStiffness(positions));
+      stiffness.emplace(scene_.membrane(c).tangentStiffness(positions));
     } catch (const core::NumericalError& e) {
       throw core::NumericalError(core::message("The membrane of '", description.cells[static_cast<std::size_t>(c)].path,
                                                "' failed: ", e.what()));
@@ -102,7 +115,7 @@ void VelocityJacobian::freeze(double t, const std::vector<double>& y)
     }
     mass_[static_cast<std::size_t>(c)]->assemble(positions);
     if (preconditioner_.is_null()) {
-      continue;
+      return;
     }
     // Node i's share of the area, A_i = sum of its elements' areas / 6 (the shares add up
     // to the area), and its local mobility c beta / sqrt(A_i / pi).
@@ -119,8 +132,8 @@ void VelocityJacobian::freeze(double t, const std::vector<double>& y)
     for (std::size_t i = 0; i < share.size(); ++i) {
       mobility[i] = c0 * settings_.mobilityFactor / std::sqrt(share[i] / M_PI);
     }
-    preconditioner_->setCell(c, scene_.nodeOffset(c), stiffness_.back(), std::move(mobility), external);
-  }
+    preconditioner_->setCell(c, scene_.nodeOffset(c), *stiffness, std::move(mobility), external);
+  });
 }
 
 void VelocityJacobian::applyFrozen(const double* x, double* y)
@@ -129,14 +142,18 @@ void VelocityJacobian::applyFrozen(const double* x, double* y)
   forces_.resize(n);
   loads_.resize(n);
   for (int c = 0; c < scene_.numCells(); ++c) {
+    if (!scene_.cellOwnership().owns(c)) {
+      continue;
+    }
     const std::size_t first = 3 * static_cast<std::size_t>(scene_.nodeOffset(c));
-    const elasticity::TangentStiffness& stiffness = stiffness_[static_cast<std::size_t>(c)];
+    const elasticity::TangentStiffness& stiffness = *stiffness_[static_cast<std::size_t>(c)];
     stiffness.apply(x + first, forces_.data() + first); // strain and bending, as the membrane adds them
     if (!external_.empty()) {
       external_[static_cast<std::size_t>(c)].addProduct(x + first, forces_.data() + first);
     }
     mass_[static_cast<std::size_t>(c)]->solve(forces_.data() + first, loads_.data() + first, kMassSolveTolerance);
   }
+  scene_.cellOwnership().share(loads_, cellUnknownOffsets_); // the other owners' cells
   const std::vector<double> single = frozen_->singleLayerOfNodalLoad(loads_.data());
   operators::combineWithFlowGradient<3>([this](std::size_t g) -> const mesh::Mat3& { return flowGradients_[g]; },
                                         [this](std::size_t g) { return coefficient_[g]; },
@@ -152,11 +169,11 @@ std::string VelocityJacobian::describe() const
 {
   std::ostringstream line;
   line << "stiff Jacobian: single layer of the membranes' tangent stiffness";
-  for (int c = 0; c < scene_.numCells(); ++c) {
-    if (scene_.membrane(c).bending() != nullptr) {
-      line << " (with the bending stiffness on the normal modes)";
-      break;
-    }
+  const auto& cells = scene_.description().cells;
+  if (std::any_of(cells.begin(), cells.end(), [](const CellDescription& cell) {
+        return cell.bendingModulus != 0.0 || cell.spontaneousCurvature != 0.0; // as MembraneMechanics builds it
+      })) {
+    line << " (with the bending stiffness on the normal modes)";
   }
   if (!external_.empty()) {
     line << (scene_.hasBonds() ? " and of the bonds" : "") << (scene_.hasTether() ? " and of the tether" : "")

@@ -60,7 +60,7 @@ TEST(LocalMobilityPreconditioner, SolvesAfterThePatternChangesAtTheSameSize)
   const std::vector<double> mobility(static_cast<std::size_t>(sphere.numNodes()), 0.7);
   const auto comm = Tpetra::getDefaultComm();
   auto map = Teuchos::rcp(new Tpetra::Map<>(n, 0, comm, Tpetra::LocallyReplicated));
-  scene::LocalMobilityPreconditioner P(map);
+  scene::LocalMobilityPreconditioner P(map, scene::CellOwnership(comm, {sphere.numNodes()}), {0, sphere.numNodes()});
   const double shift = 0.3;
   // Node 0 coupled to the node farthest from it, then to the next farthest: neither pair
   // shares an element, so each adds the same six entries outside the elements' pattern.

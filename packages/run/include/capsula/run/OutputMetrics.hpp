@@ -94,7 +94,8 @@ private:
 /// square, not the maximum, because single nodes of a Lagrangian mesh jitter (the
 /// maximum stays ~0.03 at level 2 in the Lac & Barthes-Biesel case where the RMS falls
 /// well below 1e-2).
-double shapeChangeRate(const double* nodeVelocities, const std::vector<mesh::Vec3>& nodeNormals,
+/// `nodeVelocities` and `nodeNormals`: 3 per node, `numNodes` nodes.
+double shapeChangeRate(const double* nodeVelocities, const double* nodeNormals, int numNodes,
                        const mesh::Vec3& centroidVelocity);
 
 } // namespace capsula::run

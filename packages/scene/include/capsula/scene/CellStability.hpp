@@ -39,8 +39,22 @@ struct CellStability {
   double minPrincipalStiffness = 0.0;
 };
 
-/// The diagnostics of `cell` (at its current positions) with `membrane` evaluated there, the
-/// wall gap in `domain`.
+/// What CellStability takes from a membrane evaluated at the cell's positions (its owner's,
+/// Scene.hpp): the two numbers that travel to the other ranks.
+struct MembraneExtremes {
+  double mostCompressiveTension = 0.0;  ///< CellStability::mostCompressiveTension
+  double leastPrincipalStiffness = 0.0; ///< over the shear modulus: CellStability::minPrincipalStiffness
+};
+
+/// The extremes of `membrane` at its latest evaluation.
+MembraneExtremes membraneExtremes(const elasticity::MembraneMechanics& membrane);
+
+/// The diagnostics of `cell` (at its current positions) with the extremes of its membrane
+/// evaluated there, the wall gap in `domain`.
+CellStability measureStability(const mesh::SurfaceMesh& cell, const MembraneExtremes& membrane,
+                               const domain::Domain& domain);
+
+/// The same with the membrane itself.
 CellStability measureStability(const mesh::SurfaceMesh& cell, const elasticity::MembraneMechanics& membrane,
                                const domain::Domain& domain);
 

@@ -14,12 +14,15 @@
 //
 // On the fast, grid-scale membrane modes S acts locally and P is close to W; the smooth
 // modes, where the nonlocal S is larger than any local mobility, are left to GMRES, a few
-// iterations. Every rank applies P to the whole (replicated) vector (the shift bookkeeping
-// and the application are operators::StagePreconditioner's). The stiffness of the forces
+// iterations. A rank factorises and solves the blocks of the cells it owns
+// (CellOwnership.hpp) and the others' parts of z come from their owners, so every rank
+// ends with the whole (replicated) z (the shift bookkeeping and the application are
+// operators::StagePreconditioner's). The stiffness of the forces
 // from outside (bonds, wall contact: adhesion LoadStiffness.hpp) adds to H.
 #include <capsula/adhesion/LoadStiffness.hpp>
 #include <capsula/elasticity/TangentStiffness.hpp>
 #include <capsula/operators/StagePreconditioner.hpp>
+#include <capsula/scene/CellOwnership.hpp>
 
 #include <Eigen/Sparse>
 
@@ -30,12 +33,14 @@ namespace capsula::scene {
 
 class LocalMobilityPreconditioner final : public operators::StagePreconditioner {
 public:
-  /// `map`: locally replicated, 3 unknowns per node of the scene.
-  explicit LocalMobilityPreconditioner(Teuchos::RCP<const Map> map);
+  /// `map`: locally replicated, 3 unknowns per node of the scene; `cellNodeOffsets`: the
+  /// first node of each cell and, last, the number of nodes.
+  LocalMobilityPreconditioner(Teuchos::RCP<const Map> map, CellOwnership ownership, std::vector<int> cellNodeOffsets);
 
   /// The cell whose nodes start at `firstNode`: its stiffness H (plus `external`, if any,
   /// numbered within the cell) and mobilities b (one per node). Replaces what an earlier
-  /// call gave for the same cell.
+  /// call gave for the same cell. Called by the cell's owner; a cell without a block
+  /// keeps z = x.
   void setCell(int cell, int firstNode, const elasticity::TangentStiffness& stiffness, std::vector<double> mobility,
                const adhesion::LoadStiffness* external = nullptr);
 
@@ -54,8 +59,11 @@ private:
     bool patternAnalysed = false;
   };
 
-  std::vector<CellBlock> cells_;
+  CellOwnership ownership_;
+  std::vector<std::size_t> cellUnknownOffsets_; // 3 per node: where each cell's part of z begins
+  std::vector<CellBlock> cells_;                // empty (no rows) where the cell is another rank's
   mutable Eigen::VectorXd local_, solved_;
+  mutable std::vector<double> shared_;
 };
 
 } // namespace capsula::scene

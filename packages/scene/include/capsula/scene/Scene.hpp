@@ -21,6 +21,10 @@
 // restarted run still repeats the uninterrupted one bit for bit. evaluate() (outputs)
 // always starts cold. With adhesion the right-hand side also depends on the bond set, which
 // only updateBonds() changes, between steps.
+//
+// A cell's membrane mechanics live on one rank, its owner (CellOwnership.hpp): the owner
+// evaluates the cell's loads and tensions and every rank receives them. Everything else
+// (positions, reference shapes, the loads, the fields of evaluate()) is on every rank.
 #include <capsula/elasticity/MembraneMechanics.hpp>
 #include <capsula/mesh/SurfaceMesh.hpp>
 #include <capsula/operators/BoundaryIntegralSolver.hpp>
@@ -28,6 +32,8 @@
 #include <capsula/operators/KernelRegistry.hpp>
 #include <capsula/operators/LinearFlow.hpp>
 #include <capsula/operators/WarmStartHistory.hpp>
+#include <capsula/scene/CellOwnership.hpp>
+#include <capsula/scene/CellStability.hpp>
 #include <capsula/scene/ExternalForces.hpp>
 #include <capsula/scene/FixedHeightConstraint.hpp>
 #include <capsula/scene/VolumeConstraint.hpp>
@@ -56,7 +62,11 @@ struct SceneFields {
   std::vector<double> loadDensity; ///< Delta f at the nodes of each element, 18 per element (operators::LoadDensity)
   std::vector<double> principalTensions; ///< major, minor per node (eq 3.30)
   std::vector<double> stretches;         ///< major, minor principal stretch per node
-  int gmresIterations = 0;               ///< 0: explicit velocity (lambda = 1)
+  std::vector<double> nodeNormals;       ///< 3 per node: the membranes' averaged unit normals
+  /// Per cell: the most compressive principal tension and the least principal stiffness over
+  /// the shear modulus (elasticity::MembraneMechanics), what CellStability reports.
+  std::vector<MembraneExtremes> membraneExtremes;
+  int gmresIterations = 0; ///< 0: explicit velocity (lambda = 1)
 };
 
 /// Refined meshes for a scene (Scene::adaptedCells): one per cell, with its reference shape.
@@ -103,7 +113,11 @@ public:
   int elementOffset(int cell) const { return solver_->surfaces().elementOffset(cell); }
   /// Cell `c` with the positions of the latest setPositions / velocity / evaluate.
   const mesh::SurfaceMesh& cell(int c) const { return cells_[static_cast<std::size_t>(c)]; }
-  const elasticity::MembraneMechanics& membrane(int c) const { return *membranes_[static_cast<std::size_t>(c)]; }
+  /// Which rank holds which cell's membrane.
+  const CellOwnership& cellOwnership() const { return ownership_; }
+  /// The membrane of cell `c`, on its owner only (cellOwnership().owns(c)); other ranks get
+  /// an error naming the cell.
+  const elasticity::MembraneMechanics& membrane(int c) const;
   operators::BoundaryIntegralSolver& solver() { return *solver_; }
   /// Ca, lambda and the undisturbed flow at the mean shear rate, u_inf = (y, 0, 0).
   const operators::FlowConditions& flow() const { return flow_; }
@@ -155,7 +169,7 @@ public:
 
   /// The unstressed shape of cell `c` (3 per node): the initial (or prestressed) shape,
   /// or what the redistributions made of it.
-  const std::vector<double>& referencePositions(int c) const { return membrane(c).referencePositions(); }
+  const std::vector<double>& referencePositions(int c) const { return references_[static_cast<std::size_t>(c)]; }
   /// Replaces the reference shape of cell `c` (a restart after redistributions).
   void setReferencePositions(int c, std::vector<double> reference);
 
@@ -202,12 +216,17 @@ public:
 private:
   void computeLoads(double t, elasticity::MembraneEvaluation what);
   void buildExternalForces();
+  void replaceReference(int c, std::vector<double> reference);
+  std::vector<std::size_t> perElementOffsets(std::size_t width) const;
+  std::vector<std::size_t> perNodeOffsets(std::size_t width) const;
   std::string nonFiniteCause(double t) const;
 
   SceneDescription description_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::vector<mesh::SurfaceMesh> cells_; // sized once: the membranes point into it
-  std::vector<std::unique_ptr<elasticity::MembraneMechanics>> membranes_;
+  CellOwnership ownership_;
+  std::vector<std::unique_ptr<elasticity::MembraneMechanics>> membranes_; // null where another rank owns the cell
+  std::vector<std::vector<double>> references_;                           // every cell's unstressed shape
   std::unique_ptr<operators::BoundaryIntegralSolver> solver_;
   std::optional<FixedHeightConstraint> fixedHeight_;
   std::optional<VolumeConstraint> volume_;

@@ -21,8 +21,10 @@
 // Solves with W = I - shift J~ run Belos GMRES on a locally replicated map
 // (operators::StageJacobian, shared with the 2D cell's VelocityJacobian2D) with the
 // LocalMobilityPreconditioner on the right; each application of J~ is one single-layer
-// evaluation, its rows shared by the ranks. The results do not depend on the number of
-// ranks (the right-hand side's do not either).
+// evaluation, its rows shared by the ranks. A cell's tangent stiffness, mass matrix and
+// preconditioner block are held by the rank that owns its membrane (CellOwnership.hpp),
+// which computes the cell's share of M^-1 H v; every rank receives it. The results do not
+// depend on the number of ranks (the right-hand side's do not either).
 #include "capsula/scene/LocalMobilityPreconditioner.hpp"
 #include "capsula/scene/StiffSolverParameters.hpp"
 
@@ -37,6 +39,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,10 +67,12 @@ private:
 
   Scene& scene_;
   StiffSolverSettings settings_;
-  std::unique_ptr<operators::BoundaryIntegralSolver> frozen_;  // the single layer at x_n
-  std::vector<elasticity::TangentStiffness> stiffness_;        // per cell, at x_n
-  std::vector<adhesion::LoadStiffness> external_;              // per cell, at x_n (bonds, contact)
-  std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_; // per cell, at x_n
+  std::unique_ptr<operators::BoundaryIntegralSolver> frozen_; // the single layer at x_n
+  // Per cell at x_n, held for the cells this rank owns (empty or null elsewhere).
+  std::vector<std::optional<elasticity::TangentStiffness>> stiffness_;
+  std::vector<adhesion::LoadStiffness> external_; // bonds, contact
+  std::vector<std::unique_ptr<mesh::SurfaceMassMatrix>> mass_;
+  std::vector<std::size_t> cellUnknownOffsets_; // 3 per node: where each cell's unknowns begin
   std::vector<double> frozenPositions_;
   std::vector<double> coefficient_;       // -c_d per node
   std::vector<double> flowFactor_;        // 2 / (1 + lambda_d) per node
