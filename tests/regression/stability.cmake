@@ -377,6 +377,24 @@ stability_check(mesh_regularisation_ca1.8_level2 bounds within
   volume_change=-0.003:0.003 min_angle_deg=32:60)
 stability_check(mesh_regularisation_ca1.8_level2 trend expect
   ${_stability}/mesh_regularisation_ca1.8_level2/metrics.csv 0 time=3:1e-12 D12=0.5434:0.004)
+# The same run on 2 ranks: the one cell's membrane lives on rank 1 (scene/CellOwnership.hpp),
+# which rebuilds it on each redistributed reference while rank 0 redistributes the nodes
+# alike; the motion is bit for bit the one-rank run's (1e-12 as for the other rank
+# comparisons).
+capsula_add_mpi_command_test(stability_mesh_regularisation_ca1.8_level2_two_ranks
+  COMMAND $<TARGET_FILE:cell3d> ${_decks}/validation/lac2005-skalak-Ca1.8-prestress2.5.xml ${_stab_short}
+          --set "Cells/Cell 0/Mesh level=2" --set "Mesh regularisation/Enabled=true"
+          --set "Mesh regularisation/Minimum angle=35" --set "Time integration/End time=3"
+          --set "Output/Interval=0.5" --output ${_stability}/mesh_regularisation_ca1.8_level2_np2
+  LABELS stability TIMEOUT 300)
+set_tests_properties(stability_mesh_regularisation_ca1.8_level2_two_ranks PROPERTIES
+  FIXTURES_SETUP stability_regularisation_np2 PASS_REGULAR_EXPRESSION "redistributed the nodes of 'Cells/Cell 0'")
+add_test(NAME stability_mesh_regularisation_ca1.8_level2_ranks_agree
+  COMMAND check_metrics same ${_stability}/mesh_regularisation_ca1.8_level2/metrics.csv
+          ${_stability}/mesh_regularisation_ca1.8_level2_np2/metrics.csv 1e-12)
+set_tests_properties(stability_mesh_regularisation_ca1.8_level2_ranks_agree PROPERTIES
+  LABELS "stability;mpi"
+  FIXTURES_REQUIRED "stability_mesh_regularisation_ca1.8_level2;stability_regularisation_np2")
 
 # Mesh adaption during a run (thesis eq 4.3, the refinement the thesis could not run):
 # Ca = 1.8 free shear from a level-1 mesh to t = 2.5. The elongating cell is refined where
