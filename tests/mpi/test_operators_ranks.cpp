@@ -10,6 +10,7 @@
 
 #include <capsula/mesh/ElementGeometry.hpp>
 #include <capsula/mesh/Shapes.hpp>
+#include <capsula/operators/CellBlockPreconditioner.hpp>
 #include <capsula/operators/KernelRegistry.hpp>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -21,6 +22,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 namespace {
 
@@ -192,6 +195,67 @@ TEST(OperatorRanks, CellBlockPreconditionedVelocitiesMatchOneRank)
   // products, as in GmresVelocitiesMatchOneRank, and so does nothing else: equal iterations.
   EXPECT_TRUE(capsula::testing::allRanks(*comm, difference < 1e-12)) << difference;
   EXPECT_TRUE(capsula::testing::allRanks(*comm, u1.iterations == u2.iterations));
+}
+
+// Each cell block is held by one rank, balanced by size whichever rank owns the cell's rows
+// (CellBlockPreconditioner.hpp). Four cells of 2 nodes, the third without a block (scale 0):
+// rows of cells 0 and 1 on rank 0, of cells 2 and 3 on rank 1; the three blocks go to ranks
+// 0, 1, 1, so cell 1's rows travel from rank 0 to its holder. The result is bit for bit the
+// one-rank preconditioner's: the same rows, the same single-precision LU, sums with zeros.
+TEST(OperatorRanks, CellBlocksAreBalancedOverTheRanksAndApplyAsOnOneRank)
+{
+  const auto comm = Tpetra::getDefaultComm();
+  const auto serial = Teuchos::rcp(new Teuchos::SerialComm<int>);
+  const std::vector<int> offsets = {0, 2, 4, 6, 8};
+  const std::vector<double> scale = {0.25, 0.2, 0.0, 0.3}; // P_c's diagonal 1 - 2 s far from 0
+  // Row r (of the cell's 6) against column k of cell c: diagonally dominant, nonsingular P_c.
+  const auto entry = [](int c, int r, int k) { return (r == k ? 2.0 : 0.0) + 0.1 * std::sin(1.0 + r + 2.0 * k + c); };
+  const auto build = [&](const Teuchos::RCP<const Teuchos::Comm<int>>& on, std::vector<int>& asked) {
+    const auto map = Teuchos::rcp(new Tpetra::Map<>(24, 0, on));
+    const int firstNode = static_cast<int>(map->getMinGlobalIndex() / 3);
+    const int endNode = firstNode + static_cast<int>(map->getNodeNumElements() / 3);
+    return std::make_unique<CellBlockPreconditioner>(
+        map, offsets, scale, [&, firstNode, endNode](int c, std::vector<double>& rows) {
+          asked.push_back(c);
+          const int first = std::max(firstNode, offsets[c]), end = std::min(endNode, offsets[c + 1]);
+          rows.clear();
+          for (int node = first; node < end; ++node) {
+            for (int i = 0; i < 3; ++i) {
+              for (int k = 0; k < 6; ++k) {
+                rows.push_back(entry(c, 3 * (node - offsets[c]) + i, k));
+              }
+            }
+          }
+          return end - first;
+        });
+  };
+  std::vector<int> askedHere, askedAlone;
+  const auto distributed = build(comm, askedHere);
+  const auto alone = build(serial, askedAlone);
+  const int rank = comm->getRank();
+  bool ok = distributed->heldBlocks() == (rank == 0 ? 1 : 2) && alone->heldBlocks() == 3;
+  // Each rank computes the rows it owns, of the cells with a block only.
+  ok = ok && askedHere == (rank == 0 ? std::vector<int>{0, 1} : std::vector<int>{3});
+  const auto apply = [](const CellBlockPreconditioner& M) {
+    Tpetra::MultiVector<double> x(M.getDomainMap(), 1), y(M.getRangeMap(), 1);
+    auto in = x.getDataNonConst(0);
+    for (std::size_t k = 0; k < in.size(); ++k) {
+      in[k] = std::cos(0.7 * static_cast<double>(M.getDomainMap()->getGlobalElement(static_cast<int>(k))));
+    }
+    M.apply(x, y);
+    std::vector<double> out(24, 0.0);
+    const auto data = y.getData(0);
+    for (std::size_t k = 0; k < data.size(); ++k) {
+      out[static_cast<std::size_t>(M.getRangeMap()->getGlobalElement(static_cast<int>(k)))] = data[k];
+    }
+    return out;
+  };
+  std::vector<double> mine = apply(*distributed), all(24);
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 24, mine.data(), all.data());
+  const std::vector<double> reference = apply(*alone);
+  ok = ok && all == reference;
+  ok = ok && all[12] == std::cos(0.7 * 12) && all[17] == std::cos(0.7 * 17); // cell 2: identity
+  EXPECT_TRUE(capsula::testing::allRanks(*comm, ok));
 }
 
 } // namespace

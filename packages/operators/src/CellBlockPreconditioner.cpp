@@ -44,69 +44,67 @@ CellBlockPreconditioner::CellBlockPreconditioner(Teuchos::RCP<const Map> map, st
   const auto& comm = *map_->getComm();
   numOwnedNodes_ = static_cast<int>(map_->getNodeNumElements() / 3);
   firstOwnedNode_ = numOwnedNodes_ > 0 ? static_cast<int>(map_->getMinGlobalIndex() / 3) : 0;
-  // Every rank's node range, to find the cells whose rows lie on several ranks.
+  // Every rank's node range, to find where a cell's rows lie.
   const int mine[2] = {firstOwnedNode_, firstOwnedNode_ + numOwnedNodes_};
   std::vector<int> ranges(2 * static_cast<std::size_t>(comm.getSize()));
   Teuchos::gatherAll(comm, 2, mine, static_cast<int>(ranges.size()), ranges.data());
-  const auto ranksHolding = [&](int c) {
-    int count = 0;
-    for (int p = 0; p < comm.getSize(); ++p) {
-      count += std::max(ranges[2 * p], cellNodeOffsets[c]) < std::min(ranges[2 * p + 1], cellNodeOffsets[c + 1]);
-    }
-    return count;
+  const auto ownsRowsOf = [&](int p, int c) {
+    return std::max(ranges[2 * p], cellNodeOffsets[c]) < std::min(ranges[2 * p + 1], cellNodeOffsets[c + 1]);
   };
 
-  std::vector<int> shared; // cells split over ranks, in the same order on every rank
-  std::vector<double> rows;
+  // The blocks go to the ranks in contiguous runs balanced by their entries (n_c^2 each):
+  // the block whose middle entry is the k-th of W in all goes to rank floor(P k / W).
+  std::vector<int> blockCells;
+  double entries = 0.0;
   for (int c = 0; c < numCells; ++c) {
-    const int first = cellNodeOffsets[c], numNodes = cellNodeOffsets[c + 1] - first;
-    if (cellScale[c] == 0.0 || numNodes == 0) {
+    const double n = 3.0 * (cellNodeOffsets[c + 1] - cellNodeOffsets[c]);
+    if (cellScale[c] != 0.0 && n > 0.0) {
+      blockCells.push_back(c);
+      entries += n * n;
+    }
+  }
+  const int ranks = comm.getSize();
+  std::vector<double> rows;
+  double before = 0.0;
+  for (const int c : blockCells) {
+    const int first = cellNodeOffsets[c], end = cellNodeOffsets[c + 1], numNodes = end - first;
+    const std::size_t n = 3 * static_cast<std::size_t>(numNodes);
+    const double weight = static_cast<double>(n) * static_cast<double>(n);
+    const int holder = std::min(ranks - 1, static_cast<int>(ranks * (before + 0.5 * weight) / entries));
+    before += weight;
+    const bool holding = holder == comm.getRank();
+    bool allRowsOnHolder = true;
+    for (int p = 0; p < ranks; ++p) {
+      allRowsOnHolder = allRowsOnHolder && (p == holder || !ownsRowsOf(p, c));
+    }
+    const int firstRow = std::max(first, mine[0]), endRow = std::min(end, mine[1]);
+    if (allRowsOnHolder) { // the holder computes every row itself
+      if (holding) {
+        core::require(rowsOf(c, rows) == numNodes, "CellBlockPreconditioner: cell ", c,
+                      " is owned whole but its rows are not.");
+        blocks_.push_back({c, first, numNodes, Eigen::PartialPivLU<Eigen::MatrixXf>()});
+        blocks_.back().lu.compute(blockMatrix(rows.data(), numNodes, cellScale[c]));
+      }
       continue;
     }
-    if (ranksHolding(c) > 1) {
-      shared.push_back(c);
-      continue;
+    // Each rank's own rows of the cell, zero elsewhere, summed on the holder: every row
+    // exactly once. One cell at a time, so no rank holds more than one block in transit.
+    std::vector<double> partial(n * n, 0.0);
+    if (firstRow < endRow) {
+      core::require(rowsOf(c, rows) == endRow - firstRow, "CellBlockPreconditioner: cell ", c,
+                    " got other rows than the rank owns.");
+      std::copy(rows.begin(), rows.end(), partial.begin() + static_cast<std::ptrdiff_t>(3 * (firstRow - first) * n));
     }
-    if (std::max(first, mine[0]) >= std::min(first + numNodes, mine[1])) {
-      continue; // another rank's cell
+    std::vector<double> full(holding ? n * n : 0);
+    Teuchos::reduce(partial.data(), full.data(), static_cast<int>(n * n), Teuchos::REDUCE_SUM, holder, comm);
+    if (holding) {
+      blocks_.push_back({c, first, numNodes, Eigen::PartialPivLU<Eigen::MatrixXf>()});
+      blocks_.back().lu.compute(blockMatrix(full.data(), numNodes, cellScale[c]));
     }
-    core::require(rowsOf(c, rows) == numNodes, "CellBlockPreconditioner: cell ", c,
-                  " is owned whole but its rows are not.");
-    blocks_.push_back({c, first, numNodes, Eigen::PartialPivLU<Eigen::MatrixXf>()});
-    blocks_.back().lu.compute(blockMatrix(rows.data(), numNodes, cellScale[c]));
   }
-  // The split cells' rows summed over the ranks: each contributes its own rows, zero
-  // elsewhere, so the sum holds every row exactly once.
-  std::size_t total = 0;
-  for (const int c : shared) {
-    const std::size_t n = 3 * static_cast<std::size_t>(cellNodeOffsets[c + 1] - cellNodeOffsets[c]);
-    total += n * n;
-  }
-  if (total > 0) {
-    std::vector<double> partial(total, 0.0), full(total);
-    std::size_t offset = 0;
-    for (const int c : shared) {
-      const int first = cellNodeOffsets[c], end = cellNodeOffsets[c + 1];
-      const std::size_t n = 3 * static_cast<std::size_t>(end - first);
-      const int firstRow = std::max(first, mine[0]);
-      if (firstRow < std::min(end, mine[1])) {
-        core::require(rowsOf(c, rows) == std::min(end, mine[1]) - firstRow, "CellBlockPreconditioner: cell ", c,
-                      " got other rows than the rank owns.");
-        std::copy(rows.begin(), rows.end(), partial.begin() + offset + 3 * (firstRow - first) * n);
-      }
-      offset += n * n;
-    }
-    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(total), partial.data(), full.data());
-    offset = 0;
-    for (const int c : shared) {
-      const int first = cellNodeOffsets[c], end = cellNodeOffsets[c + 1];
-      const std::size_t n = 3 * static_cast<std::size_t>(end - first);
-      if (std::max(first, mine[0]) < std::min(end, mine[1])) {
-        blocks_.push_back({c, first, end - first, Eigen::PartialPivLU<Eigen::MatrixXf>()});
-        blocks_.back().lu.compute(blockMatrix(full.data() + offset, end - first, cellScale[c]));
-      }
-      offset += n * n;
-    }
+  for (const int c : blockCells) {
+    blockUnknowns_.push_back(
+        {3 * static_cast<std::size_t>(cellNodeOffsets[c]), 3 * static_cast<std::size_t>(cellNodeOffsets[c + 1])});
   }
   // PartialPivLU does not report a zero pivot (nor NaN in the block): look at U's diagonal.
   // Every rank learns of a bad block, so that all of them throw and none waits in
@@ -133,29 +131,44 @@ void CellBlockPreconditioner::apply(const MultiVector& X, MultiVector& Y, Teucho
   Teuchos::TimeMonitor guard(*timer_);
   MultiVector all(replicatedMap_, X.getNumVectors());
   all.doImport(X, *gather_, Tpetra::INSERT);
+  const auto& comm = *map_->getComm();
+  const std::size_t numUnknowns = map_->getGlobalNumElements();
+  const std::size_t firstOwned = 3 * static_cast<std::size_t>(firstOwnedNode_);
   const std::size_t numOwned = 3 * static_cast<std::size_t>(numOwnedNodes_);
-  std::vector<double> z(numOwned);
+  std::vector<double> solvedHere(numUnknowns), solved(numUnknowns);
   for (std::size_t v = 0; v < X.getNumVectors(); ++v) {
     const auto x = all.getData(v);
-    for (std::size_t k = 0; k < numOwned; ++k) {
-      z[k] = x[3 * static_cast<std::size_t>(firstOwnedNode_) + k];
-    }
+    // The blocks this rank holds, zero elsewhere; the sum over the ranks is every block's
+    // solution exactly once.
+    std::fill(solvedHere.begin(), solvedHere.end(), 0.0);
     for (const Block& block : blocks_) {
       const int n = 3 * block.numNodes;
+      const std::size_t first = 3 * static_cast<std::size_t>(block.firstNode);
       Eigen::VectorXf local(n);
       for (int k = 0; k < n; ++k) {
-        local[k] = static_cast<float>(x[3 * static_cast<std::size_t>(block.firstNode) + k]);
+        local[k] = static_cast<float>(x[first + static_cast<std::size_t>(k)]);
       }
-      const Eigen::VectorXf solved = block.lu.solve(local);
-      const int firstRow = std::max(block.firstNode, firstOwnedNode_);
-      const int endRow = std::min(block.firstNode + block.numNodes, firstOwnedNode_ + numOwnedNodes_);
-      for (int k = 3 * (firstRow - block.firstNode); k < 3 * (endRow - block.firstNode); ++k) {
-        z[static_cast<std::size_t>(3 * (block.firstNode - firstOwnedNode_) + k)] = solved[k];
+      const Eigen::VectorXf z = block.lu.solve(local);
+      for (int k = 0; k < n; ++k) {
+        solvedHere[first + static_cast<std::size_t>(k)] = z[k];
       }
     }
+    if (comm.getSize() > 1) {
+      Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(numUnknowns), solvedHere.data(), solved.data());
+    } else {
+      solved.swap(solvedHere);
+    }
+    // The rows this rank owns: a block's solution, or x itself in a cell without a block.
     auto y = Y.getDataNonConst(v);
+    std::size_t block = 0;
     for (std::size_t k = 0; k < numOwned; ++k) {
-      y[k] = (beta == 0.0 ? 0.0 : beta * y[k]) + alpha * z[k];
+      const std::size_t row = firstOwned + k;
+      while (block < blockUnknowns_.size() && blockUnknowns_[block].second <= row) {
+        ++block;
+      }
+      const bool inBlock = block < blockUnknowns_.size() && blockUnknowns_[block].first <= row;
+      const double z = inBlock ? solved[row] : x[row];
+      y[k] = (beta == 0.0 ? 0.0 : beta * y[k]) + alpha * z;
     }
   }
 }

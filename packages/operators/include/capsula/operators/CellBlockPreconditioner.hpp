@@ -14,11 +14,15 @@
 //
 // Each P_c is dense (3 n_c unknowns), held and LU-factorised (partial pivoting) in single
 // precision: it only steers the iteration, and the solution's accuracy is the tolerance's.
-// A rank factorises the cells it owns rows of; a cell whose rows lie on several ranks has
-// them summed over the ranks first (each rank's rows, zero elsewhere), so every rank that
-// holds a block holds the same bits and the preconditioner does not depend on the number of
-// ranks. apply() gathers X into a locally replicated copy (an Import built once) and solves
-// each held block, keeping the rows the rank owns.
+// Each block is held by one rank: the blocks go to the ranks in contiguous runs balanced by
+// their size, whichever ranks own the cell's rows (a suspension's cells without a block,
+// platelets at lambda = 1 say, would otherwise leave the ranks that own their rows with
+// fewer blocks to store and factorise). The ranks that own a cell's rows compute them; where
+// they are not the holder, each sends its rows, zero elsewhere, in a sum reduced onto the
+// holder, one cell at a time. So the holder factorises the same bits whatever the number of
+// ranks. apply() gathers X into a locally replicated copy (an Import built once), each rank
+// solves the blocks it holds, a sum of the zero-padded solutions hands them to every rank,
+// and each keeps the rows it owns.
 #include <Eigen/Core>
 #include <Eigen/LU>
 
@@ -30,6 +34,7 @@
 #include <Tpetra_Operator.hpp>
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace capsula::operators {
@@ -59,7 +64,7 @@ public:
   void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS, double alpha = 1.0,
              double beta = 0.0) const override;
 
-  /// The cells whose blocks this rank holds (owns rows of, s_c != 0).
+  /// The cells whose blocks this rank holds.
   int heldBlocks() const { return static_cast<int>(blocks_.size()); }
 
 private:
@@ -73,6 +78,7 @@ private:
   Teuchos::RCP<const Map> replicatedMap_;
   Teuchos::RCP<const Tpetra::Import<>> gather_;
   std::vector<Block> blocks_;
+  std::vector<std::pair<std::size_t, std::size_t>> blockUnknowns_; // every block's [first, end) unknowns, in order
   int firstOwnedNode_ = 0;
   int numOwnedNodes_ = 0;
   Teuchos::RCP<Teuchos::Time> timer_; // "Cell-block preconditioner": its applications
