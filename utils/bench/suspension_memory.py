@@ -10,8 +10,8 @@ first progress line, which the app prints once the scene is built, the precondit
 factorised and the output at t = 0 written, then stops the run. Per rank it reports the peak
 resident memory (VmHWM of /proc/PID/status), and per P the largest rank's and its ratio to one
 rank's. What the first output has not reached (the stiff stage solves, whose Krylov vectors are
-replicated) is not in the figure. It names the code version (git describe --always --dirty) and
-the CPU. Exits 1 if a run ends before its first progress line. Debian's /usr/bin/python3.
+replicated) is not in the figure. It names the source tree's version (git describe --always
+--dirty), the CPU, and per row the version the app reports (its build may be another's). Exits 1 if a run ends before its first progress line. Debian's /usr/bin/python3.
 """
 import argparse
 import os
@@ -84,7 +84,10 @@ def measure(args, ranks):
     if len(peaks) != ranks:
         sys.exit(f"suspension_memory: found {len(peaks)} processes of {executable} for {ranks} ranks "
                  "(another run of the same binary beside it?)")
-    return sorted(peaks), seconds
+    with open(log_path) as text:
+        banner = text.readline()
+    version = banner.split("(git ", 1)[1].split(",", 1)[0] if "(git " in banner else "?"
+    return sorted(peaks), seconds, version
 
 
 def main():
@@ -96,18 +99,19 @@ def main():
     parser.add_argument("--set", action="append", default=[], help="a deck override KEY=VALUE, passed to the app")
     args = parser.parse_args()
     counts = [int(n) for n in args.ranks.split(",")]
-    print(f"suspension_memory.py at git {report_helpers.git_sha()} on {report_helpers.cpu_model()}, "
+    print(f"suspension_memory.py (source tree at git {report_helpers.git_sha()}) on {report_helpers.cpu_model()}, "
           f"{os.cpu_count()} cores; deck {os.path.relpath(args.deck, ROOT)}"
           + "".join(f" --set '{s}'" for s in args.set))
-    print("| ranks | peak resident memory per rank (MiB) | largest | largest / one rank's | s to the first output |")
-    print("|---|---|---|---|---|")
+    print("| ranks | peak resident memory per rank (MiB) | largest | largest / one rank's | s to the first output "
+          "| app at git |")
+    print("|---|---|---|---|---|---|")
     reference = None
     for ranks in counts:
-        peaks, seconds = measure(args, ranks)
+        peaks, seconds, version = measure(args, ranks)
         largest = max(peaks)
         reference = reference if reference is not None else largest
         print(f"| {ranks} | {', '.join(f'{p:.0f}' for p in peaks)} | {largest:.0f} | {largest / reference:.2f} "
-              f"| {seconds:.0f} |", flush=True)
+              f"| {seconds:.0f} | {version} |", flush=True)
 
 
 if __name__ == "__main__":

@@ -64,29 +64,40 @@ CellBlockPreconditioner::CellBlockPreconditioner(Teuchos::RCP<const Map> map, st
     }
   }
   const int ranks = comm.getSize();
-  std::vector<double> rows;
+  std::vector<int> holders;
+  std::vector<int> travelling; // cells with rows on a rank other than their holder, in order
   double before = 0.0;
   for (const int c : blockCells) {
-    const int first = cellNodeOffsets[c], end = cellNodeOffsets[c + 1], numNodes = end - first;
-    const std::size_t n = 3 * static_cast<std::size_t>(numNodes);
-    const double weight = static_cast<double>(n) * static_cast<double>(n);
-    const int holder = std::min(ranks - 1, static_cast<int>(ranks * (before + 0.5 * weight) / entries));
-    before += weight;
-    const bool holding = holder == comm.getRank();
+    const double n = 3.0 * (cellNodeOffsets[c + 1] - cellNodeOffsets[c]);
+    holders.push_back(std::min(ranks - 1, static_cast<int>(ranks * (before + 0.5 * n * n) / entries)));
+    before += n * n;
     bool allRowsOnHolder = true;
     for (int p = 0; p < ranks; ++p) {
-      allRowsOnHolder = allRowsOnHolder && (p == holder || !ownsRowsOf(p, c));
+      allRowsOnHolder = allRowsOnHolder && (p == holders.back() || !ownsRowsOf(p, c));
     }
+    if (!allRowsOnHolder) {
+      travelling.push_back(static_cast<int>(holders.size()) - 1);
+    }
+  }
+  // First the blocks a rank computes whole, with no rank waiting on another; then the
+  // travelling ones.
+  std::vector<double> rows;
+  for (std::size_t b = 0; b < blockCells.size(); ++b) {
+    const int c = blockCells[b], first = cellNodeOffsets[c], numNodes = cellNodeOffsets[c + 1] - first;
+    if (holders[b] == comm.getRank() &&
+        std::find(travelling.begin(), travelling.end(), static_cast<int>(b)) == travelling.end()) {
+      core::require(rowsOf(c, rows) == numNodes, "CellBlockPreconditioner: cell ", c,
+                    " is owned whole but its rows are not.");
+      blocks_.push_back({c, first, numNodes, Eigen::PartialPivLU<Eigen::MatrixXf>()});
+      blocks_.back().lu.compute(blockMatrix(rows.data(), numNodes, cellScale[c]));
+    }
+  }
+  for (const int b : travelling) {
+    const int c = blockCells[static_cast<std::size_t>(b)], holder = holders[static_cast<std::size_t>(b)];
+    const int first = cellNodeOffsets[c], end = cellNodeOffsets[c + 1], numNodes = end - first;
+    const std::size_t n = 3 * static_cast<std::size_t>(numNodes);
+    const bool holding = holder == comm.getRank();
     const int firstRow = std::max(first, mine[0]), endRow = std::min(end, mine[1]);
-    if (allRowsOnHolder) { // the holder computes every row itself
-      if (holding) {
-        core::require(rowsOf(c, rows) == numNodes, "CellBlockPreconditioner: cell ", c,
-                      " is owned whole but its rows are not.");
-        blocks_.push_back({c, first, numNodes, Eigen::PartialPivLU<Eigen::MatrixXf>()});
-        blocks_.back().lu.compute(blockMatrix(rows.data(), numNodes, cellScale[c]));
-      }
-      continue;
-    }
     // Each rank's own rows of the cell, zero elsewhere, summed on the holder: every row
     // exactly once. One cell at a time, so no rank holds more than one block in transit.
     std::vector<double> partial(n * n, 0.0);
@@ -102,6 +113,7 @@ CellBlockPreconditioner::CellBlockPreconditioner(Teuchos::RCP<const Map> map, st
       blocks_.back().lu.compute(blockMatrix(full.data(), numNodes, cellScale[c]));
     }
   }
+  std::sort(blocks_.begin(), blocks_.end(), [](const Block& a, const Block& b) { return a.cell < b.cell; });
   for (const int c : blockCells) {
     blockUnknowns_.push_back(
         {3 * static_cast<std::size_t>(cellNodeOffsets[c]), 3 * static_cast<std::size_t>(cellNodeOffsets[c + 1])});
