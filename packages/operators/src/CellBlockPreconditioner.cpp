@@ -80,7 +80,8 @@ CellBlockPreconditioner::CellBlockPreconditioner(Teuchos::RCP<const Map> map, st
     }
   }
   // First the blocks a rank computes whole, with no rank waiting on another; then the
-  // travelling ones.
+  // travelling ones. Room for all of them first: a growing vector would copy the LUs.
+  blocks_.reserve(static_cast<std::size_t>(std::count(holders.begin(), holders.end(), comm.getRank())));
   std::vector<double> rows;
   for (std::size_t b = 0; b < blockCells.size(); ++b) {
     const int c = blockCells[b], first = cellNodeOffsets[c], numNodes = cellNodeOffsets[c + 1] - first;
@@ -108,6 +109,7 @@ CellBlockPreconditioner::CellBlockPreconditioner(Teuchos::RCP<const Map> map, st
     }
     std::vector<double> full(holding ? n * n : 0);
     Teuchos::reduce(partial.data(), full.data(), static_cast<int>(n * n), Teuchos::REDUCE_SUM, holder, comm);
+    std::vector<double>().swap(partial); // before the factorisation: one block fewer at the peak
     if (holding) {
       blocks_.push_back({c, first, numNodes, Eigen::PartialPivLU<Eigen::MatrixXf>()});
       blocks_.back().lu.compute(blockMatrix(full.data(), numNodes, cellScale[c]));
