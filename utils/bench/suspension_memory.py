@@ -98,7 +98,16 @@ def main():
     parser.add_argument("--runs", default="out/suspension-memory", help="where the runs write (default %(default)s)")
     parser.add_argument("--set", action="append", default=[], help="a deck override KEY=VALUE, passed to the app")
     args = parser.parse_args()
-    counts = [int(n) for n in args.ranks.split(",")]
+    try:
+        counts = [int(n) for n in args.ranks.split(",")]
+    except ValueError:
+        counts = []
+    if not counts or min(counts) < 1:
+        parser.error(f"--ranks '{args.ranks}' must be positive integers, comma-separated")
+    if not os.access(os.path.join(args.build, "apps", "suspension3d", "suspension3d"), os.X_OK):
+        parser.error(f"--build '{args.build}' has no apps/suspension3d/suspension3d")
+    if not os.path.isfile(args.deck):
+        parser.error(f"--deck '{args.deck}' is not a file")
     print(f"suspension_memory.py (source tree at git {report_helpers.git_sha()}) on {report_helpers.cpu_model()}, "
           f"{os.cpu_count()} cores; deck {os.path.relpath(args.deck, ROOT)}"
           + "".join(f" --set '{s}'" for s in args.set))

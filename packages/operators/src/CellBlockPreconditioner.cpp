@@ -115,24 +115,23 @@ CellBlockPreconditioner::CellBlockPreconditioner(Teuchos::RCP<const Map> map, st
       blocks_.back().lu.compute(blockMatrix(full.data(), numNodes, cellScale[c]));
     }
   }
-  std::sort(blocks_.begin(), blocks_.end(), [](const Block& a, const Block& b) { return a.cell < b.cell; });
   for (const int c : blockCells) {
     blockUnknowns_.push_back(
         {3 * static_cast<std::size_t>(cellNodeOffsets[c]), 3 * static_cast<std::size_t>(cellNodeOffsets[c + 1])});
   }
   // PartialPivLU does not report a zero pivot (nor NaN in the block): look at U's diagonal.
-  // Every rank learns of a bad block, so that all of them throw and none waits in
-  // the solve's next collective.
-  int singular = -1;
+  // Every rank learns of the lowest bad block, so that all of them throw the message one
+  // rank would, and none waits in the solve's next collective.
+  int singular = numCells;
   for (const Block& block : blocks_) {
     const Eigen::VectorXf pivots = block.lu.matrixLU().diagonal().cwiseAbs();
-    if (!(pivots.allFinite() && pivots.minCoeff() > 0.0f) && singular < 0) {
-      singular = block.cell;
+    if (!(pivots.allFinite() && pivots.minCoeff() > 0.0f)) {
+      singular = std::min(singular, block.cell);
     }
   }
-  int first = -1;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, singular, Teuchos::outArg(first));
-  core::require<core::NumericalError>(first < 0, "The cell-block preconditioner's block of cell ", first,
+  int first = numCells;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, singular, Teuchos::outArg(first));
+  core::require<core::NumericalError>(first == numCells, "The cell-block preconditioner's block of cell ", first,
                                       " is singular or not finite ('Solver/Preconditioner').");
 }
 
