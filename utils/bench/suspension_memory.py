@@ -29,13 +29,14 @@ DECK = os.path.join(ROOT, "input", "suspension3d", "margination", "h10-hct0.2.xm
 FIRST_PROGRESS = "t = 0 /"
 
 
-def app_processes(executable):
-    """The PIDs of the running processes of `executable`."""
+def app_processes(executable, session):
+    """The PIDs of the processes of `executable` in the session `session` (the run's own ranks,
+    not another run of the same binary beside it)."""
     pids = []
     for entry in os.listdir("/proc"):
         if entry.isdigit():
             try:
-                if os.readlink(f"/proc/{entry}/exe") == executable:
+                if os.readlink(f"/proc/{entry}/exe") == executable and os.getsid(int(entry)) == session:
                     pids.append(int(entry))
             except OSError:
                 continue
@@ -74,7 +75,7 @@ def measure(args, ranks):
                     sys.exit(f"suspension_memory: the {ranks}-rank run ended before its first progress line; "
                              f"see {log_path}")
             seconds = time.time() - start
-            peaks = [peak_resident_mib(pid) for pid in app_processes(executable)]
+            peaks = [peak_resident_mib(pid) for pid in app_processes(executable, job.pid)]
         finally:
             try:
                 os.killpg(job.pid, signal.SIGKILL)
@@ -82,8 +83,8 @@ def measure(args, ranks):
                 pass
             job.wait()
     if len(peaks) != ranks:
-        sys.exit(f"suspension_memory: found {len(peaks)} processes of {executable} for {ranks} ranks "
-                 "(another run of the same binary beside it?)")
+        sys.exit(f"suspension_memory: found {len(peaks)} processes of {executable} in the run's session "
+                 f"for {ranks} ranks")
     with open(log_path) as text:
         banner = text.readline()
     version = banner.split("(git ", 1)[1].split(",", 1)[0] if "(git " in banner else "?"
