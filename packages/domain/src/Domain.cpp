@@ -99,12 +99,30 @@ double Domain::distanceToNearestWall(const double x[3], int* nearest) const
 
 bool Domain::inFluid(const double x[3]) const
 {
-  for (const Wall& wall : walls_) {
-    if (!(wall.distance(x[wallNormalAxis]) > 0.0)) { // NaN fails too
-      return false;
+  return firstPointOutsideFluid(x, 1, 3) < 0;
+}
+
+int Domain::firstPointOutsideFluid(const double* points, int numPoints, int dimension) const
+{
+  core::require<core::Error>(dimension == 2 || dimension == 3, "points of dimension ", dimension,
+                             ": a domain holds 2D or 3D points");
+  for (int i = 0; i < numPoints; ++i) {
+    const double y = points[static_cast<std::size_t>(dimension) * i + wallNormalAxis];
+    for (const Wall& wall : walls_) {
+      if (!(wall.distance(y) > 0.0)) { // NaN fails too
+        return i;
+      }
     }
   }
-  return true;
+  return -1;
+}
+
+std::string Domain::nearestWallName(double y) const
+{
+  const double x[3] = {0.0, y, 0.0};
+  int nearest = -1;
+  distanceToNearestWall(x, &nearest);
+  return nearest >= 0 && walls_[static_cast<std::size_t>(nearest)].fluidSide < 0 ? "the upper wall" : "the wall";
 }
 
 std::string Domain::describe() const

@@ -124,10 +124,4 @@ KernelChoice readKernelChoice(const Teuchos::ParameterList& operatorList,
   return choice;
 }
 
-KernelChoice readKernelChoice(const Teuchos::ParameterList& operatorList,
-                              const std::map<std::string, KernelInfo>& kernels, bool wall)
-{
-  return readKernelChoice(operatorList, kernels, wall ? domain::Domain::aboveWall() : domain::Domain::unbounded());
-}
-
 } // namespace capsula::operators

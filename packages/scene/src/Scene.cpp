@@ -310,7 +310,7 @@ void Scene::setPositions(double t, const std::vector<double>& positions)
       }
       core::require<core::NumericalError>(description_.domain.inFluid(p), "At t = ", t, " node ", i, " of '",
                                           description_.cells[static_cast<std::size_t>(c)].path, "' reached ",
-                                          nearestWallName(description_.domain, p), " (y = ", p[1],
+                                          description_.domain.nearestWallName(p[1]), " (y = ", p[1],
                                           description_.contact.enabled
                                               ? "). The contact repulsion did not hold it: raise 'Contact/Strength'."
                                               : "). Without 'Contact/Enabled' the model has no contact force.");

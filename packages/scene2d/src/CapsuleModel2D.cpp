@@ -46,7 +46,7 @@ CapsuleModel2D::CapsuleModel2D(const Teuchos::RCP<const Teuchos::Comm<int>>& com
       referenceNodes_(initialCellNodes(cell)),
       freeReference_(elasticity::prestressedReference(referenceNodes_, cell.prestress))
 {
-  core::require<core::InputError>(!flow.wall || cell.lowestPointHeight > 0.0,
+  core::require<core::InputError>(!flow.domain.hasLowerWall() || cell.lowestPointHeight > 0.0,
                                   "Cell/Lowest point height must be > 0 above the wall, got ", cell.lowestPointHeight,
                                   ": raise it or set Wall/Enabled to false.");
   elasticity::BendingBoundInput bending; // the ellipse's sharpest curvature a / b^2 = AR^(3/2)

@@ -37,8 +37,8 @@ FlowSettings2D readFlowSettings2D(const Teuchos::ParameterList& flow, const Teuc
   if (flow.isSublist("Shear rate")) {
     s.shearRate = operators::readShearRate(flow.sublist("Shear rate"), "Flow/Shear rate");
   }
-  s.wall = wall.get<bool>("Enabled");
-  s.kernel = operators::readKernelChoice(operatorList, kernels.infos(), s.wall);
+  s.domain = wall.get<bool>("Enabled") ? domain::Domain::aboveWall() : domain::Domain::unbounded();
+  s.kernel = operators::readKernelChoice(operatorList, kernels.infos(), s.domain);
   return s;
 }
 

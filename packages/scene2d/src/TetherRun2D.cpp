@@ -57,7 +57,7 @@ TetherRun2D::TetherRun2D(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, con
              readContourDiscretisation2D(deck.sublist("Discretisation")),
              operators::readSolverParameters(deck.sublist("Solver")))
 {
-  core::require<core::InputError>(!tether_.enabled || model_.flow().wall,
+  core::require<core::InputError>(!tether_.enabled || model_.flow().domain.hasLowerWall(),
                                   "Tether/Enabled needs the wall (Wall/Enabled = true): the tether point is "
                                   "held above it.");
 }
@@ -146,8 +146,9 @@ TetherRunner2D::TetherRunner2D(CapsuleModel2D& model, const TetherSettings2D& te
 {
   // With the wall, a stage state or a step with a node on or below it is a rejected
   // attempt (NodesInFluid2D.hpp), not a failure of the run.
-  if (model_.flow().wall) {
-    integrator_.setDomainCheck(requireNodesInFluid);
+  if (model_.flow().domain.hasWalls()) {
+    integrator_.setDomainCheck(
+        [domain = model_.flow().domain](const std::vector<double>& y) { requireNodesInFluid(domain, y); });
   }
   // The stiff methods' Jacobian (VelocityJacobian2D.hpp) reads the model at every
   // linearisation, so it follows the tethering and the regrids as it is.

@@ -148,7 +148,7 @@ Eigen::MatrixXf VelocityJacobian2D::approximateJacobian(const contour::Contour& 
   Eigen::MatrixXf A;
   if (settings_.preconditioner == StiffPreconditioner2D::PointSingleLayer) {
     // M K column by column: K's columns hold ~2 kColumnSpacing entries each.
-    const Eigen::MatrixXf M = pointSingleLayer2D(frozen, model_.flow().wall).cast<float>();
+    const Eigen::MatrixXf M = pointSingleLayer2D(frozen, model_.flow().domain.hasLowerWall()).cast<float>();
     A.setZero(2 * n, 2 * n);
     const auto c = static_cast<float>(coefficient_);
     for (Eigen::Index column = 0; column < K.outerSize(); ++column) {

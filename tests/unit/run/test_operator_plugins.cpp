@@ -135,8 +135,8 @@ TEST(OperatorPlugins, UnknownNamesListTheRegisteredOnes)
   // A list no validator saw: the registry's own message.
   Teuchos::ParameterList operatorList;
   operatorList.set("Kernel", "Hasimoto");
-  const std::string unvalidated =
-      inputErrorMessage([&] { operators::readKernelChoice(operatorList, libraries.kernels.infos(), false); });
+  const std::string unvalidated = inputErrorMessage(
+      [&] { operators::readKernelChoice(operatorList, libraries.kernels.infos(), domain::Domain::unbounded()); });
   EXPECT_NE(
       unvalidated.find("no Green's function kernel named 'Hasimoto'; registered: FreeSpace, Periodic, PeriodicChannel, "
                        "PeriodicWall, ScaledFreeSpace, Wall."),

@@ -68,8 +68,9 @@ class RelaxationWithoutFlow {
 public:
   explicit RelaxationWithoutFlow(CapsuleModel2D& model)
       : model_(model),
-        velocity_(scene2d::makeInterfaceVelocity2D(model.flow().wall, bendingComm(), model.numberOfNodes(),
-                                                   model.discretisation(), operators::SolverParameters{}))
+        velocity_(scene2d::makeInterfaceVelocity2D(model.flow().domain.hasLowerWall(), bendingComm(),
+                                                   model.numberOfNodes(), model.discretisation(),
+                                                   operators::SolverParameters{}))
   {
     conditions_ = model.flow().conditions;
     conditions_.background = scene2d::LinearFlow2D{};

@@ -1,7 +1,8 @@
 // The tether run's domain check (NodesInFluid2D.hpp, TimeIntegrator::setDomainCheck): a
 // Runge-Kutta attempt whose stage state puts a node through the wall is a rejected step,
-// not the end of the run.
+// not the end of the run. The check asks the model's domain::Domain for the walls.
 #include <capsula/core/Error.hpp>
+#include <capsula/domain/Domain.hpp>
 #include <capsula/scene2d/NodesInFluid2D.hpp>
 #include <capsula/timeint/TimeIntegrator.hpp>
 
@@ -34,23 +35,51 @@ timeint::TimeIntegrator relaxingNode(bool adaptive)
   });
 }
 
+void checkAboveWall(const std::vector<double>& y)
+{
+  requireNodesInFluid(domain::Domain::aboveWall(), y);
+}
+
 // What the tether run does: the same integrator with the wall as its domain.
 timeint::TimeIntegrator relaxingNodeAboveTheWall(bool adaptive)
 {
   timeint::TimeIntegrator integrator = relaxingNode(adaptive);
-  integrator.setDomainCheck(requireNodesInFluid);
+  integrator.setDomainCheck(checkAboveWall);
   return integrator;
 }
 
 } // namespace
 
-TEST(NodesInFluid2D, FindsTheFirstNodeOnOrBelowTheWall)
+// The node is found by its height alone (the second of its two coordinates), on the wall,
+// through it or at a NaN height; a channel's upper wall counts as well, and without walls
+// nothing is outside.
+TEST(NodesInFluid2D, FindsTheFirstNodeOnOrThroughAWallOfTheDomain)
 {
-  EXPECT_EQ(firstNodeOutsideFluid({0.0, 1.0, 5.0, 1e-300}), -1);
-  EXPECT_EQ(firstNodeOutsideFluid({0.0, 1.0, 5.0, 0.0, 1.0, -1.0}), 1);
-  EXPECT_EQ(firstNodeOutsideFluid({0.0, std::numeric_limits<double>::quiet_NaN()}), 0);
-  EXPECT_THROW(requireNodesInFluid({0.0, 1.0, 2.0, -1e-9}), NodeOutsideFluid);
-  EXPECT_NO_THROW(requireNodesInFluid({0.0, 1.0, 2.0, 1e-9}));
+  const domain::Domain above = domain::Domain::aboveWall();
+  const std::vector<double> nodes{0.0, 1.0, 5.0, 0.0, 1.0, -1.0};
+  EXPECT_EQ(above.firstPointOutsideFluid(nodes.data(), 1, 2), -1);
+  EXPECT_EQ(above.firstPointOutsideFluid(nodes.data(), 3, 2), 1);
+  const double nan[2] = {0.0, std::numeric_limits<double>::quiet_NaN()};
+  EXPECT_EQ(above.firstPointOutsideFluid(nan, 1, 2), 0);
+  const std::vector<double> tall{0.0, 1.0, 5.0, 3.0};
+  EXPECT_EQ(domain::Domain::channel(2.0).firstPointOutsideFluid(tall.data(), 2, 2), 1);
+  EXPECT_EQ(domain::Domain::unbounded().firstPointOutsideFluid(nodes.data(), 3, 2), -1);
+
+  EXPECT_NO_THROW(requireNodesInFluid(above, {0.0, 1.0, 2.0, 1e-9}));
+  try {
+    requireNodesInFluid(above, {0.0, 1.0, 2.0, -1e-9});
+    FAIL() << "a node below the wall must be refused";
+  } catch (const timeint::StateOutsideDomain& error) {
+    EXPECT_NE(std::string(error.what()).find("node 1 at (2, -1e-09) reached the wall"), std::string::npos)
+        << error.what();
+  }
+  try {
+    requireNodesInFluid(domain::Domain::channel(2.0), tall);
+    FAIL() << "a node above the upper wall must be refused";
+  } catch (const timeint::StateOutsideDomain& error) {
+    EXPECT_NE(std::string(error.what()).find("node 1 at (5, 3) reached the upper wall"), std::string::npos)
+        << error.what();
+  }
 }
 
 // The bug: after tethering an a/b = 0.25 cell at its sharp end, the first RKF45 attempt with
@@ -105,7 +134,7 @@ TEST(NodesInFluid2D, FixedStepsThroughTheWallFailWithAClearError)
     integrator.step(state, 1.0);
     FAIL() << "a fixed step through the wall must fail";
   } catch (const core::NumericalError& error) {
-    EXPECT_NE(std::string(error.what()).find("is on or below the wall"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("reached the wall"), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find("fixed"), std::string::npos) << error.what();
   }
   EXPECT_EQ(state.time, 0.0); // the last accepted state
@@ -121,7 +150,7 @@ TEST(NodesInFluid2D, ACellDrivenIntoTheWallFailsWhenTheStepCollapses)
     dydt[0] = 0.0;
     dydt[1] = -1.0; // towards the wall whatever the gap
   });
-  integrator.setDomainCheck(requireNodesInFluid);
+  integrator.setDomainCheck(checkAboveWall);
   timeint::IntegrationState state = integrator.start(0.0, {0.0, 1e-15});
   EXPECT_THROW(integrator.step(state, 1.0), core::NumericalError);
   EXPECT_EQ(state.time, 0.0);

@@ -1,8 +1,10 @@
 #pragma once
-// The fluid domain of a 3D scene: which plane walls bound it and along which directions it
+// The fluid domain of a scene: which plane walls bound it and along which directions it
 // is periodic. Every part of the code that needs the geometry of the domain (placement and
 // gap checks, contact with a wall, ligand-coated walls, wall stress maps, metrics, the
-// choice of the Green's function) asks this object; nothing else assumes a wall at y = 0.
+// choice of the Green's function, the runs' checks that every node stays in the fluid, in
+// 3D and for the 2D contour in the x-y plane) asks this object; nothing else assumes a wall
+// at y = 0.
 //
 // Axes: x (0) is the flow direction, y (1) the wall normal, z (2) the vorticity direction.
 // Walls are planes y = const: the lower wall y = 0 (the thesis's wall) and, for a channel
@@ -77,6 +79,13 @@ public:
   double distanceToNearestWall(const double x[3], int* nearest = nullptr) const;
   /// Whether x lies strictly inside the fluid (every wall distance > 0; NaN is outside).
   bool inFluid(const double x[3]) const;
+  /// The first of `numPoints` points, `dimension` (2 or 3) coordinates each, that is not
+  /// strictly inside the fluid (on or through a wall, or at a height that is not a number),
+  /// or -1. Only the height counts: coordinate wallNormalAxis in 2D as in 3D.
+  int firstPointOutsideFluid(const double* points, int numPoints, int dimension) const;
+  /// "the wall" (the lower wall y = 0) or "the upper wall": the wall nearest to a point at
+  /// height y, for messages.
+  std::string nearestWallName(double y) const;
 
   /// A phrase for messages and the run's "Terms built" block, e.g. "a channel 0 < y < 10
   /// periodic along x (L_x = 20)".

@@ -35,11 +35,6 @@ void declareKernelParameters(Teuchos::ParameterList& operatorList, const std::ma
 KernelChoice readKernelChoice(const Teuchos::ParameterList& operatorList,
                               const std::map<std::string, KernelInfo>& kernels, const domain::Domain& domain);
 
-/// readKernelChoice for a domain without periodic directions, with (`wall`) or without the
-/// wall y = 0 (the 2D model).
-KernelChoice readKernelChoice(const Teuchos::ParameterList& operatorList,
-                              const std::map<std::string, KernelInfo>& kernels, bool wall);
-
 /// Whether a kernel registered with `info` serves `domain` (its walls and periodicity).
 bool servesDomain(const KernelInfo& info, const domain::Domain& domain);
 

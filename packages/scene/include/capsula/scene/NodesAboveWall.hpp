@@ -10,7 +10,6 @@
 // fails only when the step falls below 'Time integration/Minimum step'.
 #include "capsula/scene/Scene.hpp"
 
-#include <string>
 #include <vector>
 
 namespace capsula::scene {
@@ -19,8 +18,5 @@ namespace capsula::scene {
 /// height) of `positions` (3 per node, the scene's numbering) on or through a wall of the
 /// scene's domain or with a non-finite height. Nothing to check without a wall.
 void requireNodesAboveWall(const Scene& scene, const std::vector<double>& positions);
-
-/// "the wall" (the lower wall y = 0) or "the upper wall": the wall nearest to x, for messages.
-std::string nearestWallName(const domain::Domain& domain, const double* x);
 
 } // namespace capsula::scene

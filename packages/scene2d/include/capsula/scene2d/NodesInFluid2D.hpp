@@ -1,7 +1,8 @@
 #pragma once
-// The 2D contour's domain: every node above the wall y = 0.
+// The 2D contour's domain check: every node strictly inside the fluid of the model's
+// domain::Domain (above the wall y = 0 with Wall/Enabled).
 //
-// The plane-wall kernel is defined for y > 0 only (a node on or below the wall meets its
+// The plane-wall kernel is defined in the fluid only (a node on or below the wall meets its
 // own image). An explicit Runge-Kutta step evaluates the velocity at stage states
 // y_n + h sum a_ij k_j that the error control has not judged yet: with a step too large
 // for a fast mode, a stage can put a node through the wall although the exact solution
@@ -12,31 +13,14 @@
 // requireNodesInFluid is the tether run's domain check (TimeIntegrator::setDomainCheck):
 // such an attempt is then a rejected step, retried with half the step, and the run fails
 // only when the step collapses below the minimum.
-#include <capsula/timeint/TimeIntegrator.hpp>
+#include <capsula/domain/Domain.hpp>
 
-#include <string>
 #include <vector>
 
 namespace capsula::scene2d {
 
-/// A state (x0, y0, x1, y1, ...) with a node on or below the wall y = 0.
-class NodeOutsideFluid : public timeint::StateOutsideDomain {
-public:
-  NodeOutsideFluid(int node, double x, double y);
-  int node() const { return node_; }
-  double x() const { return x_; }
-  double y() const { return y_; }
-
-private:
-  int node_;
-  double x_;
-  double y_;
-};
-
-/// The first node of the state x0, y0, x1, y1, ... with y <= 0 (or not a number), or -1.
-int firstNodeOutsideFluid(const std::vector<double>& state);
-
-/// Throws NodeOutsideFluid for the first node with y <= 0.
-void requireNodesInFluid(const std::vector<double>& state);
+/// Throws timeint::StateOutsideDomain naming the first node of the state (x0, y0, x1, y1,
+/// ...) on or through a wall of `domain`, or at a height that is not a number.
+void requireNodesInFluid(const domain::Domain& domain, const std::vector<double>& state);
 
 } // namespace capsula::scene2d
