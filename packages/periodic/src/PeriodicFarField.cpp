@@ -24,6 +24,8 @@ void PeriodicFarField::setSources(const double* x, const double* y, const double
   y_ = y;
   z_ = z;
   offsets_ = cellPointOffsets;
+  ownTargets_.clear(); // new geometry: the own-cell blocks are summed again
+  ownTargetCells_.clear();
   const int numPoints = offsets_.empty() ? 0 : offsets_.back();
   folded_.resize(3 * static_cast<std::size_t>(numPoints));
   for (int q = 0; q < numPoints; ++q) {
@@ -110,28 +112,63 @@ void PeriodicFarField::doubleLayer(const operators::DoubleLayerSources& sources,
     std::copy(u.begin(), u.end(), result);
     return;
   }
-  // - s_t sum_{own cell} T a_q with the local kernel: the direct sums of the subtracted form
-  // with zero density (forTargetBlocks writes them to result; the fast sum is added after).
+  // - s_t sum_{own cell} T a_q with the local kernel, from the blocks of the geometry.
+  const std::vector<double>& blocks = ownCellBlocks(sources, targets, targetCells, n);
+  for (int t = 0; t < n; ++t) {
+    const double* s = subtracted + 3 * t;
+    const double* B = &blocks[9 * static_cast<std::size_t>(t)];
+    for (int j = 0; j < 3; ++j) {
+      result[3 * t + j] = u[3 * t + j] + s[0] * B[j] + s[1] * B[3 + j] + s[2] * B[6 + j];
+    }
+  }
+}
+
+const std::vector<double>& PeriodicFarField::ownCellBlocks(const operators::DoubleLayerSources& sources,
+                                                           const double* targets, const int* targetCells, int n)
+{
+  const std::size_t count = static_cast<std::size_t>(n);
+  if (ownTargets_.size() == 3 * count && std::equal(ownTargets_.begin(), ownTargets_.end(), targets) &&
+      std::equal(ownTargetCells_.begin(), ownTargetCells_.end(), targetCells)) {
+    return ownBlocks_;
+  }
+  ownTargets_.assign(targets, targets + 3 * count);
+  ownTargetCells_.assign(targetCells, targetCells + count);
+  ownBlocks_.assign(9 * count, 0.0);
+  // The direct sums of the subtracted form with zero density give -sum_{own cell} T (s_t) a_q
+  // (forTargetBlocks writes them to `column`), once for each unit vector s_t = e_i.
+  const std::size_t numPoints = folded_.size() / 3;
   const std::vector<double> zero(numPoints, 0.0);
   const operators::DoubleLayerSources own{x_,         y_,          z_,          sources.ax, sources.ay,
                                           sources.az, zero.data(), zero.data(), zero.data()};
-  operators::forTargetBlocks(targets, targetCells, subtracted, n, result, [&](operators::TargetBlock& block, int cell) {
-    const int begin = offsets_[cell], end = offsets_[cell + 1];
-    switch (fluid_) {
-    case PeriodicFluid::Unbounded:
-      operators::addDoubleLayerSums<operators::FreeSpace3DKernel, true>(block, own, begin, end);
-      break;
-    case PeriodicFluid::AboveWall:
-      operators::addDoubleLayerSums<operators::Wall3DKernel, true>(block, own, begin, end);
-      break;
-    case PeriodicFluid::Channel:
-      operators::addDoubleLayerSums<NearestWallKernel, true>(NearestWallKernel{channelHeight_}, block, own, begin, end);
-      break;
+  std::vector<double> unit(3 * count, 0.0), column(3 * count);
+  for (int i = 0; i < 3; ++i) {
+    for (std::size_t t = 0; t < count; ++t) {
+      unit[3 * t] = unit[3 * t + 1] = unit[3 * t + 2] = 0.0;
+      unit[3 * t + i] = 1.0;
     }
-  });
-  for (std::size_t k = 0; k < u.size(); ++k) {
-    result[k] += u[k];
+    operators::forTargetBlocks(
+        targets, targetCells, unit.data(), n, column.data(), [&](operators::TargetBlock& block, int cell) {
+          const int begin = offsets_[cell], end = offsets_[cell + 1];
+          switch (fluid_) {
+          case PeriodicFluid::Unbounded:
+            operators::addDoubleLayerSums<operators::FreeSpace3DKernel, true>(block, own, begin, end);
+            break;
+          case PeriodicFluid::AboveWall:
+            operators::addDoubleLayerSums<operators::Wall3DKernel, true>(block, own, begin, end);
+            break;
+          case PeriodicFluid::Channel:
+            operators::addDoubleLayerSums<NearestWallKernel, true>(NearestWallKernel{channelHeight_}, block, own, begin,
+                                                                   end);
+            break;
+          }
+        });
+    for (std::size_t t = 0; t < count; ++t) {
+      for (int j = 0; j < 3; ++j) {
+        ownBlocks_[9 * t + 3 * i + j] = column[3 * t + j];
+      }
+    }
   }
+  return ownBlocks_;
 }
 
 std::unique_ptr<operators::FarFieldSummation> PeriodicFreeSpaceKernel::farFieldSummation() const
