@@ -64,6 +64,7 @@ TEST(NodesInFluid2D, FindsTheFirstNodeOnOrThroughAWallOfTheDomain)
   const std::vector<double> tall{0.0, 1.0, 5.0, 3.0};
   EXPECT_EQ(domain::Domain::channel(2.0).firstPointOutsideFluid(tall.data(), 2, 2), 1);
   EXPECT_EQ(domain::Domain::unbounded().firstPointOutsideFluid(nodes.data(), 3, 2), -1);
+  EXPECT_THROW(above.firstPointOutsideFluid(nodes.data(), 1, 4), core::Error); // 2D or 3D points only
 
   EXPECT_NO_THROW(requireNodesInFluid(above, {0.0, 1.0, 2.0, 1e-9}));
   try {
