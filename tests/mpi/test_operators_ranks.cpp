@@ -239,13 +239,13 @@ TEST(OperatorRanks, CellBlocksAreBalancedOverTheRanksAndApplyAsOnOneRank)
   const auto apply = [](const CellBlockPreconditioner& M) {
     Tpetra::MultiVector<double> x(M.getDomainMap(), 1), y(M.getRangeMap(), 1);
     auto in = x.getDataNonConst(0);
-    for (std::size_t k = 0; k < in.size(); ++k) {
+    for (decltype(in.size()) k = 0; k < in.size(); ++k) {
       in[k] = std::cos(0.7 * static_cast<double>(M.getDomainMap()->getGlobalElement(static_cast<int>(k))));
     }
     M.apply(x, y);
     std::vector<double> out(24, 0.0);
     const auto data = y.getData(0);
-    for (std::size_t k = 0; k < data.size(); ++k) {
+    for (decltype(data.size()) k = 0; k < data.size(); ++k) {
       out[static_cast<std::size_t>(M.getRangeMap()->getGlobalElement(static_cast<int>(k)))] = data[k];
     }
     return out;

@@ -21,6 +21,7 @@
 #include <memory>
 #include <vector>
 
+namespace membrane_energy_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 using namespace capsula::elasticity;
@@ -142,3 +143,5 @@ TEST(MembraneEnergy, PowerBalanceConvergesUnderRefinement)
     EXPECT_LT(errors[2], 5e-3) << law->name();
   }
 }
+
+} // namespace membrane_energy_test

@@ -17,6 +17,7 @@
 #include <memory>
 #include <vector>
 
+namespace membrane_redistribution_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 using namespace capsula::elasticity;
@@ -86,3 +87,5 @@ TEST(MembraneRedistribution, NodesStayMaterialPointsAndTheEnergyIsKept)
   EXPECT_GT(orderOverLevels(levels, energyErrors), 2.5);
   EXPECT_LT(std::abs(energyErrors.back()), 1e-4);
 }
+
+} // namespace membrane_redistribution_test

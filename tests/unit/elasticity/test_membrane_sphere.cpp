@@ -19,6 +19,7 @@
 #include <memory>
 #include <vector>
 
+namespace membrane_sphere_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 using namespace capsula::elasticity;
@@ -188,3 +189,5 @@ TEST(MembraneSphere, ElementLoadsConvergeToTheLaplaceLoad)
   EXPECT_LT(worst[2], 0.01);
   EXPECT_GT(order, 1.8);
 }
+
+} // namespace membrane_sphere_test

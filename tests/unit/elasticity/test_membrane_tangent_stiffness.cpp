@@ -17,6 +17,7 @@
 #include <memory>
 #include <vector>
 
+namespace membrane_tangent_stiffness_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 using namespace capsula::elasticity;
@@ -201,3 +202,5 @@ TEST(MembraneTangentStiffness, RefusedForTheContourIntegralLoad)
   MembraneMechanics m(mesh, mesh.positions(), std::make_shared<NeoHookeanLaw>(G));
   EXPECT_THROW(m.tangentStiffness(mesh.positions().data()), capsula::core::InputError);
 }
+
+} // namespace membrane_tangent_stiffness_test

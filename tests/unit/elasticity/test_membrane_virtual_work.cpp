@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+namespace membrane_virtual_work_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 using namespace capsula::elasticity;
@@ -261,3 +262,5 @@ TEST(MembraneVirtualWork, FoldCheckAloneMatchesEvaluate)
     EXPECT_EQ(alone, full) << law->name();
   }
 }
+
+} // namespace membrane_virtual_work_test

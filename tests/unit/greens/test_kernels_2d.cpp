@@ -15,6 +15,7 @@
 
 using capsula::testing::pi;
 
+namespace kernels_2d_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 using namespace capsula::greens;
@@ -286,3 +287,5 @@ TEST(WallKernel2D, VelocityVanishesOnTheWall)
 }
 
 } // namespace
+
+} // namespace kernels_2d_test

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 
+namespace flow_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 using namespace capsula;
@@ -274,3 +275,5 @@ TEST(WallShearStress, UndisturbedShearGivesOne)
 }
 
 } // namespace
+
+} // namespace flow_test

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+namespace jacobian_products_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 using capsula::operators::JacobianProducts;
@@ -141,3 +142,5 @@ TEST(JacobianProducts, ReplacesTheOldestWhenFull)
   keep(none, a);
   EXPECT_EQ(none.size(), 0u);
 }
+
+} // namespace jacobian_products_test

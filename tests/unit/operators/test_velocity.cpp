@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 
+namespace velocity_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 using namespace capsula;
@@ -308,3 +309,5 @@ TEST(Velocity, PassiveCellDoesNotDisturbTheOther)
 }
 
 } // namespace
+
+} // namespace velocity_test

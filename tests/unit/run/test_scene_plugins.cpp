@@ -20,7 +20,7 @@
 #include <algorithm>
 #include <string>
 
-namespace capsula::run {
+namespace capsula::run::scene_plugins_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 using capsula::testing::inputErrorMessage;
@@ -96,4 +96,4 @@ TEST_F(ScenePlugIns, TheStandardLibrariesRefuseTheLawAndTheMethodTheyDoNotHold)
 }
 
 } // namespace
-} // namespace capsula::run
+} // namespace capsula::run::scene_plugins_test

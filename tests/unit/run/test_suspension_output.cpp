@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+namespace suspension_output_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 namespace core = capsula::core;
@@ -463,3 +464,5 @@ TEST_F(SuspensionRunTest, OutputsMatchTheSnapshotsAndSurviveARestart)
 }
 
 } // namespace
+
+} // namespace suspension_output_test

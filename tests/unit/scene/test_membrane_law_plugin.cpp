@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+namespace membrane_law_plugin_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 namespace core = capsula::core;
@@ -213,3 +214,5 @@ TEST(MembraneLawPlugin, InflatedSphereCarriesTheClosedFormTension)
     }
   }
 }
+
+} // namespace membrane_law_plugin_test

@@ -23,7 +23,8 @@
 #include <memory>
 #include <string>
 
-namespace capsula::scene2d {
+namespace capsula::scene2d::
+    membrane_law_2d_test { // the file's own names, apart from those of the files compiled with it
 namespace {
 
 using capsula::testing::inputErrorMessage;
@@ -142,4 +143,4 @@ TEST(MembraneLaw2D, UnknownNameIsRefusedNamingTheKey)
 }
 
 } // namespace
-} // namespace capsula::scene2d
+} // namespace capsula::scene2d::membrane_law_2d_test

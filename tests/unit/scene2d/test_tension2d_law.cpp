@@ -12,6 +12,7 @@
 
 namespace {
 
+namespace scene2d = capsula::scene2d;
 using capsula::scene2d::HookeanLaw2D;
 
 TEST(Tension2DLaw, TensionAndEnergyDensity)
