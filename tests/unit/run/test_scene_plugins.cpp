@@ -20,7 +20,8 @@
 #include <algorithm>
 #include <string>
 
-namespace capsula::run::scene_plugins_test { // the file's own names, apart from those of the files compiled with it
+// The file's own names, apart from those of the files compiled with it.
+namespace capsula::run::scene_plugins_test {
 namespace {
 
 using capsula::testing::inputErrorMessage;

@@ -23,8 +23,8 @@
 #include <memory>
 #include <string>
 
-namespace capsula::scene2d::
-    membrane_law_2d_test { // the file's own names, apart from those of the files compiled with it
+// The file's own names, apart from those of the files compiled with it.
+namespace capsula::scene2d::membrane_law_2d_test {
 namespace {
 
 using capsula::testing::inputErrorMessage;
