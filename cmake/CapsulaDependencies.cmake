@@ -2,6 +2,10 @@
 # capsula::deps::* interface targets defined here.
 
 find_package(MPI REQUIRED COMPONENTS C CXX)
+# Capsula calls MPI through its C interface (and Teuchos's). Open MPI's mpi.h would otherwise
+# define the deprecated C++ bindings' classes, whose inline virtual functions every translation
+# unit that includes it compiles again (about 14 kB of code per object file).
+add_compile_definitions(OMPI_SKIP_MPICXX MPICH_SKIP_MPICXX)
 
 # Debian's Trilinos 13.2 has no imported targets: wrap its variables in an
 # interface target so packages can link it like any other dependency.

@@ -1,6 +1,6 @@
 # Test registration helpers.
 #
-# capsula_add_unit_test(<name> SOURCES ... DEPENDS ... [LABELS ...])
+# capsula_add_unit_test(<name> SOURCES ... DEPENDS ... [LABELS ...] [OPTIMIZED])
 #   A GoogleTest executable (one per package); every TEST() becomes its own ctest entry
 #   (label "unit").
 # capsula_add_mpi_test(<name> SOURCES ... DEPENDS ... [RANKS n] [LABELS ...])
@@ -21,8 +21,23 @@ if(_capsula_uid STREQUAL "0")
   list(APPEND CAPSULA_MPIEXEC_PREFLAGS --allow-run-as-root)
 endif()
 
-# Every test executable reuses capsula_test_support's precompiled headers (same flags).
+# The tests' own code compiles at -O1 in Release builds, the libraries they test at the build
+# type's -O3: on a test batch -O1 takes about half the compiler time of -O3 (7.9 s against
+# 14.9 s for test_run's first batch), and the results are the same bit for bit (no -ffast-math,
+# no FMA on baseline x86-64). An inline function that both a test and a library compile out of
+# line runs the test's copy, which the linker meets first.
+set(CAPSULA_TEST_OPTIMIZATION "-O1" CACHE STRING
+  "Optimization flag of the test executables' own code in Release builds")
+
+# capsula_set_test_options(<target>): the tests' optimization flag.
+function(capsula_set_test_options name)
+  target_compile_options(${name} PRIVATE $<$<CONFIG:Release>:${CAPSULA_TEST_OPTIMIZATION}>)
+endfunction()
+
+# Every test executable reuses capsula_test_support's precompiled headers, so it needs the same
+# flags: GCC takes the optimization level from the precompiled header, not the command line.
 function(capsula_reuse_test_headers name)
+  capsula_set_test_options(${name})
   if(CAPSULA_PRECOMPILED_HEADERS)
     target_precompile_headers(${name} REUSE_FROM capsula_test_support)
   endif()
@@ -30,12 +45,19 @@ endfunction()
 
 # One executable per package: its sources are compiled in unity batches (CAPSULA_UNITY_BUILD),
 # except those marked SKIP_UNITY_BUILD_INCLUSION because file-local names clash.
+# OPTIMIZED keeps the build type's optimization for a test whose own code holds the loops it
+# times or runs at length (a library template it instantiates); it compiles without the
+# precompiled headers, which carry -O1.
 function(capsula_add_unit_test name)
-  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;DEPENDS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "OPTIMIZED" "TIMEOUT" "SOURCES;DEPENDS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE capsula_test_support ${ARG_DEPENDS})
   capsula_set_warnings(${name})
-  capsula_reuse_test_headers(${name})
+  if(ARG_OPTIMIZED)
+    set_target_properties(${name} PROPERTIES DISABLE_PRECOMPILE_HEADERS ON)
+  else()
+    capsula_reuse_test_headers(${name})
+  endif()
   if(CAPSULA_UNITY_BUILD)
     set_target_properties(${name} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
   endif()
