@@ -23,9 +23,9 @@ endif()
 
 # The tests' own code compiles at -O1 in Release builds, the libraries they test at the build
 # type's -O3: on a test batch -O1 takes about half the compiler time of -O3 (7.9 s against
-# 14.9 s for test_run's first batch), and the results are the same bit for bit (no -ffast-math,
-# no FMA on baseline x86-64). An inline function that both a test and a library compile out of
-# line runs the test's copy, which the linker meets first.
+# 14.9 s for test_run's first batch), and the results agree to round-off (docs/developer-guide.md,
+# "Build time"). An inline function that both a test and a library compile out of line runs the
+# test's copy, which the linker meets first.
 set(CAPSULA_TEST_OPTIMIZATION "-O1" CACHE STRING
   "Optimization flag of the test executables' own code in Release builds")
 
