@@ -28,6 +28,10 @@ endif()
 # test's copy, which the linker meets first.
 set(CAPSULA_TEST_OPTIMIZATION "-O1" CACHE STRING
   "Optimization flag of the test executables' own code in Release builds")
+if(NOT CAPSULA_TEST_OPTIMIZATION MATCHES "^-O([0-3sgz]|fast)?$")
+  message(FATAL_ERROR "CAPSULA_TEST_OPTIMIZATION = '${CAPSULA_TEST_OPTIMIZATION}' is not a GCC "
+    "optimization flag (-O0, -O1, -O2, -O3, -Os, -Og, ...)")
+endif()
 
 # capsula_set_test_options(<target>): the tests' optimization flag.
 function(capsula_set_test_options name)
