@@ -46,14 +46,15 @@ ContourLocation locateArcLength(const Contour& contour, double arcLength)
   return {segment, t};
 }
 
-ContourLocation lowestPoint(const Contour& contour)
+ContourExtremum extremePoint(const Contour& contour, int axis, Extreme extreme)
 {
-  const CubicSpline& y = contour.ySpline();
-  const std::vector<double>& s = y.knots();
-  ContourLocation lowest{0, 0.0};
-  double lowestY = y.piece(0).d;
-  for (int k = 0; k < y.numberOfPieces(); ++k) {
-    const CubicPiece& piece = y.piece(k);
+  core::require<core::InputError>(axis == 0 || axis == 1, "extremePoint: axis must be 0 (x) or 1 (y), got ", axis);
+  const CubicSpline& spline = axis == 0 ? contour.xSpline() : contour.ySpline();
+  const std::vector<double>& s = spline.knots();
+  const double sign = extreme == Extreme::Smallest ? 1.0 : -1.0; // the smallest of sign * value
+  ContourExtremum best{{0, 0.0}, spline.piece(0).d};
+  for (int k = 0; k < spline.numberOfPieces(); ++k) {
+    const CubicPiece& piece = spline.piece(k);
     const auto index = static_cast<std::size_t>(k);
     const double span = s[index + 1] - s[index];
     double roots[2];
@@ -66,13 +67,17 @@ ContourLocation lowestPoint(const Contour& contour)
     }
     for (int i = 0; i <= count; ++i) {
       const double value = piece.value(candidates[i]);
-      if (value < lowestY) {
-        lowestY = value;
-        lowest = {k, candidates[i] / span};
+      if (sign * value < sign * best.value) {
+        best = {{k, candidates[i] / span}, value};
       }
     }
   }
-  return lowest;
+  return best;
+}
+
+ContourLocation lowestPoint(const Contour& contour)
+{
+  return extremePoint(contour, 1, Extreme::Smallest).location;
 }
 
 } // namespace capsula::contour

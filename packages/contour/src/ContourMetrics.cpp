@@ -1,5 +1,7 @@
 #include "capsula/contour/ContourMetrics.hpp"
 
+#include "capsula/contour/ContourLocation.hpp"
+
 #include <capsula/core/Error.hpp>
 
 #include <Eigen/Eigenvalues>
@@ -83,26 +85,7 @@ double taylorDeformation(const Contour& contour)
 
 Extent extent(const Contour& contour, int axis)
 {
-  core::require<core::InputError>(axis == 0 || axis == 1, "contour extent: axis must be 0 (x) or 1 (y), got ", axis);
-  const CubicSpline& spline = axis == 0 ? contour.xSpline() : contour.ySpline();
-  const std::vector<double>& s = spline.knots();
-  Extent range{spline.piece(0).d, spline.piece(0).d};
-  for (int k = 0; k < spline.numberOfPieces(); ++k) {
-    const CubicPiece& piece = spline.piece(k);
-    const auto index = static_cast<std::size_t>(k);
-    const double span = s[index + 1] - s[index];
-    double roots[2];
-    const int count = stationaryPoints(piece, span, roots);
-    double candidates[3] = {piece.value(span), 0.0, 0.0};
-    for (int i = 0; i < count; ++i) {
-      candidates[i + 1] = piece.value(roots[i]);
-    }
-    for (int i = 0; i <= count; ++i) {
-      range.min = std::min(range.min, candidates[i]);
-      range.max = std::max(range.max, candidates[i]);
-    }
-  }
-  return range;
+  return {extremePoint(contour, axis, Extreme::Smallest).value, extremePoint(contour, axis, Extreme::Largest).value};
 }
 
 double cellLength(const Contour& contour)

@@ -2,50 +2,12 @@
 
 #include "capsula/scene2d/ContourQuadrature2D.hpp"
 
+#include <capsula/contour/ContourLocation.hpp>
 #include <capsula/contour/ContourMetrics.hpp>
 
 #include <cmath>
 
 namespace capsula::scene2d {
-
-ContourExtremum2D contourMaximum(const contour::Contour& contour, int axis)
-{
-  const contour::CubicSpline& spline = axis == 0 ? contour.xSpline() : contour.ySpline();
-  const std::vector<double>& s = spline.knots();
-  ContourExtremum2D best{0, 0.0, spline.piece(0).d};
-  const auto consider = [&](int k, double ds, double span) {
-    const double v = spline.piece(k).value(ds);
-    if (v > best.value) {
-      best = {k, ds / span, v};
-    }
-  };
-  for (int k = 0; k < spline.numberOfPieces(); ++k) {
-    const contour::CubicPiece& p = spline.piece(k);
-    const double span = s[static_cast<std::size_t>(k) + 1] - s[static_cast<std::size_t>(k)];
-    consider(k, 0.0, span);
-    // Stationary points: 3a ds^2 + 2b ds + c = 0 inside the piece.
-    const double qa = 3.0 * p.a, qb = 2.0 * p.b, qc = p.c;
-    if (std::abs(qa) < 1e-300) {
-      if (std::abs(qb) > 0.0) {
-        const double r = -qc / qb;
-        if (r > 0.0 && r < span)
-          consider(k, r, span);
-      }
-      continue;
-    }
-    const double disc = qb * qb - 4.0 * qa * qc;
-    if (disc < 0.0) {
-      continue;
-    }
-    const double q = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
-    for (const double r : {q / qa, q != 0.0 ? qc / q : -1.0}) {
-      if (r > 0.0 && r < span) {
-        consider(k, r, span);
-      }
-    }
-  }
-  return best;
-}
 
 CellMetrics2D cellMetrics2D(const CapsuleModel2D& model, const contour::Contour& contour,
                             const MembraneState2D& membrane, const std::vector<double>& velocities)
@@ -57,7 +19,7 @@ CellMetrics2D cellMetrics2D(const CapsuleModel2D& model, const contour::Contour&
   m.tetherForceX = force.x();
   m.tetherForceY = force.y();
   m.tetherForce = force.norm();
-  const ContourExtremum2D front = contourMaximum(contour, 0);
+  const contour::ContourLocation front = contour::extremePoint(contour, 0, contour::Extreme::Largest).location;
   const ContourField2D velocity(contour, velocities.data());
   m.leadingEdgeVelocity =
       model.flow().conditions.viscosityRatio * velocity.at(front.segment, front.t).x() / flowSemiAxis(model.cell());

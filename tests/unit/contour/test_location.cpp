@@ -1,11 +1,13 @@
-// Points found by property: the point at a given arc length, the lowest point of a spline.
+// Points found by property: the point at a given arc length, the extreme points of a spline.
 #include "capsula/testing/Constants.hpp"
 #include <capsula/contour/Contour.hpp>
 #include <capsula/contour/ContourLocation.hpp>
+#include <capsula/contour/ContourMetrics.hpp>
 #include <capsula/contour/InitialShapes.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using capsula::testing::pi;
@@ -64,4 +66,27 @@ TEST(ContourLocation, LowestPointOfATiltedEllipseLiesBetweenNodes)
     lowestNode = std::min(lowestNode, ellipse.nodes()(1, i));
   }
   EXPECT_LT(p.y(), lowestNode);
+}
+
+TEST(ContourLocation, LargestPointIsTheSplineMaximumBetweenNodes)
+{
+  // The tilted ellipse above with 24 nodes: along either axis its largest point lies between
+  // nodes, beyond every node, with the tangent normal to the axis, and its value is extent's.
+  EllipseShape shape;
+  shape.aspectRatio = 2.0;
+  shape.orientation = 0.4;
+  const Contour ellipse(ellipseNodes(24, shape));
+  for (const int axis : {0, 1}) {
+    const ContourExtremum largest = extremePoint(ellipse, axis, Extreme::Largest);
+    const ContourLocation at = largest.location;
+    EXPECT_EQ(largest.value, extent(ellipse, axis).max);
+    EXPECT_EQ(extremePoint(ellipse, axis, Extreme::Smallest).value, extent(ellipse, axis).min);
+    EXPECT_NEAR(ellipse.pointAt(at.segment, at.t).position[axis], largest.value, 1e-14);
+    EXPECT_LT(std::abs(ellipse.pointAt(at.segment, at.t).tangent[axis]), 1e-10);
+    double largestNode = -1e9;
+    for (int i = 0; i < ellipse.numberOfNodes(); ++i) {
+      largestNode = std::max(largestNode, ellipse.nodes()(axis, i));
+    }
+    EXPECT_GT(largest.value, largestNode);
+  }
 }

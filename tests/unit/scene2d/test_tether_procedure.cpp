@@ -3,7 +3,6 @@
 #include <capsula/contour/ContourMetrics.hpp>
 #include <capsula/core/Error.hpp>
 #include <capsula/scene2d/CellContour2D.hpp>
-#include <capsula/scene2d/CellMetrics2D.hpp>
 #include <capsula/scene2d/TetherProcedure2D.hpp>
 
 #include <gtest/gtest.h>
@@ -111,22 +110,4 @@ TEST(TetherProcedure2D, PredictedEndIsWhereTheExtrapolatedRateReachesTheToleranc
   EXPECT_LT(predictedPreparationEnd(s, 0.5, 1.35, 0.5), 0.0);
   EXPECT_LT(predictedPreparationEnd(s, 3.0, 0.002, 0.004), 0.0);
   EXPECT_LT(predictedPreparationEnd(s, 3.0, 0.002, 0.0005), 0.0);
-}
-
-TEST(CellMetrics2D, ContourMaximumIsTheSplineMaximum)
-{
-  CellSettings2D cell;
-  cell.numberOfPoints = 24;
-  cell.aspectRatio = 0.5;
-  Eigen::Matrix2Xd nodes = initialCellNodes(cell);
-  Eigen::Matrix2d rotation;
-  rotation << std::cos(0.3), -std::sin(0.3), std::sin(0.3), std::cos(0.3);
-  const contour::Contour c(rotation * nodes);
-  for (const int axis : {0, 1}) {
-    const ContourExtremum2D front = contourMaximum(c, axis);
-    EXPECT_NEAR(front.value, contour::extent(c, axis).max, 1e-14);
-    EXPECT_NEAR(c.pointAt(front.segment, front.t).position[axis], front.value, 1e-14);
-    // A maximum between nodes: the tangent is normal to the axis there.
-    EXPECT_LT(std::abs(c.pointAt(front.segment, front.t).tangent[axis]), 1e-10);
-  }
 }

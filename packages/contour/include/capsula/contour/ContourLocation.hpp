@@ -1,7 +1,7 @@
 #pragma once
 // Points of a contour found by a property rather than by their parameter: the point at a
-// given arc length from node 0, and the lowest point of the spline. Both return the
-// segment and the local coordinate t in [0, 1] that Contour::pointAt takes.
+// given arc length from node 0, and the extreme points of the spline along an axis. Both
+// return the segment and the local coordinate t in [0, 1] that Contour::pointAt takes.
 #include "capsula/contour/Contour.hpp"
 
 namespace capsula::contour {
@@ -17,8 +17,17 @@ struct ContourLocation {
 /// round-off for the contour's own arc-length rule.
 ContourLocation locateArcLength(const Contour& contour, double arcLength);
 
-/// The point of smallest y over the whole spline (each cubic piece of y(s) is checked at its
-/// ends and at its stationary points), the first one on a tie.
+/// The point where coordinate `axis` (0: x, 1: y) of the spline is smallest or largest
+/// over the whole spline, not only the nodes (each cubic piece is checked at its ends and at
+/// its stationary points), the first one on a tie; `value` is the coordinate there.
+enum class Extreme { Smallest, Largest };
+struct ContourExtremum {
+  ContourLocation location;
+  double value = 0.0;
+};
+ContourExtremum extremePoint(const Contour& contour, int axis, Extreme extreme);
+
+/// The point of smallest y: extremePoint(contour, 1, Extreme::Smallest).location.
 ContourLocation lowestPoint(const Contour& contour);
 
 } // namespace capsula::contour

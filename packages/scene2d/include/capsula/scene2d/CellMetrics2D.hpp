@@ -36,14 +36,6 @@ struct CellMetrics2D {
   double lowestPoint = 0.0; ///< smallest y of the spline (the gap to the wall)
 };
 
-/// The point of the contour's spline with the largest coordinate `axis` (0: x, 1: y).
-struct ContourExtremum2D {
-  int segment = 0;
-  double t = 0.0;
-  double value = 0.0;
-};
-ContourExtremum2D contourMaximum(const contour::Contour& contour, int axis);
-
 /// The metrics of one state. `velocities`: 2 per node, of the same state.
 CellMetrics2D cellMetrics2D(const CapsuleModel2D& model, const contour::Contour& contour,
                             const MembraneState2D& membrane, const std::vector<double>& velocities);

@@ -39,8 +39,8 @@
 // flat arrays. The bisected pieces are cached per geometry (their ends and middle) and per
 // density (their Gauss points' f dl), so neighbouring targets that bisect the same segment
 // share the work; the Gauss points of these special pairs are then gathered and evaluated
-// by the same vectorised pair formula. singleLayerAtNodesReference() is the plain per-pair
-// evaluation of the same rules, kept as the reference of the fast path (tests/unit/scene2d).
+// by the same vectorised pair formula. tests/unit/scene2d/test_single_layer_fast_2d.cpp
+// evaluates the same rules pair by pair on the same pieces() as the reference of this path.
 // The caches make the const evaluations unsafe to call concurrently on one object.
 #include "capsula/scene2d/ContourDiscretisation2D.hpp"
 #include "capsula/scene2d/ContourQuadrature2D.hpp"
@@ -168,11 +168,6 @@ public:
   template <class Density>
   void singleLayerAtNodes(const Density& density, double* result) const;
 
-  /// The same rules evaluated pair by pair, without the vectorised sums or the piece cache:
-  /// the reference that singleLayerAtNodes must reproduce to round-off (tests).
-  template <class Density>
-  void singleLayerAtNodesReference(const Density& density, double* result) const;
-
   /// result[2 t + j] = PV int u_i T_ijk(x, x_t) n_k dl at the target nodes, for u given at
   /// every node (2 per node). The map from the density's spline data to these values
   /// (SplineDoubleLayer2D) is built on the first call after update() and reused (the GMRES
@@ -187,6 +182,11 @@ public:
   /// Segment pieces that were bisected at the node targets in the last single- or
   /// double-layer build (diagnostics).
   long long subdividedSegments() const { return subdivided_; }
+
+  /// The pieces segment k is split into for the pole x0 (its near-singular bisection, the
+  /// whole segment when far), and whether x0 is the segment's start or end node; pieces
+  /// touching the pole are judged by the images only. Valid after update().
+  void pieces(int k, const double* x0, bool poleAtStart, bool poleAtEnd, std::vector<SegmentPiece2D>& out) const;
 
 private:
   /// A piece's ends, middle and (near-singular distance x its length)^2, for one geometry;
@@ -203,8 +203,6 @@ private:
   };
   static constexpr int gaussStride = 5;
 
-  // Pieces of segment k for a pole x0 (images `image`); whole segment when far.
-  void pieces(int k, const double* x0, bool poleAtStart, bool poleAtEnd, std::vector<SegmentPiece2D>& out) const;
   void bisect(int k, const double* x0, const double (*image)[2], int numImages, SegmentPiece2D piece, int level,
               std::vector<SegmentPiece2D>& out) const;
   bool isNear(const double* x0, const double (*image)[2], int numImages, const SegmentPiece2D& piece) const;

@@ -39,7 +39,7 @@ void LayerPotentials2D<Kernel>::singleLayerAtNodes(const Density& density, doubl
                                      sumX_.data(), sumY_.data());
   }
 
-  // The pairs treated apart: the rules of singleLayerAtNodesReference on cached pieces.
+  // The pairs treated apart: the singular and near-singular rules on cached pieces.
   // Their Gauss points are gathered and evaluated in one vectorised pass; the ln tau
   // terms of the pole pieces go straight into specialU_.
   Teuchos::TimeMonitor guard(*specialTimer_);
@@ -128,89 +128,6 @@ void LayerPotentials2D<Kernel>::singleLayerAtNodes(const Density& density, doubl
     }
     result[2 * t] = sumX_[t] + u[0];
     result[2 * t + 1] = sumY_[t] + u[1];
-  }
-  subdivided_ = subdivided;
-}
-
-template <class Kernel>
-template <class Density>
-void LayerPotentials2D<Kernel>::singleLayerAtNodesReference(const Density& density, double* result) const
-{
-  const contour::Contour& c = *contour_;
-  const ContourQuadrature2D& quad = *quadrature_;
-  const int n = c.numberOfNodes();
-  const int perSegment = quad.pointsPerSegment();
-  const std::vector<double>& s = c.parameters();
-
-  // f dl at the regular points, once for all targets.
-  std::vector<double> load(2 * static_cast<std::size_t>(quad.numberOfPoints()));
-  for (int p = 0; p < quad.numberOfPoints(); ++p) {
-    const Eigen::Vector2d f = density(quad.point(p), quad.segmentOf(p), quad.parameterOf(p));
-    load[2 * p] = f.x() * quad.weights()[p];
-    load[2 * p + 1] = f.y() * quad.weights()[p];
-  }
-  const double* xq = quad.positions().data();
-
-  std::vector<SegmentPiece2D> split;
-  long long subdivided = 0;
-  for (int t = 0; t < numTargets_; ++t) {
-    const int m = firstTarget_ + t;
-    const double x0[2] = {nodes_[2 * m], nodes_[2 * m + 1]};
-    double u[2] = {0.0, 0.0};
-    for (int k = 0; k < n; ++k) {
-      const bool poleAtStart = k == m;
-      const bool poleAtEnd = (k + 1) % n == m;
-      pieces(k, x0, poleAtStart, poleAtEnd, split);
-      if (split.size() == 1 && !poleAtStart && !poleAtEnd) {
-        for (int p = k * perSegment; p < (k + 1) * perSegment; ++p) {
-          addSingleLayerTerm2D<Kernel>(xq + 2 * p, x0, &load[2 * p], u);
-        }
-        continue;
-      }
-      subdivided += split.size() > 1 ? 1 : 0;
-      const double segmentSpan = s[static_cast<std::size_t>(k) + 1] - s[static_cast<std::size_t>(k)];
-      for (const SegmentPiece2D& piece : split) {
-        if (!piece.poleAtStart && !piece.poleAtEnd) {
-          detail2d::visitGaussPiece(c, gauss_, k, piece.ta, piece.tb,
-                                    [&](const contour::ContourPoint& point, double tp, double dl) {
-                                      const Eigen::Vector2d f = density(point, k, tp) * dl;
-                                      const double fx[2] = {f.x(), f.y()};
-                                      const double x[2] = {point.position.x(), point.position.y()};
-                                      addSingleLayerTerm2D<Kernel>(x, x0, fx, u);
-                                    });
-          continue;
-        }
-        // tau from the pole: t = ta + tau (tb - ta) or t = tb - tau (tb - ta).
-        const double width = piece.tb - piece.ta;
-        const auto parameterAt = [&](double tau) {
-          return piece.poleAtStart ? piece.ta + tau * width : piece.tb - tau * width;
-        };
-        const double jacobian = segmentSpan * width; // ds / dtau
-        for (std::size_t q = 0; q < gauss_.points.size(); ++q) {
-          const double tau = gauss_.points[q];
-          const double tp = parameterAt(tau);
-          const contour::ContourPoint point = c.pointAt(k, tp);
-          const Eigen::Vector2d f = density(point, k, tp) * (gauss_.weights[q] * jacobian * point.metric);
-          const double x[2] = {point.position.x(), point.position.y()};
-          double G[2][2];
-          Kernel::stokeslet(x, x0, G);
-          const double logTau = std::log(tau);
-          G[0][0] += logTau;
-          G[1][1] += logTau;
-          u[0] += G[0][0] * f.x() + G[1][0] * f.y();
-          u[1] += G[0][1] * f.x() + G[1][1] * f.y();
-        }
-        for (std::size_t q = 0; q < logRule_.points.size(); ++q) {
-          const double tp = parameterAt(logRule_.points[q]);
-          const contour::ContourPoint point = c.pointAt(k, tp);
-          const Eigen::Vector2d f = density(point, k, tp) * (logRule_.weights[q] * jacobian * point.metric);
-          u[0] += f.x();
-          u[1] += f.y();
-        }
-      }
-    }
-    result[2 * t] = u[0];
-    result[2 * t + 1] = u[1];
   }
   subdivided_ = subdivided;
 }
