@@ -4,11 +4,13 @@
 #include <capsula/contour/ContourLocation.hpp>
 #include <capsula/contour/ContourMetrics.hpp>
 #include <capsula/contour/InitialShapes.hpp>
+#include <capsula/core/Error.hpp>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 using capsula::testing::pi;
 
@@ -88,5 +90,16 @@ TEST(ContourLocation, LargestPointIsTheSplineMaximumBetweenNodes)
       largestNode = std::max(largestNode, ellipse.nodes()(axis, i));
     }
     EXPECT_GT(largest.value, largestNode);
+  }
+}
+
+TEST(ContourLocation, ExtremePointRefusesAnAxisOtherThanXOrY)
+{
+  const Contour circle(circleNodes(16, 1.0, Eigen::Vector2d::Zero()));
+  try {
+    extremePoint(circle, 2, Extreme::Largest);
+    FAIL() << "axis 2 was accepted";
+  } catch (const capsula::core::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("axis must be 0 (x) or 1 (y), got 2"), std::string::npos) << error.what();
   }
 }
